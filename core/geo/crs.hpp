@@ -1,0 +1,40 @@
+#pragma once
+// A coordinate reference system and its transform to/from WGS84 lon/lat, backed by PROJ
+// (EPSG database). Geographic WGS84 grids skip PROJ entirely.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+namespace ts::geo {
+
+class Crs {
+public:
+    // From "EPSG:32633", a PROJ string or WKT. Throws ts::InputError if PROJ does not know it.
+    static std::shared_ptr<const Crs> from_definition(const std::string& definition);
+    static std::shared_ptr<const Crs> from_epsg(int code);
+    static std::shared_ptr<const Crs> wgs84() { return from_epsg(4326); }
+
+    ~Crs();
+    Crs(const Crs&) = delete;
+    Crs& operator=(const Crs&) = delete;
+
+    std::optional<int> epsg() const;      // EPSG code if the CRS is one
+    const std::string& name() const;      // e.g. "WGS 84 / UTM zone 33N"
+    const std::string& definition() const;  // what it was made from
+    bool is_geographic() const;
+
+    // CRS coordinates (easting/northing, or lon/lat degrees for geographic CRSs) <-> WGS84 lon/lat.
+    // Thread-safe.
+    glm::dvec2 to_lonlat(glm::dvec2 xy) const;
+    glm::dvec2 from_lonlat(glm::dvec2 lonlat) const;
+
+    struct Impl;
+
+private:
+    explicit Crs(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ts::geo

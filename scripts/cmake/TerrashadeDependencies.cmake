@@ -1,0 +1,36 @@
+# Every external library, found once. scripts/setup.sh installs them (docs/dependencies.md says why each).
+find_package(Threads REQUIRED)
+find_package(PROJ CONFIG REQUIRED)
+find_package(OpenImageIO CONFIG REQUIRED)
+find_package(TIFF REQUIRED)
+# libzip: its Debian CMake config demands the zipcmp tools; pkg-config needs nothing more.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
+find_package(glm CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+find_package(SQLite3 REQUIRED)
+find_package(assimp CONFIG REQUIRED)
+
+# GeographicLib: Debian ships only a Find module in a non-standard place.
+find_path(GeographicLib_INCLUDE_DIR GeographicLib/Config.h REQUIRED)
+find_library(GeographicLib_LIBRARY NAMES GeographicLib REQUIRED)
+add_library(ts_geographiclib INTERFACE)
+target_include_directories(ts_geographiclib SYSTEM INTERFACE ${GeographicLib_INCLUDE_DIR})
+target_link_libraries(ts_geographiclib INTERFACE ${GeographicLib_LIBRARY})
+
+# libgeotiff: no CMake config or pkg-config file on Debian 12.
+find_path(GeoTIFF_INCLUDE_DIR geotiffio.h PATH_SUFFIXES geotiff REQUIRED)
+find_library(GeoTIFF_LIBRARY NAMES geotiff REQUIRED)
+add_library(ts_geotiff INTERFACE)
+target_include_directories(ts_geotiff SYSTEM INTERFACE ${GeoTIFF_INCLUDE_DIR})
+target_link_libraries(ts_geotiff INTERFACE ${GeoTIFF_LIBRARY} TIFF::TIFF PROJ::proj)
+
+if(TERRASHADE_BUILD_GPU)
+  find_package(Vulkan REQUIRED)
+  find_package(glfw3 CONFIG REQUIRED)
+  find_program(GLSLANG_VALIDATOR NAMES glslangValidator glslang REQUIRED)
+endif()
+if(TERRASHADE_BUILD_TESTS)
+  find_package(GTest CONFIG REQUIRED)
+  find_package(benchmark CONFIG QUIET)
+endif()

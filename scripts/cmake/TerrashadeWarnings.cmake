@@ -1,0 +1,16 @@
+# Warnings on for every target of ours; sanitizers optional (core/ tests run clean under them).
+add_library(ts_warnings INTERFACE)
+target_compile_options(ts_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wno-missing-field-initializers)
+if(TERRASHADE_SANITIZE)
+  target_compile_options(ts_warnings INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(ts_warnings INTERFACE -fsanitize=address,undefined)
+endif()
+
+# ts_add_library(name SOURCES ... DEPS ...): one core module = one static library.
+function(ts_add_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE ts_warnings)
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()

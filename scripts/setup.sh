@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Installs every Debian package terrashade needs to build, run, test and chart.
+# Idempotent: packages already present are skipped by apt-get. Uses sudo when not root.
+set -euo pipefail
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+# Build toolchain and the libraries the code links against (see docs/dependencies.md).
+BUILD_PKGS=(
+  build-essential cmake ninja-build pkg-config
+  libgeographiclib-dev      # geodesy: local ENU frames, geodesics, UTM/UPS
+  libopenimageio-dev        # image I/O: PNG, EXR, HDR, TIFF pixels
+  openimageio-tools
+  libtiff-dev libgeotiff-dev  # GeoTIFF tags and GeoKeys (OIIO 2.4 does not expose them)
+  libproj-dev proj-data     # CRS transforms for projections GeographicLib lacks
+  libzip-dev zlib1g-dev     # .hgt.zip as distributed
+  libglfw3-dev libglm-dev   # viewer window, vector math
+  libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
+  glslang-tools glslang-dev spirv-tools  # GLSL -> SPIR-V at build time
+  libassimp-dev             # mesh import (AC3D, glTF, OBJ, ...)
+  libsqlite3-dev            # MBTiles
+  libcli11-dev              # command-line parsing
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+)
+# Test oracles, headless display and charting: never linked into terrashade.
+TEST_PKGS=(
+  gdal-bin                  # gdalinfo / gdalwarp / gdaldem as test oracles
+  saga                      # SAGA sky-view factor as a benchmark baseline
+  xvfb xauth                # window tests
+  python3-matplotlib python3-numpy  # charts in docs/
+  unzip
+)
+
+need=()
+for p in "${BUILD_PKGS[@]}" "${TEST_PKGS[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    need+=("$p")
+  fi
+done
+if [ "${#need[@]}" -gt 0 ]; then
+  echo "setup: installing ${#need[@]} packages: ${need[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+fi
+echo "setup: all dependencies present"

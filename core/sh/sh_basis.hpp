@@ -1,0 +1,44 @@
+#pragma once
+// Real orthonormal spherical harmonics of order 4 (l = 0..3, 16 coefficients), index
+// i = l*l + l + m, no Condon-Shortley phase; the formulas live in sh_shared.h.
+#include <array>
+#include <glm/vec3.hpp>
+
+namespace ts::sh {
+
+inline constexpr int kBands = 4;
+inline constexpr int kCount = 16;
+// The SH coefficient vector of the constant function 1: only the DC term, sqrt(4 pi).
+inline constexpr double kSqrt4Pi = 3.5449077018110318;
+inline constexpr double kPi = 3.14159265358979323846;
+
+using ShVec = std::array<double, kCount>;
+using ZhVec = std::array<double, kBands>;
+
+constexpr int index(int l, int m) {
+    return l * l + l + m;
+}
+constexpr int band_of(int i) {
+    return i < 1 ? 0 : i < 4 ? 1 : i < 9 ? 2 : 3;
+}
+constexpr int order_of(int i) {
+    return i - band_of(i) * band_of(i) - band_of(i);
+}
+
+// The 16 basis functions at a unit direction.
+ShVec eval(const glm::dvec3& d);
+// Value of the band-limited function with coefficients f at a unit direction.
+double reconstruct(const ShVec& f, const glm::dvec3& d);
+// ZH coefficients (axis +z) turned so that the axis points along unit direction d.
+ShVec zh_rotate(const ZhVec& zh, const glm::dvec3& d);
+// <a, b>: the integral over the sphere of the product of the two band-limited functions.
+double dot(const ShVec& a, const ShVec& b);
+// L2 norm of the non-DC coefficients (the "magnitude" that drives exponentiation error).
+double non_dc_norm(const ShVec& f);
+
+ShVec operator+(const ShVec& a, const ShVec& b);
+ShVec operator-(const ShVec& a, const ShVec& b);
+ShVec operator*(double s, const ShVec& a);
+double norm(const ShVec& a);
+
+}  // namespace ts::sh

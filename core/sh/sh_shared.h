@@ -1,0 +1,203 @@
+// The single definition of the log-SH formulas, shared by C++ (core/sh) and GLSL (gpu/shaders).
+//
+// Written in the common subset of C++20 and GLSL 4.50: only the macros below, plain
+// arithmetic, sqrt/sin/cos/asin, for loops and if. No templates, namespaces, std::, const&,
+// float suffixes. docs/method.md derives every formula.
+//
+// C++ side: do not include this file directly; include core/sh/sh_shared.hpp, which opens
+// namespace ts::sh::shared around it (TS_REAL = double, TS_VEC3 = glm::dvec3).
+// GLSL side: `#define TS_GLSL 1` then `#include "core/sh/sh_shared.h"` (TS_REAL = float).
+//
+// Conventions (ARCHITECTURE.md): real orthonormal SH, l = 0..3, 16 coefficients, index
+// i = l*l + l + m, no Condon-Shortley phase (y_1,1 = +0.4886 x). ENU frame, z up; azimuth phi
+// counter-clockwise from +x (east); theta the polar angle from +z.
+//
+// The function signatures in this file are frozen (the GPU code depends on them).
+#ifndef TS_SH_SHARED_H
+#define TS_SH_SHARED_H
+
+#ifdef TS_GLSL
+#define TS_REAL float
+#define TS_VEC3 vec3
+#define TS_OUT_ARRAY(T, name, N) out T name[N]
+#define TS_INOUT_ARRAY(T, name, N) inout T name[N]
+#define TS_IN_ARRAY(T, name, N) in T name[N]
+#define TS_INLINE
+#else
+#define TS_REAL double
+#define TS_VEC3 glm::dvec3
+#define TS_OUT_ARRAY(T, name, N) T(&name)[N]
+#define TS_INOUT_ARRAY(T, name, N) T(&name)[N]
+#define TS_IN_ARRAY(T, name, N) const T(&name)[N]
+#define TS_INLINE inline
+#endif
+
+#define TS_PI 3.14159265358979323846
+#define TS_SH_COUNT 16
+
+// ---------------------------------------------------------------------------------------
+// The 16 real orthonormal SH basis functions at a unit direction d = (x, y, z).
+// y_lm = K_lm P_l^|m|(z) * {sqrt2 cos(m phi), 1, sqrt2 sin(|m| phi)} written as polynomials.
+TS_INLINE void ts_sh_eval(TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, y, 16)) {
+    TS_REAL x = d.x;
+    TS_REAL yy = d.y;
+    TS_REAL z = d.z;
+    y[0] = 0.28209479177387814;
+    y[1] = 0.4886025119029199 * yy;
+    y[2] = 0.4886025119029199 * z;
+    y[3] = 0.4886025119029199 * x;
+    y[4] = 1.0925484305920792 * x * yy;
+    y[5] = 1.0925484305920792 * yy * z;
+    y[6] = 0.31539156525252005 * (3.0 * z * z - 1.0);
+    y[7] = 1.0925484305920792 * x * z;
+    y[8] = 0.5462742152960396 * (x * x - yy * yy);
+    y[9] = 0.5900435899266435 * yy * (3.0 * x * x - yy * yy);
+    y[10] = 2.890611442640554 * x * yy * z;
+    y[11] = 0.4570457994644658 * yy * (5.0 * z * z - 1.0);
+    y[12] = 0.3731763325901154 * z * (5.0 * z * z - 3.0);
+    y[13] = 0.4570457994644658 * x * (5.0 * z * z - 1.0);
+    y[14] = 1.445305721320277 * z * (x * x - yy * yy);
+    y[15] = 0.5900435899266435 * x * (x * x - 3.0 * yy * yy);
+}
+
+// ---------------------------------------------------------------------------------------
+// ZH rotation [Sloan, Luna, Snyder 2005]: a function symmetric about the z axis with ZH
+// coefficients zh[l], turned so that its axis points along the unit direction d:
+//   f_lm = sqrt(4 pi / (2l+1)) * zh[l] * y_lm(d).
+TS_INLINE void ts_zh_rotate(TS_IN_ARRAY(TS_REAL, zh, 4), TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, f, 16)) {
+    TS_REAL y[16];
+    ts_sh_eval(d, y);
+    TS_REAL s0 = 3.5449077018110318 * zh[0];
+    TS_REAL s1 = 2.046653415892977 * zh[1];
+    TS_REAL s2 = 1.5853309190424043 * zh[2];
+    TS_REAL s3 = 1.3398491713813576 * zh[3];
+    f[0] = s0 * y[0];
+    for (int i = 1; i < 4; ++i) f[i] = s1 * y[i];
+    for (int i = 4; i < 9; ++i) f[i] = s2 * y[i];
+    for (int i = 9; i < 16; ++i) f[i] = s3 * y[i];
+}
+
+// ---------------------------------------------------------------------------------------
+// Elevation slice (slides, "Elevation Visibility"): log-visibility log_eps below the horizon
+// elevation sigma (radians, [-pi/2, pi/2]), 0 above, i.e. on theta in [pi/2 - sigma, pi].
+// Its 4 normalised-Legendre coefficients, c_l = log_eps * int_{-1}^{sin sigma} Phat_l(x) dx
+// with Phat_l = sqrt((2l+1)/2) P_l:
+//   log_eps * [ (sin s + 1)/sqrt2, -3 cos^2 s / (2 sqrt6), -5 sin s cos^2 s / (2 sqrt10),
+//               7 cos^2 s (5 cos^2 s - 4) / (8 sqrt14) ].
+TS_INLINE void ts_slice_log_coeffs(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    TS_REAL s = sin(sigma);
+    TS_REAL co = cos(sigma);
+    TS_REAL c2 = co * co;
+    c[0] = log_eps * 0.7071067811865475 * (s + 1.0);
+    c[1] = log_eps * -0.6123724356957946 * c2;
+    c[2] = log_eps * -0.7905694150420948 * s * c2;
+    c[3] = log_eps * 0.23385358667337133 * c2 * (5.0 * c2 - 4.0);
+}
+
+// The same slice integrated against every associated Legendre function of the SH basis:
+//   e[p] = log_eps * K_l|m| * int_{-1}^{sin sigma} P_l^|m|(x) dx,  p = l(l+1)/2 + |m|,
+// (pairs (0,0) (1,0) (1,1) (2,0) (2,1) (2,2) (3,0) (3,1) (3,2) (3,3)). The odd-|m| entries
+// need sigma itself (x = sin a substitution), which the 4 Legendre coefficients above cannot
+// give; these 10 numbers make the height-field projection exact (ts_hf_add_slice).
+TS_INLINE void ts_slice_sh_integrals(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, e, 10)) {
+    TS_REAL s = sin(sigma);
+    TS_REAL co = cos(sigma);
+    TS_REAL a = sigma + 1.5707963267948966;  // asin(x) from -1 to s
+    TS_REAL sc = s * co;
+    TS_REAL c2 = co * co;
+    e[0] = log_eps * 0.28209479177387814 * (s + 1.0);
+    e[1] = log_eps * 0.4886025119029199 * 0.5 * (s * s - 1.0);
+    e[2] = log_eps * 0.3454941494713355 * 0.5 * (sc + a);
+    e[3] = log_eps * 0.6307831305050401 * 0.5 * (s * s * s - s);
+    e[4] = log_eps * 0.25751613468212636 * (-c2 * co);
+    e[5] = log_eps * 0.12875806734106318 * (2.0 + 3.0 * s - s * s * s);
+    e[6] = log_eps * 0.7463526651802308 * 0.125 * (5.0 * s * s * s * s - 6.0 * s * s + 1.0);
+    e[7] = log_eps * 0.21545345607610045 * 0.1875 * (a - sc * (9.0 - 10.0 * s * s));
+    e[8] = log_eps * 0.06813236509555216 * (-3.75 * c2 * c2);
+    e[9] = log_eps * 0.027814921575518937 * 1.875 * (sc * (5.0 - 2.0 * s * s) + 3.0 * a);
+}
+
+// Weight of the slice sampled at azimuth phi_k, spacing delta, in SH coefficient of order m,
+// when the log-visibility is interpolated linearly in azimuth between adjacent slices: the
+// integral of the hat function centred at phi_k times the azimuthal part of y_lm,
+//   m = 0: delta;  m > 0: sqrt2 cos(m phi_k) * delta * sinc^2(m delta/2);  m < 0: with sin.
+TS_INLINE TS_REAL ts_slice_azimuth_weight(int m, TS_REAL phi_k, TS_REAL delta) {
+    if (m == 0) return delta;
+    TS_REAL am = m > 0 ? TS_REAL(m) : TS_REAL(-m);
+    TS_REAL h = 0.5 * am * delta;
+    TS_REAL sinc = sin(h) / h;
+    TS_REAL trig = m > 0 ? cos(am * phi_k) : sin(am * phi_k);
+    return 1.4142135623730951 * trig * delta * sinc * sinc;
+}
+
+// Adds one slice (horizon elevation sigma at azimuth phi_k; slices every delta radians) to the
+// log-SH vector f of the height field. Summing all D slices (phi_k = k * 2pi/D) gives the exact
+// SH projection of the log-visibility blended linearly in azimuth between slices.
+TS_INLINE void ts_hf_add_slice(TS_REAL sigma, TS_REAL phi_k, TS_REAL delta, TS_REAL log_eps,
+                               TS_INOUT_ARRAY(TS_REAL, f, 16)) {
+    TS_REAL e[10];
+    ts_slice_sh_integrals(sigma, log_eps, e);
+    for (int l = 0; l < 4; ++l) {
+        for (int m = -l; m <= l; ++m) {
+            int am = m < 0 ? -m : m;
+            f[l * l + l + m] += ts_slice_azimuth_weight(m, phi_k, delta) * e[(l * (l + 1)) / 2 + am];
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Sphere blocker [Ren et al. 2006; slides]: half-angle of the blocked cone seen from a
+// receiver at distance d from the centre of a sphere of radius r; a receiver inside or on the
+// sphere (d <= r) is fully occluded, which is the cap of half-angle pi (the whole sphere).
+TS_INLINE TS_REAL ts_sphere_theta_b(TS_REAL r, TS_REAL d) {
+    if (d <= r) return TS_PI;
+    return asin(r / d);
+}
+
+// Log-ZH coefficients of a cap around +z with value log_eps inside, from the cosine and sine
+// of its half-angle theta_b:
+//   log_eps * [ sqrt(pi)(1 - cos tb), sqrt(3pi)/2 sin^2 tb, sqrt(5pi)/2 cos tb sin^2 tb,
+//               sqrt(7pi)/16 (3 + 5 cos 2tb) sin^2 tb ].   theta_b = pi gives the whole sphere.
+TS_INLINE void ts_cap_log_zh(TS_REAL cb, TS_REAL sb, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    TS_REAL s2 = sb * sb;
+    c[0] = log_eps * 1.7724538509055159 * (1.0 - cb);
+    c[1] = log_eps * 1.5349900619197328 * s2;
+    c[2] = log_eps * 1.9816636488030055 * cb * s2;
+    c[3] = log_eps * 0.29309200623967196 * (3.0 + 5.0 * (2.0 * cb * cb - 1.0)) * s2;
+}
+
+// The same from the half-angle itself.
+TS_INLINE void ts_sphere_log_zh(TS_REAL theta_b, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    ts_cap_log_zh(cos(theta_b), sin(theta_b), log_eps, c);
+}
+
+// The same straight from the sphere's radius r and the distance d to its centre, without an
+// inverse sine: sin tb = r/d, cos tb = sqrt(1 - (r/d)^2). GPU asin is loose (the Vulkan spec
+// allows thousands of ulp; llvmpipe is 4e-4 rad off near 1), so shaders use this form.
+// A receiver inside or on the sphere (d <= r) sees the whole sphere blocked (tb = pi).
+TS_INLINE void ts_sphere_log_zh_rd(TS_REAL r, TS_REAL d, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    if (d <= r) {
+        ts_cap_log_zh(-1.0, 0.0, log_eps, c);
+        return;
+    }
+    // cos tb = sqrt((d - r)(d + r)) / d: d - r is exact in floating point near grazing, where
+    // the textbook sqrt(1 - (r/d)^2) would amplify the rounding of r/d by tan tb.
+    ts_cap_log_zh(sqrt((d - r) * (d + r)) / d, r / d, log_eps, c);
+}
+
+// Log-SH vector of a sphere blocker: log-ZH of its cap rotated to the unit direction dir from
+// the receiver to the sphere's centre.
+TS_INLINE void ts_sphere_log_sh(TS_REAL theta_b, TS_VEC3 dir, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, f, 16)) {
+    TS_REAL zh[4];
+    ts_sphere_log_zh(theta_b, log_eps, zh);
+    ts_zh_rotate(zh, dir, f);
+}
+
+// 16-term double-product integral <a, b> = int a(w) b(w) dw of two SH-projected functions.
+TS_INLINE TS_REAL ts_sh_dot(TS_IN_ARRAY(TS_REAL, a, 16), TS_IN_ARRAY(TS_REAL, b, 16)) {
+    TS_REAL s = 0.0;
+    for (int i = 0; i < 16; ++i) s += a[i] * b[i];
+    return s;
+}
+
+#endif  // TS_SH_SHARED_H

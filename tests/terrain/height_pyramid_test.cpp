@@ -1,0 +1,199 @@
+// HeightPyramid: every texel of every level, read through the tiles (and through halos at tile
+// corners), equals the same 2x2 mean / max prefilter computed naively on whole grids.
+#include "core/terrain/height_pyramid.hpp"
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace ts::terrain {
+namespace {
+
+// An independent, deliberately plain reference: level i+1 texel = mean (or max) of the valid
+// level-i texels among (2c..2c+1, 2r..2r+1) that exist.
+struct NaiveLevel {
+    int w, h;
+    std::vector<float> mean, max;
+};
+
+std::vector<NaiveLevel> naive_pyramid(const std::vector<float>& z, int w, int h) {
+    std::vector<NaiveLevel> levels{{w, h, z, z}};
+    while (levels.back().w > 1 || levels.back().h > 1) {
+        const NaiveLevel& p = levels.back();
+        NaiveLevel n{(p.w + 1) / 2, (p.h + 1) / 2, {}, {}};
+        for (int r = 0; r < n.h; ++r) {
+            for (int c = 0; c < n.w; ++c) {
+                double sum = 0;
+                int count = 0;
+                float best = -std::numeric_limits<float>::infinity();
+                for (int dr = 0; dr < 2; ++dr)
+                    for (int dc = 0; dc < 2; ++dc) {
+                        const int sc = 2 * c + dc, sr = 2 * r + dr;
+                        if (sc >= p.w || sr >= p.h) continue;
+                        const float vm = p.mean[std::size_t(sr * p.w + sc)];
+                        const float vx = p.max[std::size_t(sr * p.w + sc)];
+                        if (!std::isnan(vm)) { sum += vm; ++count; }
+                        if (!std::isnan(vx)) best = std::max(best, vx);
+                    }
+                n.mean.push_back(count ? float(sum / count) : std::nanf(""));
+                n.max.push_back(count ? best : std::nanf(""));
+            }
+        }
+        levels.push_back(std::move(n));
+    }
+    return levels;
+}
+
+std::vector<float> random_terrain(int w, int h, unsigned seed, double void_fraction) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<float> z(std::size_t(w) * std::size_t(h));
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            float v = 500.0f + 300.0f * std::sin(0.05f * float(c)) * std::cos(0.07f * float(r)) + 20.0f * u(rng);
+            if (u(rng) < void_fraction) v = std::nanf("");
+            z[std::size_t(r) * std::size_t(w) + std::size_t(c)] = v;
+        }
+    return z;
+}
+
+// Exactly equal, both NaN counting as equal: both sides sum in double (exact for four floats)
+// and round once to float.
+void expect_same(float got, float want, const char* what, int level, int c, int r) {
+    if (std::isnan(want)) {
+        ASSERT_TRUE(std::isnan(got)) << what << " level " << level << " at " << c << "," << r;
+    } else {
+        ASSERT_EQ(got, want) << what << " level " << level << " at " << c << "," << r;
+    }
+}
+
+float clamped(const std::vector<float>& v, int w, int h, int c, int r) {
+    return v[std::size_t(std::clamp(r, 0, h - 1) * w + std::clamp(c, 0, w - 1))];
+}
+
+struct Size { int w, h, tile, halo; double voids; };
+class PyramidSizes : public ::testing::TestWithParam<Size> {};
+
+TEST_P(PyramidSizes, TiledLevelsEqualTheNaivePrefilterEverywhere) {
+    const Size s = GetParam();
+    const std::vector<float> z = random_terrain(s.w, s.h, unsigned(s.w * 31 + s.h), s.voids);
+    const HeightGrid grid = HeightGrid::uniform(s.w, s.h, z, 30.0, 30.0);
+    PyramidOptions options;
+    options.tile_size = s.tile;
+    options.halo = s.halo;
+    options.threads = 2;
+    const HeightPyramid pyramid(grid, options);
+    const std::vector<NaiveLevel> naive = naive_pyramid(z, s.w, s.h);
+    ASSERT_EQ(pyramid.level_count(), int(naive.size()));
+    for (int i = 0; i < pyramid.level_count(); ++i) {
+        const PyramidLevel& level = pyramid.level(i);
+        const NaiveLevel& want = naive[std::size_t(i)];
+        ASSERT_EQ(level.width, want.w);
+        ASSERT_EQ(level.height, want.h);
+        ASSERT_EQ(level.scale, 1 << i);
+        for (int r = 0; r < want.h; ++r)
+            for (int c = 0; c < want.w; ++c) {
+                expect_same(level.at(c, r), want.mean[std::size_t(r * want.w + c)], "mean", i, c, r);
+                expect_same(level.max_at(c, r), want.max[std::size_t(r * want.w + c)], "max", i, c, r);
+            }
+        // Halos and padding, including the four corners of every tile.
+        for (const bool use_max : {false, true}) {
+            const TiledRaster& t = use_max ? level.max_raster() : level.mean;
+            const std::vector<float>& ref = use_max ? want.max : want.mean;
+            const int T = t.tile_size(), H = t.halo();
+            for (int ty = 0; ty < t.tiles_y(); ++ty)
+                for (int tx = 0; tx < t.tiles_x(); ++tx)
+                    for (int lr = -H; lr < T + H; ++lr)
+                        for (int lc = -H; lc < T + H; ++lc)
+                            expect_same(t.tile_texel(tx, ty, lc, lr), clamped(ref, want.w, want.h, tx * T + lc, ty * T + lr),
+                                        use_max ? "max halo" : "mean halo", i, tx * T + lc, ty * T + lr);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    OddSizes, PyramidSizes,
+    ::testing::Values(Size{3, 3, 256, 2, 0.0}, Size{3, 3, 2, 1, 0.2}, Size{361, 181, 64, 2, 0.0}, Size{361, 181, 32, 1, 0.05},
+                      Size{1000, 1000, 256, 2, 0.01}, Size{1201, 1201, 256, 2, 0.0}, Size{1201, 37, 128, 3, 0.3}));
+
+TEST(HeightPyramid, MaxIsAnUpperBoundOfEveryLevel0TexelBeneath) {
+    const int w = 203, h = 150;
+    const std::vector<float> z = random_terrain(w, h, 7, 0.02);
+    const HeightPyramid p(HeightGrid::uniform(w, h, z, 1, 1), {.tile_size = 32, .halo = 1});
+    for (int i = 1; i < p.level_count(); ++i) {
+        const PyramidLevel& l = p.level(i);
+        for (int r = 0; r < h; ++r)
+            for (int c = 0; c < w; ++c) {
+                const float v = z[std::size_t(r * w + c)];
+                if (!std::isnan(v)) {
+                    ASSERT_GE(l.max_at(c >> i, r >> i), v) << i;
+                }
+            }
+    }
+}
+
+TEST(HeightPyramid, AllVoidBlocksAreNaNAndMixedBlocksAverageOnlyValidTexels) {
+    // 4x2: left block all void, right block one valid texel of 10 and one of 20 (+2 voids).
+    const float n = std::nanf("");
+    const std::vector<float> z = {n, n, 10, n, n, n, n, 20};
+    const HeightPyramid p(HeightGrid::uniform(4, 2, z, 1, 1));
+    ASSERT_GE(p.level_count(), 2);
+    EXPECT_TRUE(std::isnan(p.level(1).at(0, 0)));
+    EXPECT_TRUE(std::isnan(p.level(1).max_at(0, 0)));
+    EXPECT_FLOAT_EQ(p.level(1).at(1, 0), 15.0f);
+    EXPECT_FLOAT_EQ(p.level(1).max_at(1, 0), 20.0f);
+    EXPECT_FLOAT_EQ(p.level(2).at(0, 0), 15.0f);
+}
+
+TEST(HeightPyramid, LevelSpacingScalesWithTheLevelAndFollowsRows) {
+    const int w = 8, h = 4;
+    std::vector<float> z(std::size_t(w * h), 0.0f);
+    HeightGrid g = HeightGrid::uniform(w, h, z, 0, 90);
+    g.dx_m = {100, 90, 80, 70};  // shrinking eastward spacing, as towards a pole
+    const HeightPyramid p(g);
+    EXPECT_DOUBLE_EQ(p.level(1).dx_m[0], 2 * 95.0);
+    EXPECT_DOUBLE_EQ(p.level(1).dx_m[1], 2 * 75.0);
+    EXPECT_DOUBLE_EQ(p.level(2).dx_m[0], 4 * 85.0);
+    EXPECT_DOUBLE_EQ(p.level(2).dy_m[0], 4 * 90.0);
+}
+
+TEST(HeightPyramid, SampleAtLevel0CoordinatesMatchesTexelCentres) {
+    const int w = 64, h = 64;
+    std::vector<float> z(std::size_t(w * h));
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) z[std::size_t(r * w + c)] = float(3 * c + 5 * r);  // a plane
+    const HeightPyramid p(HeightGrid::uniform(w, h, z, 1, 1), {.tile_size = 16, .halo = 1});
+    // A plane is reproduced exactly by box means and bilinear interpolation away from edges.
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR(p.level(i).sample_level0(20.25f, 30.5f), 3 * 20.25f + 5 * 30.5f, 1e-3f) << i;
+    }
+}
+
+TEST(HeightPyramid, OffsetMetricUsesRowSpacing) {
+    const int w = 10, h = 10;
+    std::vector<float> z(std::size_t(w * h), 0.0f);
+    const HeightPyramid p(HeightGrid::uniform(w, h, z, 30, 90));
+    float x = 0, y = 0;
+    p.offset_metric(5, 5, 60, 180, x, y);
+    EXPECT_FLOAT_EQ(x, 7.0f);
+    EXPECT_FLOAT_EQ(y, 3.0f);  // north = towards row 0
+}
+
+TEST(HeightPyramid, RejectsBadOptions) {
+    std::vector<float> z(9, 0.0f);
+    const HeightGrid g = HeightGrid::uniform(3, 3, z, 1, 1);
+    EXPECT_THROW(HeightPyramid(g, {.tile_size = 100}), std::invalid_argument);
+    EXPECT_THROW(HeightPyramid(g, {.tile_size = 16, .halo = 0}), std::invalid_argument);
+}
+
+TEST(HeightPyramid, MaxLevelsStopsEarly) {
+    std::vector<float> z(64 * 64, 1.0f);
+    const HeightPyramid p(HeightGrid::uniform(64, 64, z, 1, 1), {.max_levels = 3});
+    EXPECT_EQ(p.level_count(), 3);
+}
+
+}  // namespace
+}  // namespace ts::terrain

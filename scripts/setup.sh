@@ -21,6 +21,7 @@ BUILD_PKGS=(
   libassimp-dev             # mesh import (AC3D, glTF, OBJ, ...)
   libsqlite3-dev            # MBTiles
   libcli11-dev              # command-line parsing
+  nlohmann-json3-dev        # JSON output (info --json) and parsing gdalinfo -json in tests
   libgtest-dev libgmock-dev googletest libbenchmark-dev
 )
 # Test oracles, headless display and charting: never linked into terrashade.

@@ -14,6 +14,9 @@ public:
     // From "EPSG:32633", a PROJ string or WKT. Throws ts::InputError if PROJ does not know it.
     static std::shared_ptr<const Crs> from_definition(const std::string& definition);
     static std::shared_ptr<const Crs> from_epsg(int code);
+    // As from_definition, but named `fallback_name` when PROJ has no name for it (a bare PROJ
+    // string is "unknown"; a GeoTIFF's citation key says more).
+    static std::shared_ptr<const Crs> from_definition(const std::string& definition, const std::string& fallback_name);
     static std::shared_ptr<const Crs> wgs84() { return from_epsg(4326); }
 
     ~Crs();
@@ -29,6 +32,12 @@ public:
     // Thread-safe.
     glm::dvec2 to_lonlat(glm::dvec2 xy) const;
     glm::dvec2 from_lonlat(glm::dvec2 lonlat) const;
+
+    // Same CRS (same EPSG code, or PROJ finds the definitions equivalent): mosaics need it.
+    bool same_as(const Crs& other) const;
+    // PROJ string / WKT1 (GDAL flavour) of the CRS, for writers and messages.
+    std::string to_proj_string() const;
+    std::string to_wkt() const;
 
     struct Impl;
 

@@ -2,6 +2,13 @@
 find_package(Threads REQUIRED)
 find_package(PROJ CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)
+# Debian 12's OpenImageIO config lists /usr/include/opencv4 even when OpenCV is not installed,
+# which makes every target linking it fail to generate: drop that one directory.
+get_target_property(_ts_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+if(_ts_oiio_includes)
+  list(FILTER _ts_oiio_includes EXCLUDE REGEX "opencv4")
+  set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_ts_oiio_includes}")
+endif()
 find_package(TIFF REQUIRED)
 # libzip: its Debian CMake config demands the zipcmp tools; pkg-config needs nothing more.
 find_package(PkgConfig REQUIRED)
@@ -10,6 +17,7 @@ find_package(glm CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(SQLite3 REQUIRED)
 find_package(assimp CONFIG REQUIRED)
+find_package(nlohmann_json 3 CONFIG REQUIRED)  # info --json output; gdalinfo -json in tests
 
 # GeographicLib: Debian ships only a Find module in a non-standard place.
 find_path(GeographicLib_INCLUDE_DIR GeographicLib/Config.h REQUIRED)

@@ -1,0 +1,38 @@
+#include "app/dem_input.hpp"
+
+#include "core/dem/crop.hpp"
+#include "core/dem/fill_voids.hpp"
+#include "core/dem/mosaic.hpp"
+#include "core/dem/read_dem.hpp"
+#include "core/util/error.hpp"
+
+namespace ts::app {
+
+void add_dem_input_options(CLI::App& cmd, DemInput& in, bool with_fill_option) {
+    cmd.add_option("DEM", in.files,
+                   "DEM files: SRTM .hgt, .hgt.zip or GeoTIFF; several files on one grid form one mosaic "
+                   "(shared edge rows/columns counted once)")
+        ->required();
+    cmd.add_option("--crop", in.crop, "Keep only the cells overlapping this WGS84 lon/lat box, degrees")
+        ->type_name("W,S,E,N")
+        ->delimiter(',');
+    if (with_fill_option)
+        cmd.add_flag("!--no-fill", in.fill_voids,
+                     "Leave voids (nodata) as NaN instead of filling them from their rim");
+}
+
+ts::dem::Dem load_dem_input(const DemInput& in) {
+    if (in.files.empty()) throw InputError("no DEM file given");
+    std::vector<dem::Dem> parts;
+    parts.reserve(in.files.size());
+    for (const auto& f : in.files) parts.push_back(dem::read_dem(f));
+    dem::Dem d = dem::mosaic(std::move(parts));
+    if (!in.crop.empty()) {
+        if (in.crop.size() != 4) throw InputError("--crop needs W,S,E,N (four numbers)");
+        d = dem::crop(d, {in.crop[0], in.crop[1], in.crop[2], in.crop[3]});
+    }
+    if (in.fill_voids) dem::fill_voids(d);
+    return d;
+}
+
+}  // namespace ts::app

@@ -1,0 +1,25 @@
+#pragma once
+// The DEM inputs every command shares: positional files (several = one mosaic), --crop, --no-fill.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/dem/dem.hpp"
+
+namespace ts::app {
+
+struct DemInput {
+    std::vector<std::string> files;
+    std::vector<double> crop;  // W,S,E,N degrees, or empty
+    bool fill_voids = true;
+};
+
+// Adds `DEM...` (required), `--crop W,S,E,N` and, when with_fill_option, `--no-fill`.
+void add_dem_input_options(CLI::App& cmd, DemInput& in, bool with_fill_option = true);
+
+// Reads every file, mosaics them, crops, fills voids (void_mask keeps the record).
+// Throws ts::InputError naming the file on bad input.
+ts::dem::Dem load_dem_input(const DemInput& in);
+
+}  // namespace ts::app

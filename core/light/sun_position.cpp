@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/geo/azimuth.hpp"
 #include "core/light/delta_t.hpp"
 #include "core/light/spa_tables.hpp"
 #include "core/util/error.hpp"
@@ -191,9 +192,7 @@ SunPosition sun_position(const SunPositionInput& in) {
 }
 
 glm::dvec3 sun_direction_enu(const SunPosition& sun) {
-    const double az = rad(sun.azimuth_deg), el = rad(sun.elevation_deg);
-    // Clockwise from north: east = sin(az), north = cos(az).
-    return {std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el)};
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(sun.azimuth_deg), rad(sun.elevation_deg));
 }
 
 double incidence_angle_deg(const SunPosition& sun, double slope_deg, double normal_azimuth_deg) {

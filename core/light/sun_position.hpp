@@ -79,8 +79,8 @@ SunPosition sun_position(const SunPositionInput& input);
 double refraction_correction_deg(double elevation_unrefracted_deg, const Atmosphere& atmosphere);
 
 // The unit vector towards the sun in the local ENU frame (x east, y north, z up), from the
-// azimuth clockwise from north and the (refracted) elevation: the one place where the
-// user-facing azimuth becomes the frame's direction.
+// azimuth clockwise from north and the (refracted) elevation (through core/geo/azimuth.hpp,
+// the one place where user-facing azimuths become frame directions).
 glm::dvec3 sun_direction_enu(const SunPosition& sun);
 
 // Angle of incidence of the sun on a plane tilted by slope_deg whose downhill normal points to

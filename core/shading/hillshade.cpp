@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <string>
 
-#include "core/shading/azimuth.hpp"
+#include "core/geo/azimuth.hpp"
 #include "core/terrain/parallel_rows.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::shading {
+using geo::azimuth_cw_from_north_to_phi;
+using geo::enu_direction;
 
 namespace {
 std::string number(double v) {

@@ -7,10 +7,13 @@
 
 #include <gtest/gtest.h>
 
-#include "core/shading/azimuth.hpp"
+#include "core/geo/azimuth.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::shading {
+using geo::azimuth_cw_from_north_to_phi;
+using geo::enu_direction;
+using geo::phi_to_azimuth_cw_from_north;
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;

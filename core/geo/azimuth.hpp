@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace ts::shading {
+namespace ts::geo {
 
 // 0 (north) -> pi/2, 90 (east) -> 0, 180 (south) -> -pi/2, 270 (west) -> -pi (== pi).
 inline double azimuth_cw_from_north_to_phi(double azimuth_deg) {
@@ -28,4 +28,4 @@ inline glm::dvec3 enu_direction(double phi_rad, double elevation_rad) {
     return {c * std::cos(phi_rad), c * std::sin(phi_rad), std::sin(elevation_rad)};
 }
 
-}  // namespace ts::shading
+}  // namespace ts::geo

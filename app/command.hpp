@@ -8,5 +8,14 @@ namespace ts::app {
 
 void add_info_command(CLI::App& root);
 void add_hillshade_command(CLI::App& root);
+// `bench` with its subcommands (bench sh, ...): app/bench_command.cpp.
+void add_bench_command(CLI::App& root);
+void add_visibility_command(CLI::App& root);
+// `terrashade bench visibility` (app/bench_visibility_command.cpp), called by add_bench_command.
+void add_bench_visibility_command(CLI::App& bench);
+// Only in a GPU build (TERRASHADE_HAS_GPU): the Vulkan devices and a compute self-test.
+void add_devices_command(CLI::App& root);
+// `terrashade sun`: the sun's position at a time and place (app/sun_command.cpp).
+void add_sun_command(CLI::App& root);
 
 }  // namespace ts::app

@@ -19,6 +19,12 @@ int main(int argc, char** argv) {
     root.set_version_flag("--version", "terrashade 0.1.0");
     ts::app::add_info_command(root);
     ts::app::add_hillshade_command(root);
+    ts::app::add_bench_command(root);
+    ts::app::add_visibility_command(root);
+    ts::app::add_sun_command(root);
+#ifdef TERRASHADE_HAS_GPU
+    ts::app::add_devices_command(root);
+#endif
     try {
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

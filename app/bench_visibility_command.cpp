@@ -1,0 +1,432 @@
+// `terrashade bench visibility`: accuracy and speed of the horizon methods on real DEMs,
+// against the raymarch reference, and (with --saga) SAGA's sky view factor on the same
+// projected DEM in the same run. Its CSV feeds scripts/chart_visibility.py.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "core/dem/read_dem.hpp"
+#include "core/raster/raster_writer.hpp"
+#include "core/util/atomic_file.hpp"
+#include "core/util/error.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/sky_integrals.hpp"
+#include "core/visibility/visibility_grid.hpp"
+
+namespace ts::app {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPi = std::numbers::pi;
+
+struct BenchVisibilityOptions {
+    std::vector<std::string> dems;
+    int window = 300;
+    std::vector<int> directions = {8, 16, 32, 64};
+    std::vector<std::string> methods = {"exact", "pyramid", "raymarch"};
+    std::vector<std::string> schedules = {"balanced"};
+    // exact variants "near:lines": near field in texels and sweep lines per texel.
+    std::vector<std::string> exact_variants = {"2:1"};
+    int reference_directions = 256;
+    int full_directions = 32;
+    bool full = false;
+    bool no_curvature = false;
+    bool saga = false;
+    int threads = 0;
+    std::string csv;
+};
+
+struct Row {
+    std::string dem, method, variant;
+    int width = 0, height = 0, directions = 0;
+    double time_ms = kNaN;
+    double horizon_rmse_deg = kNaN, horizon_p99_deg = kNaN;
+    double svf_rmse = kNaN, svf_p99 = kNaN, svf_rmse_constant = kNaN;
+    double sky_rmse = kNaN, sky_p99 = kNaN;
+    double saga_visible_rmse = kNaN, saga_svf_rmse = kNaN;  // in SAGA's definitions (see docs/visibility.md)
+};
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Interior texels (the outermost ring has no terrain beyond it in some directions; its
+// horizon is a convention) where both rasters are valid.
+struct ErrorStats {
+    double rmse = kNaN, p99 = kNaN;
+};
+ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b, int w, int h, double scale = 1.0) {
+    std::vector<double> err;
+    for (int r = 1; r + 1 < h; ++r)
+        for (int c = 1; c + 1 < w; ++c) {
+            const std::size_t i = std::size_t(r) * w + c;
+            if (std::isnan(a[i]) || std::isnan(b[i])) continue;
+            err.push_back(std::abs(double(a[i]) - b[i]) * scale);
+        }
+    if (err.empty()) return {};
+    double se = 0;
+    for (double e : err) se += e * e;
+    const std::size_t k = std::min(err.size() - 1, std::size_t(0.99 * double(err.size())));
+    std::nth_element(err.begin(), err.begin() + std::ptrdiff_t(k), err.end());
+    return {std::sqrt(se / double(err.size())), err[k]};
+}
+
+ErrorStats compare_horizons(const visibility::HorizonSet& ref, const visibility::HorizonSet& set) {
+    const int step = ref.directions / set.directions;
+    std::vector<float> a, b;
+    a.reserve(set.angle.size());
+    b.reserve(set.angle.size());
+    // Stack the planes so compare() sees one long raster with the same ring excluded per plane.
+    std::vector<double> err;
+    double se = 0;
+    for (int d = 0; d < set.directions; ++d) {
+        const float* pr = ref.plane(d * step);
+        const float* ps = set.plane(d);
+        for (int r = 1; r + 1 < set.height; ++r)
+            for (int c = 1; c + 1 < set.width; ++c) {
+                const std::size_t i = std::size_t(r) * set.width + c;
+                if (std::isnan(pr[i]) || std::isnan(ps[i])) continue;
+                const double e = std::abs(double(pr[i]) - ps[i]) * 180.0 / kPi;
+                err.push_back(e);
+                se += e * e;
+            }
+    }
+    if (err.empty()) return {};
+    const std::size_t k = std::min(err.size() - 1, std::size_t(0.99 * double(err.size())));
+    std::nth_element(err.begin(), err.begin() + std::ptrdiff_t(k), err.end());
+    return {std::sqrt(se / double(err.size())), err[k]};
+}
+
+// A centred window of at most n x n texels (the raymarch reference is slow).
+dem::Dem centre_window(const dem::Dem& d, int n) {
+    const int w = std::min(n, d.width), h = std::min(n, d.height);
+    const int c0 = (d.width - w) / 2, r0 = (d.height - h) / 2;
+    if (w == d.width && h == d.height) return d;
+    dem::Dem out;
+    out.width = w;
+    out.height = h;
+    out.z.resize(std::size_t(w) * h);
+    out.void_mask.resize(out.z.size());
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            out.z[std::size_t(r) * w + c] = d.at(c0 + c, r0 + r);
+            out.void_mask[std::size_t(r) * w + c] = d.void_mask.empty() ? 0 : d.void_mask[d.index(c0 + c, r0 + r)];
+        }
+    out.georef = d.georef.window(c0, r0, w, h);
+    out.vertical_datum = d.vertical_datum;
+    out.source = d.source;
+    return out;
+}
+
+// SAGA's outputs (ta_lighting 3, view_shed.cpp) from horizons with constant sectors:
+// Visible = mean(1 - H / 90 deg) (linear in angle, not a solid angle), and
+// SVF = mean(cos(s) cos^2 H + sin(s) cos(phi - aspect) (pi/2 - H - sin H cos H)) for a receiver
+// tilted by slope s (H >= 0: SAGA starts every search at 0).
+struct SagaQuantities {
+    std::vector<float> visible, svf;
+};
+SagaQuantities saga_quantities(const visibility::HorizonSet& set, const terrain::HeightGrid& g) {
+    SagaQuantities q;
+    q.visible.assign(set.texels(), std::numeric_limits<float>::quiet_NaN());
+    q.svf = q.visible;
+    for (int r = 1; r + 1 < set.height; ++r)
+        for (int c = 1; c + 1 < set.width; ++c) {
+            const std::size_t i = std::size_t(r) * set.width + c;
+            // Slope and downhill aspect (clockwise from north) from central differences, as SAGA's
+            // Get_Gradient (Zevenbergen and Thorne).
+            const double dzdx = (g.at(c + 1, r) - g.at(c - 1, r)) / (2 * g.dx_m[std::size_t(r)]);
+            const double dzdy = (g.at(c, r - 1) - g.at(c, r + 1)) / (2 * g.dy_m[std::size_t(r)]);
+            if (std::isnan(dzdx) || std::isnan(dzdy) || std::isnan(set.plane(0)[i])) continue;
+            const double slope = std::atan(std::hypot(dzdx, dzdy));
+            const double aspect = std::atan2(-dzdx, -dzdy);
+            double vis = 0, svf = 0;
+            for (int d = 0; d < set.directions; ++d) {
+                const double hz = std::max(0.0, double(set.plane(d)[i]));
+                const double az = visibility::user_azimuth_deg(d, set.directions) * kPi / 180.0;
+                vis += 1.0 - hz / (kPi / 2);
+                svf += std::cos(slope) * std::cos(hz) * std::cos(hz) +
+                       std::sin(slope) * std::cos(az - aspect) * (kPi / 2 - hz - std::sin(hz) * std::cos(hz));
+            }
+            q.visible[i] = float(vis / set.directions);
+            q.svf[i] = float(svf / set.directions);
+        }
+    return q;
+}
+
+// "near,lines" -> the exact method's near field (texels) and sweep lines per texel.
+void set_exact_variant(visibility::HorizonOptions& ho, const std::string& variant) {
+    double near = 0;
+    int lines = 0;
+    if (std::sscanf(variant.c_str(), "%lf:%d", &near, &lines) != 2 || near < 0 || lines < 1 || lines > 4)
+        throw InputError("--exact-variants: expected NEAR:LINES such as 2:1, got '" + variant + "'");
+    ho.exact_near_field_texels = near;
+    ho.exact_lines_per_texel = lines;
+}
+
+std::string fmt(double v) {
+    if (std::isnan(v)) return "";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+void print_row(const Row& r) {
+    std::printf("%-28s %-14s %-9s %4d %9.1f %9.3f %9.3f %9.5f %9.5f %9.5f %9.5f %9.5f %9.5f\n", r.dem.c_str(),
+                r.method.c_str(), r.variant.c_str(), r.directions, r.time_ms, r.horizon_rmse_deg, r.horizon_p99_deg,
+                r.svf_rmse, r.svf_p99, r.svf_rmse_constant, r.sky_rmse, r.saga_visible_rmse, r.saga_svf_rmse);
+    std::fflush(stdout);
+}
+
+void run_saga(const BenchVisibilityOptions& o, const dem::Dem& win, const terrain::HeightGrid& grid,
+              const visibility::HorizonSet& ref, std::vector<Row>& rows, const std::string& name) {
+    if (win.georef.crs().is_geographic())
+        throw input_error(win.source,
+                          "--saga needs a projected DEM (SAGA takes cell sizes in map units); "
+                          "reproject it first, e.g. scripts/bench_visibility.sh does with gdalwarp");
+    const auto dir = std::filesystem::temp_directory_path() / ("terrashade-bench-saga-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string in = (dir / "dem.tif").string();
+    std::vector<float> z(grid.z.begin(), grid.z.end());
+    raster::write_float_raster(in, win.width, win.height, 1, z.data(), win.georef);
+    const SagaQuantities ref_q = saga_quantities(ref, grid);
+    const double radius = 2.0 * std::hypot(win.width * grid.dx_m[0], win.height * grid.dy_m[0]);
+    for (int d : o.directions) {
+        for (int method : {0, 1}) {
+            const std::string vis = (dir / "visible.tif").string(), svf = (dir / "svf.tif").string();
+            std::filesystem::remove(vis);
+            std::filesystem::remove(svf);
+            const std::string cmd = "saga_cmd ta_lighting 3 -DEM '" + in + "' -VISIBLE '" + vis + "' -SVF '" + svf +
+                                    "' -NDIRS " + std::to_string(d) + " -RADIUS " + std::to_string(radius) +
+                                    " -METHOD " + std::to_string(method) + " > '" + (dir / "saga.log").string() +
+                                    "' 2>&1";
+            const auto t0 = std::chrono::steady_clock::now();
+            const int rc = std::system(cmd.c_str());
+            const double ms = ms_since(t0);
+            if (rc != 0 || !std::filesystem::exists(svf))
+                throw InputError("saga_cmd failed (exit " + std::to_string(rc) + "); see " +
+                                 (dir / "saga.log").string());
+            const dem::Dem sv = dem::read_dem(vis), sf = dem::read_dem(svf);
+            std::vector<float> v(sv.z), f(sf.z);
+            for (auto& x : v) x /= 100.0f;  // SAGA's Visible is in percent
+            Row r;
+            r.dem = name;
+            r.method = method == 0 ? "saga-cellsize" : "saga-multiscale";
+            r.variant = "saga";
+            r.width = win.width;
+            r.height = win.height;
+            r.directions = d;
+            r.time_ms = ms;
+            r.saga_visible_rmse = compare(v, ref_q.visible, win.width, win.height).rmse;
+            r.saga_svf_rmse = compare(f, ref_q.svf, win.width, win.height).rmse;
+            rows.push_back(r);
+            print_row(r);
+        }
+        // terrashade's exact horizons at the same sector count, in SAGA's formulas.
+        visibility::HorizonOptions ho;
+        ho.directions = d;
+        ho.curvature = !o.no_curvature;
+        ho.threads = o.threads;
+        const auto t0 = std::chrono::steady_clock::now();
+        const visibility::HorizonSet set = visibility::compute_horizons(grid, ho);
+        const SagaQuantities q = saga_quantities(set, grid);
+        Row r;
+        r.dem = name;
+        r.method = "exact";
+        r.variant = "saga-formula";
+        r.width = win.width;
+        r.height = win.height;
+        r.directions = d;
+        r.time_ms = ms_since(t0);
+        r.saga_visible_rmse = compare(q.visible, ref_q.visible, win.width, win.height).rmse;
+        r.saga_svf_rmse = compare(q.svf, ref_q.svf, win.width, win.height).rmse;
+        rows.push_back(r);
+        print_row(r);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+void write_csv(const BenchVisibilityOptions& o, const std::vector<Row>& rows) {
+    if (o.csv.empty()) return;
+    {
+        std::ostringstream csv;
+        csv << "dem,method,variant,width,height,directions,reference_directions,curvature,time_ms,"
+               "horizon_rmse_deg,horizon_p99_deg,svf_rmse,svf_p99,svf_rmse_constant,sky_rmse,sky_p99,"
+               "saga_visible_rmse,saga_svf_rmse\n";
+        for (const Row& r : rows)
+            csv << r.dem << ',' << r.method << ',' << r.variant << ',' << r.width << ',' << r.height << ','
+                << r.directions << ',' << o.reference_directions << ',' << (o.no_curvature ? 0 : 1) << ','
+                << fmt(r.time_ms) << ',' << fmt(r.horizon_rmse_deg) << ',' << fmt(r.horizon_p99_deg) << ','
+                << fmt(r.svf_rmse) << ',' << fmt(r.svf_p99) << ',' << fmt(r.svf_rmse_constant) << ',' << fmt(r.sky_rmse)
+                << ',' << fmt(r.sky_p99) << ',' << fmt(r.saga_visible_rmse) << ',' << fmt(r.saga_svf_rmse) << '\n';
+        write_atomically(o.csv, [&](const std::filesystem::path& tmp) {
+            std::ofstream out(tmp, std::ios::binary);
+            out << csv.str();
+            if (!out.flush()) throw input_error(o.csv, "cannot write");
+        });
+    }
+}
+
+void run_bench_visibility(const BenchVisibilityOptions& o) {
+    for (int d : o.directions)
+        if (d < 1 || o.reference_directions % d != 0)
+            throw InputError("--directions: each count must divide --reference-directions (" +
+                             std::to_string(o.reference_directions) + "), got " + std::to_string(d));
+    for (const auto& m : o.methods)
+        if (!visibility::parse_method(m)) throw InputError("--methods: unknown method '" + m + "'");
+    std::vector<Row> rows;
+    std::printf("%-28s %-14s %-9s %4s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "dem", "method", "variant", "D", "ms",
+                "hz_rms", "hz_p99", "svf_rmse", "svf_p99", "svf_cst", "sky_rmse", "saga_vis", "saga_svf");
+    for (const auto& path : o.dems) {
+        const dem::Dem full = dem::read_dem(path);
+        const std::string name = std::filesystem::path(path).filename().string();
+        const dem::Dem win = centre_window(full, o.window);
+        const visibility::VisibilityGrid grid(win);
+
+        visibility::HorizonOptions ref_opts;
+        ref_opts.method = visibility::HorizonMethod::raymarch;
+        ref_opts.directions = o.reference_directions;
+        ref_opts.curvature = !o.no_curvature;
+        ref_opts.threads = o.threads;
+        auto t0 = std::chrono::steady_clock::now();
+        const visibility::HorizonSet ref = visibility::compute_horizons(grid.view(), ref_opts);
+        Row ref_row;
+        ref_row.dem = name;
+        ref_row.method = "reference";
+        ref_row.variant = "raymarch";
+        ref_row.width = win.width;
+        ref_row.height = win.height;
+        ref_row.directions = o.reference_directions;
+        ref_row.time_ms = ms_since(t0);
+        rows.push_back(ref_row);
+        print_row(ref_row);
+        const auto svf_ref = visibility::svf_raster(ref, visibility::WedgeRule::linear, o.threads);
+        const auto sky_ref = visibility::sky_visible_raster(ref, visibility::WedgeRule::linear, o.threads);
+
+        for (const auto& m : o.methods) {
+            const auto method = *visibility::parse_method(m);
+            const std::vector<std::string> variants = method == visibility::HorizonMethod::pyramid ? o.schedules
+                                                      : method == visibility::HorizonMethod::exact
+                                                          ? o.exact_variants
+                                                          : std::vector<std::string>{"-"};
+            for (const auto& variant : variants)
+                for (int d : o.directions) {
+                    visibility::HorizonOptions ho;
+                    ho.method = method;
+                    ho.directions = d;
+                    ho.curvature = !o.no_curvature;
+                    ho.threads = o.threads;
+                    if (method == visibility::HorizonMethod::pyramid) ho.pyramid_schedule = variant;
+                    if (method == visibility::HorizonMethod::exact) set_exact_variant(ho, variant);
+                    t0 = std::chrono::steady_clock::now();
+                    const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
+                    Row r;
+                    r.time_ms = ms_since(t0);
+                    r.dem = name;
+                    r.method = m;
+                    r.variant = variant;
+                    r.width = win.width;
+                    r.height = win.height;
+                    r.directions = d;
+                    const ErrorStats hz = compare_horizons(ref, set);
+                    r.horizon_rmse_deg = hz.rmse;
+                    r.horizon_p99_deg = hz.p99;
+                    const ErrorStats sv = compare(visibility::svf_raster(set, visibility::WedgeRule::linear, o.threads),
+                                                  svf_ref, win.width, win.height);
+                    r.svf_rmse = sv.rmse;
+                    r.svf_p99 = sv.p99;
+                    r.svf_rmse_constant =
+                        compare(visibility::svf_raster(set, visibility::WedgeRule::constant, o.threads), svf_ref,
+                                win.width, win.height)
+                            .rmse;
+                    const ErrorStats sk =
+                        compare(visibility::sky_visible_raster(set, visibility::WedgeRule::linear, o.threads), sky_ref,
+                                win.width, win.height);
+                    r.sky_rmse = sk.rmse;
+                    r.sky_p99 = sk.p99;
+                    rows.push_back(r);
+                    print_row(r);
+                }
+        }
+        if (o.full) {
+            // Speed on the whole DEM (no reference there): exact and pyramid.
+            const visibility::VisibilityGrid whole(full);
+            for (const auto& m : {std::string("exact"), std::string("pyramid")}) {
+                visibility::HorizonOptions ho;
+                ho.method = *visibility::parse_method(m);
+                ho.directions = o.full_directions;
+                ho.curvature = !o.no_curvature;
+                ho.threads = o.threads;
+                t0 = std::chrono::steady_clock::now();
+                (void)visibility::compute_horizons(whole.view(), ho);
+                Row r;
+                r.time_ms = ms_since(t0);
+                r.dem = name;
+                r.method = m;
+                r.variant = "full-dem";
+                r.width = full.width;
+                r.height = full.height;
+                r.directions = o.full_directions;
+                rows.push_back(r);
+                print_row(r);
+            }
+        }
+        if (o.saga) run_saga(o, win, grid.view(), ref, rows, name);
+        write_csv(o, rows);  // after every DEM, so a long run that fails later keeps its rows
+    }
+    if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
+}
+
+}  // namespace
+
+void add_bench_visibility_command(CLI::App& bench) {
+    auto o = std::make_shared<BenchVisibilityOptions>();
+    CLI::App* cmd = bench.add_subcommand(
+        "visibility",
+        "Horizon methods against the raymarch reference on a centred window of each DEM: horizon error, "
+        "svf and sky_visible RMSE / 99th percentile, time; --saga adds saga_cmd ta_lighting 3 side by side");
+    cmd->add_option("DEM", o->dems, "DEM files, each measured on its own")->required();
+    cmd->add_option("--window", o->window, "Centred window size in texels (the reference is brute force)")
+        ->capture_default_str()
+        ->check(CLI::Range(8, 5000));
+    cmd->add_option("--directions", o->directions, "Azimuth counts to measure")->delimiter(',')->capture_default_str();
+    cmd->add_option("--methods", o->methods, "Methods to measure: exact, pyramid, raymarch")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--pyramid-schedules", o->schedules, "pyramid schedules to measure: fast, balanced, fine, finest")
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::IsMember({"fast", "balanced", "fine", "finest"}));
+    cmd->add_option("--exact-variants", o->exact_variants,
+                    "exact variants to measure, NEAR:LINES = near field in texels : sweep lines per texel")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--reference-directions", o->reference_directions,
+                    "Azimuths of the raymarch reference (svf integrated with linear wedges)")
+        ->capture_default_str()
+        ->check(CLI::Range(8, 4096));
+    cmd->add_flag("--full", o->full, "Also time exact and pyramid on the whole DEM");
+    cmd->add_option("--full-directions", o->full_directions, "Azimuths for --full")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth for every method (SAGA has no curvature)");
+    cmd->add_flag("--saga", o->saga,
+                  "Also run saga_cmd ta_lighting 3 (both its methods) on the window; projected DEMs only");
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = one per core)")->capture_default_str();
+    cmd->add_option("--csv", o->csv, "Write the rows as CSV (input of scripts/chart_visibility.py)");
+    cmd->callback([o] { run_bench_visibility(*o); });
+}
+
+}  // namespace ts::app

@@ -1,0 +1,164 @@
+// `terrashade visibility`: horizons per texel and azimuth on a real DEM, and what follows
+// from them (sky view factor, visible sky, log-SH and SH visibility), as float32 GeoTIFFs
+// georeferenced like the input.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "app/dem_input.hpp"
+#include "core/raster/raster_writer.hpp"
+#include "core/sh/exp_method.hpp"
+#include "core/terrain/dem_height_grid.hpp"
+#include "core/util/error.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/horizon_sh.hpp"
+#include "core/visibility/sky_integrals.hpp"
+#include "core/visibility/visibility_grid.hpp"
+
+namespace ts::app {
+namespace {
+
+struct VisibilityOptions {
+    DemInput dem;
+    visibility::HorizonOptions horizon;
+    std::string method = "exact";
+    std::string wedges = "linear";
+    std::string exp_method = "hybrid";
+    float log_eps = visibility::kDefaultVisibilityLogEps;
+    bool no_curvature = false;
+    std::string svf, sky_visible, horizons, sh, log_sh;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void write_raster(const std::string& path, const dem::Dem& dem, int bands, const float* data,
+                  const std::vector<std::string>& names) {
+    raster::write_float_raster(path, dem.width, dem.height, bands, data, dem.georef, names);
+    std::printf("wrote %s (%d band%s)\n", path.c_str(), bands, bands == 1 ? "" : "s");
+}
+
+void run_visibility(VisibilityOptions& o) {
+    if (o.svf.empty() && o.sky_visible.empty() && o.horizons.empty() && o.sh.empty() && o.log_sh.empty())
+        throw InputError("visibility: nothing to write; give --svf, --sky-visible, --horizons, --sh or --log-sh");
+    o.horizon.method = *visibility::parse_method(o.method);
+    o.horizon.curvature = !o.no_curvature;
+    const sh::ExpMethod exp_method = sh::parse_exp_method(o.exp_method);
+    if ((!o.sh.empty() || !o.log_sh.empty()) && o.horizon.directions < 4)
+        throw InputError("--sh/--log-sh: need at least 4 --directions");
+    const auto rule = o.wedges == "constant" ? visibility::WedgeRule::constant : visibility::WedgeRule::linear;
+
+    const dem::Dem dem = load_dem_input(o.dem);
+    const visibility::VisibilityGrid grid(dem);
+    const std::size_t texels = std::size_t(dem.width) * dem.height;
+
+    const auto t0 = std::chrono::steady_clock::now();
+    visibility::HorizonSet set;
+    {
+        ProgressBar bar("horizons (" + o.method + ")", texels * std::uint64_t(o.horizon.directions), "rays");
+        o.horizon.progress = &bar;
+        set = visibility::compute_horizons(grid.view(), o.horizon);
+        o.horizon.progress = nullptr;
+    }
+    std::printf("%s horizons: %d directions, %dx%d texels, %.3f s (%s curvature)\n", o.method.c_str(),
+                o.horizon.directions, dem.width, dem.height, seconds_since(t0), o.no_curvature ? "no" : "with");
+
+    if (!o.horizons.empty()) {
+        std::vector<float> deg(set.angle.size());
+        for (std::size_t i = 0; i < deg.size(); ++i) deg[i] = float(set.angle[i] * (180.0 / 3.14159265358979323846));
+        std::vector<std::string> names;
+        for (int d = 0; d < set.directions; ++d) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "horizon elevation (deg) toward azimuth %.4g deg clockwise from north",
+                          visibility::user_azimuth_deg(d, set.directions));
+            names.emplace_back(buf);
+        }
+        write_raster(o.horizons, dem, set.directions, deg.data(), names);
+    }
+    if (!o.svf.empty()) {
+        const auto svf = visibility::svf_raster(set, rule, o.horizon.threads);
+        write_raster(o.svf, dem, 1, svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
+    }
+    if (!o.sky_visible.empty()) {
+        const auto sky = visibility::sky_visible_raster(set, rule, o.horizon.threads);
+        write_raster(o.sky_visible, dem, 1, sky.data(), {"sky_visible: visible fraction of the upper hemisphere"});
+    }
+    if (!o.sh.empty() || !o.log_sh.empty()) {
+        const auto t1 = std::chrono::steady_clock::now();
+        const auto log_sh = visibility::log_sh_raster(set, o.log_eps, o.horizon.threads);
+        std::vector<std::string> names;
+        for (int i = 0; i < 16; ++i) {
+            const int l = int(std::sqrt(double(i)));
+            names.push_back("SH l=" + std::to_string(l) + " m=" + std::to_string(i - l * l - l));
+        }
+        if (!o.log_sh.empty()) write_raster(o.log_sh, dem, 16, log_sh.data(), names);
+        if (!o.sh.empty()) {
+            const auto vis = visibility::exp_sh_raster(log_sh, texels, exp_method, o.horizon.threads);
+            write_raster(o.sh, dem, 16, vis.data(), names);
+        }
+        std::printf("log-SH%s: %.3f s\n", o.sh.empty() ? "" : (" + exp (" + o.exp_method + ")").c_str(),
+                    seconds_since(t1));
+    }
+}
+
+}  // namespace
+
+void add_visibility_command(CLI::App& root) {
+    auto o = std::make_shared<VisibilityOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "visibility",
+        "Horizons per texel and azimuth, sky view factor, visible sky and (log-)SH visibility "
+        "(docs/visibility.md). Void (nodata) texels neither block nor receive: their outputs are NaN.");
+    add_dem_input_options(*cmd, o->dem, false);
+    cmd->add_option("--directions", o->horizon.directions, "Azimuths D (the first toward east, then counter-clockwise)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4096));
+    cmd->add_option("--method", o->method,
+                    "exact: convex-hull sweep (fast, exact up to sweep-line interpolation); pyramid: the slides' "
+                    "multi-resolution marching (approximate); raymarch: brute force reference (slow)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"exact", "pyramid", "raymarch"}));
+    cmd->add_option("--pyramid-schedule", o->horizon.pyramid_schedule,
+                    "pyramid: samples per octave of distance, fast=2, balanced=4, fine=8, finest=16")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"fast", "balanced", "fine", "finest"}));
+    cmd->add_option("--exact-lines-per-texel", o->horizon.exact_lines_per_texel,
+                    "exact: sweep lines per texel across each azimuth (2 halves the interpolation distance, 2x time)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 4));
+    cmd->add_option("--exact-near-field", o->horizon.exact_near_field_texels,
+                    "exact: march each receiver's first N texels from the texel centre itself (0 = pure sweep)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 64.0));
+    cmd->add_flag("--no-curvature", o->no_curvature,
+                  "Ignore Earth curvature (default: drop d^2/(2 R_eff), R_eff = R/(1-0.13) with refraction)");
+    cmd->add_option("--wedges", o->wedges,
+                    "svf/sky-visible integration across azimuth: linear (horizon interpolated between azimuths) "
+                    "or constant (each horizon holds over its sector, as GIS tools do)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"linear", "constant"}));
+    cmd->add_option("--svf", o->svf, "Write the sky view factor (1/pi) int V cos(theta) dw, float32 GeoTIFF");
+    cmd->add_option("--sky-visible", o->sky_visible,
+                    "Write the visible sky fraction (1/2pi) int V dw, float32 GeoTIFF");
+    cmd->add_option("--horizons", o->horizons, "Write the horizon elevation angles, D bands in degrees");
+    cmd->add_option("--sh", o->sh, "Write the visibility SH (16 bands), exp of the log-SH with --exp-method");
+    cmd->add_option("--log-sh", o->log_sh, "Write the log-SH visibility (16 bands)");
+    cmd->add_option("--exp-method", o->exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")
+        ->capture_default_str();
+    cmd->add_option("--log-eps", o->log_eps, "log of the visibility floor below the horizon")
+        ->capture_default_str()
+        ->check(CLI::Range(-50.0, -1e-3));
+    cmd->add_option("--threads", o->horizon.threads, "Worker threads (0 = one per core)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 256));
+    cmd->callback([o] { run_visibility(*o); });
+}
+
+}  // namespace ts::app

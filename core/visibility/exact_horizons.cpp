@@ -1,0 +1,311 @@
+// Exact horizons by sweeping lines of constant azimuth (after Timonen and Westerholm 2010),
+// with the receiver's own near field marched exactly.
+//
+// For azimuth phi the grid is covered by parallel lines in (col, G) space (row_metrics.hpp),
+// spaced 1/lines_per_texel texel apart across the sweep. Each line is sampled at every integer
+// column (mostly east-west lines) or row (mostly north-south lines), the height interpolated
+// linearly between the two texels the line passes between, plus blocker-only samples where the
+// line crosses the other family of texel lines and midway between those points: the bilinear
+// surface as a 1/4-texel raymarch sees it (a diagonal line would otherwise miss the saddle
+// between a cell's other two corners). The line is walked from the far end (where the blockers
+// are) towards phi's opposite, keeping the upper convex hull of the profile behind.
+//
+// Far field: a line sample's horizon is the tangent from it to the hull of the points at least
+// near_field_texels behind it (DelayedHull: amortised O(1) insertion, O(log h) query), and each
+// texel takes the tent-weighted mean of the far horizons of the line samples within one line
+// spacing of it (tangents are averaged: exact on a plane; second order in the lateral offset
+// elsewhere).
+// Near field: a texel centre is a crease of the bilinear surface, so the slope of the first
+// texel or two changes abruptly with a lateral offset of a fraction of a texel; interpolating
+// it from lines beside the texel erred by degrees on real DEMs. So the first near_field_texels
+// are marched from the texel centre itself, exactly like the reference, and the horizon is the
+// larger of the two. Measured in docs/visibility.md.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/util/progress_bar.hpp"
+#include "core/visibility/bilinear_march.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/fast_atan.hpp"
+#include "core/visibility/parallel_for.hpp"
+#include "core/visibility/profile_hull.hpp"
+#include "core/visibility/row_metrics.hpp"
+#include "core/visibility/surface_sampling.hpp"
+
+namespace ts::visibility {
+namespace {
+
+// Per-worker scratch: weighted sums of far-field horizons for one azimuth over the window.
+struct Accumulator {
+    std::vector<float> sum, weight;
+    DelayedHull hull;
+};
+
+// One near-field step from a texel centre: offset, bilinear weights, 1/distance, curvature drop.
+struct NearStep {
+    double dcol, drow;
+    int col0, row0;
+    float w00, w10, w01, w11;
+    double inv_s, drop;
+};
+
+struct SweepContext {
+    const terrain::HeightGrid& grid;
+    const RowMetrics& metrics;
+    ReceiverWindow win;
+    double curvature;  // 1 / (2 R_eff) or 0
+    int lines_per_texel;
+};
+
+// Far-field horizon (its tangent) of a line sample at distance s with height z, then queue the
+// sample itself as a blocker; NaN if nothing lies far enough behind it (not splatted: the near
+// field or the texel's other line decides).
+inline float far_horizon_at(DelayedHull& hull, double s, float z, double curvature) {
+    const double u = double(z) - curvature * s * s;
+    const double slope = hull.query(s, u);
+    hull.add(s, u);
+    if (slope == ProfileHull::kNone) return std::numeric_limits<float>::quiet_NaN();
+    // tan(elevation): texels average tangents (equal to averaging angles to second order, and
+    // exact on a plane), so the one atan per texel comes at the end.
+    return float(slope - 2.0 * curvature * s);
+}
+
+// Lines through texel centres on the grid's edge must not be lost to rounding (in texels).
+constexpr double kEdgeSlack = 1e-7;
+
+// A crossing this close to a line sample is that sample (up to rounding); adding it would put
+// two points a hair apart whose rounding noise reads as a near-vertical blocker.
+constexpr double kMinCrossing = 1e-3;
+
+// Blocker-only points of the bilinear surface between two consecutive line samples a = (col,
+// row) and b, at distances s and s + ds: where the segment crosses a texel row or column the
+// surface has a height of its own, and inside a cell the surface along the segment is a
+// quadratic (a diagonal line passes the saddle between the cell's other two corners), so the
+// midpoint of each piece is added too. This is what a 1/4-texel raymarch sees.
+void add_segment_blockers(DelayedHull& hull, const terrain::HeightGrid& g, double curvature, double s, double ds,
+                          double col_a, double row_a, double col_b, double row_b) {
+    double cuts[4];
+    int n = 0;
+    cuts[n++] = 0.0;
+    auto crossing = [&](double a, double b) {
+        const double lo = std::min(a, b), hi = std::max(a, b), k = std::ceil(lo);
+        if (k > lo && k < hi) {
+            const double f = (k - a) / (b - a);
+            if (f > kMinCrossing && f < 1 - kMinCrossing) cuts[n++] = f;
+        }
+    };
+    crossing(col_a, col_b);
+    crossing(row_a, row_b);
+    if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);
+    cuts[n++] = 1.0;
+    for (int i = 0; i + 1 < n; ++i) {
+        const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
+        for (double f : {mid, cuts[i + 1]}) {
+            if (f >= 1.0) break;  // the end point is the next line sample itself
+            const float z =
+                bilinear_valid(g.z.data(), g.width, g.height, col_a + f * (col_b - col_a), row_a + f * (row_b - row_a));
+            if (!std::isnan(z)) hull.add(s + f * ds, double(z) - curvature * (s + f * ds) * (s + f * ds));
+        }
+    }
+}
+
+// Adds a line sample's horizon to the texels it lies between. `across` is the fractional
+// texel coordinate across the sweep (row for column sweeps, col for row sweeps).
+inline void splat(Accumulator& acc, const SweepContext& cx, bool across_is_row, int along, double across, float slope,
+                  double spacing) {
+    if (std::isnan(slope)) return;
+    const int t0 = int(std::floor(across));
+    for (int t = t0; t <= t0 + 1; ++t) {
+        const double w = 1.0 - std::abs(across - t) / spacing;  // tent over the local line spacing
+        if (w <= 0) continue;
+        const int col = across_is_row ? along : t;
+        const int row = across_is_row ? t : along;
+        const int lc = col - cx.win.col0, lr = row - cx.win.row0;
+        if (lc < 0 || lr < 0 || lc >= cx.win.width || lr >= cx.win.height) continue;
+        const std::size_t i = std::size_t(lr) * cx.win.width + lc;
+        acc.sum[i] += float(w) * slope;
+        acc.weight[i] += float(w);
+    }
+}
+
+// Lines sampled at every integer column (|d col| >= |d row| along the line).
+void sweep_columns(const SweepContext& cx, double phi, Accumulator& acc) {
+    const auto& g = cx.grid;
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    // Line n: col*sn + G(row)*cs = n*h, h chosen so lines are at most 1/lpt rows apart at fixed
+    // col (closer where rho is larger: rows near a pole on a global grid).
+    const double h = cx.metrics.min_rho() * std::abs(cs) / cx.lines_per_texel;
+    auto invariant = [&](double col, int row) { return col * sn + cx.metrics.g(row) * cs; };
+    const int c_lo = cx.win.col0, c_hi = cx.win.col0 + cx.win.width - 1;
+    const int r_lo = cx.win.row0, r_hi = cx.win.row0 + cx.win.height - 1;
+    double i_min = invariant(c_lo, r_lo), i_max = i_min;
+    for (double v : {invariant(c_hi, r_lo), invariant(c_lo, r_hi), invariant(c_hi, r_hi)})
+        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
+    const long n_min = long(std::floor(i_min / h)) - 1, n_max = long(std::ceil(i_max / h)) + 1;
+    // Blockers lie towards +phi; walk from there so they are behind.
+    const int step = cs > 0 ? -1 : 1;
+    const int c_start = cs > 0 ? g.width - 1 : 0;
+    const int c_stop = cs > 0 ? c_lo - 1 : c_hi + 1;  // past the window: nothing left to receive
+    const double gmax = cx.metrics.g_max();
+    for (long n = n_min; n <= n_max; ++n) {
+        acc.hull.clear();
+        double s = 0, prev_row = -1;
+        bool started = false;
+        for (int c = c_start; c != c_stop; c += step) {
+            double gv = (double(n) * h - c * sn) / cs;
+            if (gv < -kEdgeSlack || gv > gmax + kEdgeSlack) {
+                if (started) break;  // the line has left the grid
+                continue;
+            }
+            gv = std::clamp(gv, 0.0, gmax);  // a line on the grid's edge, up to rounding
+            const double row = cx.metrics.row_of_g(gv);
+            if (started) {
+                const double ds = cx.metrics.dx_at(0.5 * (row + prev_row)) / std::abs(cs);
+                add_segment_blockers(acc.hull, g, cx.curvature, s, ds, c - step, prev_row, c, row);
+                s += ds;
+            }
+            started = true;
+            prev_row = row;
+            const int r0 = std::min(int(row), g.height - 1);
+            const float fr = float(row - r0);
+            const float z = r0 + 1 < g.height ? lerp_valid(g.at(c, r0), g.at(c, r0 + 1), fr) : g.at(c, r0);
+            if (std::isnan(z)) continue;  // inside a void: neither blocks nor receives
+            const float slope = far_horizon_at(acc.hull, s, z, cx.curvature);
+            splat(acc, cx, true, c, row, slope, h / std::abs(cs) / cx.metrics.rho(row));
+        }
+    }
+}
+
+// Lines sampled at every integer row.
+void sweep_rows(const SweepContext& cx, double phi, Accumulator& acc) {
+    const auto& g = cx.grid;
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    const double h = std::abs(sn) / cx.lines_per_texel;  // lines 1/lpt columns apart
+    auto invariant = [&](double col, int row) { return col * sn + cx.metrics.g(row) * cs; };
+    const int c_lo = cx.win.col0, c_hi = cx.win.col0 + cx.win.width - 1;
+    const int r_lo = cx.win.row0, r_hi = cx.win.row0 + cx.win.height - 1;
+    double i_min = invariant(c_lo, r_lo), i_max = i_min;
+    for (double v : {invariant(c_hi, r_lo), invariant(c_lo, r_hi), invariant(c_hi, r_hi)})
+        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
+    const long n_min = long(std::floor(i_min / h)) - 1, n_max = long(std::ceil(i_max / h)) + 1;
+    // North (sn > 0) is towards row 0: blockers at smaller rows, so walk rows upwards.
+    const int step = sn > 0 ? 1 : -1;
+    const int r_start = sn > 0 ? 0 : g.height - 1;
+    const int r_stop = sn > 0 ? r_hi + 1 : r_lo - 1;
+    for (long n = n_min; n <= n_max; ++n) {
+        acc.hull.clear();
+        double s = 0, prev_col = -1;
+        bool started = false;
+        for (int r = r_start; r != r_stop; r += step) {
+            double col = (double(n) * h - cx.metrics.g(r) * cs) / sn;
+            if (col < -kEdgeSlack || col > g.width - 1 + kEdgeSlack) {
+                if (started) break;
+                continue;
+            }
+            col = std::clamp(col, 0.0, double(g.width - 1));
+            if (started) {
+                const double ds = 0.5 * (cx.metrics.dy(r) + cx.metrics.dy(r - step)) / std::abs(sn);
+                add_segment_blockers(acc.hull, g, cx.curvature, s, ds, prev_col, r - step, col, r);
+                s += ds;
+            }
+            started = true;
+            prev_col = col;
+            const int c0 = std::min(int(col), g.width - 1);
+            const float fc = float(col - c0);
+            const float z = c0 + 1 < g.width ? lerp_valid(g.at(c0, r), g.at(c0 + 1, r), fc) : g.at(c0, r);
+            if (std::isnan(z)) continue;
+            const float slope = far_horizon_at(acc.hull, s, z, cx.curvature);
+            splat(acc, cx, false, r, col, slope, 1.0 / cx.lines_per_texel);
+        }
+    }
+}
+
+}  // namespace
+
+HorizonSet exact_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
+    const RowMetrics metrics(grid);
+    const ReceiverWindow win = resolve_window(grid, options.window);
+    HorizonSet out;
+    out.width = win.width;
+    out.height = win.height;
+    out.directions = options.directions;
+    out.angle.assign(out.texels() * std::size_t(options.directions), 0.0f);
+    const SweepContext cx{grid, metrics, win, curvature_factor(options.curvature),
+                          std::max(1, options.exact_lines_per_texel)};
+    // The near field in metres: near_field_texels of the grid's smallest spacing.
+    double unit = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics.dx(r), metrics.dy(r)});
+    const double near_m = std::max(0.0, options.exact_near_field_texels) * unit;
+    const float z_top = highest_height(grid);
+    const int workers = std::min(thread_count(options.threads), options.directions);
+    std::vector<Accumulator> scratch;
+    for (int w = 0; w < workers; ++w) scratch.push_back({{}, {}, DelayedHull(near_m)});
+    parallel_for(options.directions, workers, [&](int d, int worker) {
+        Accumulator& acc = scratch[std::size_t(worker)];
+        acc.sum.assign(out.texels(), 0.0f);
+        acc.weight.assign(out.texels(), 0.0f);
+        const double phi = azimuth_rad(d, options.directions);
+        const double cs = std::cos(phi), sn = std::sin(phi);
+        // Sample along the axis the line crosses fastest, so samples are <= 1 texel apart.
+        if (std::abs(cs) >= std::abs(sn) / metrics.mean_rho())
+            sweep_columns(cx, phi, acc);
+        else
+            sweep_rows(cx, phi, acc);
+        float* plane = out.plane(d);
+        std::vector<NearStep> near_steps;
+        const double wmax = grid.width - 1, hmax = grid.height - 1;
+        for (int lr = 0; lr < win.height; ++lr) {
+            const int row = win.row0 + lr;
+            // Near-field steps as the reference takes them (1/4 texel); over a few texels the
+            // row's spacing is constant to 1e-5, so the steps are set up once per row. Since the
+            // receivers are texel centres, every texel of the row shares each step's integer
+            // offset and bilinear weights.
+            const double dx = metrics.dx(row), dy = metrics.dy(row), ds = kMarchStepTexels * std::min(dx, dy);
+            const double dc = cs * ds / dx, dr = -sn * ds / dy;
+            const int steps = near_m > 0 ? int(near_m / ds + 1e-9) : 0;
+            near_steps.resize(std::size_t(steps));
+            for (int k = 1; k <= steps; ++k) {
+                NearStep& st = near_steps[std::size_t(k - 1)];
+                st.dcol = k * dc;
+                st.drow = k * dr;
+                st.col0 = int(std::floor(st.dcol));
+                st.row0 = int(std::floor(st.drow));
+                const float fc = float(st.dcol - st.col0), fr = float(st.drow - st.row0);
+                st.w00 = (1 - fc) * (1 - fr), st.w10 = fc * (1 - fr), st.w01 = (1 - fc) * fr, st.w11 = fc * fr;
+                st.inv_s = 1.0 / (k * ds);
+                st.drop = cx.curvature * k * ds;
+            }
+            const float* z = grid.z.data();
+            const int w = grid.width;
+            for (int lc = 0; lc < win.width; ++lc) {
+                const std::size_t i = std::size_t(lr) * win.width + lc;
+                const int col = win.col0 + lc;
+                const float z0 = grid.at(col, row);
+                if (std::isnan(z0)) continue;  // void receiver: NaN from the dispatcher
+                double best = acc.weight[i] > 0 ? double(acc.sum[i] / acc.weight[i]) : ProfileHull::kNone;
+                for (const NearStep& st : near_steps) {
+                    const double c = col + st.dcol, r = row + st.drow;
+                    if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
+                    if ((double(z_top) - z0) * st.inv_s - st.drop <= best) break;  // exact early exit
+                    const int c0 = col + st.col0, r0 = row + st.row0;
+                    float zs = kNoHeight;
+                    if (c0 >= 0 && r0 >= 0 && c0 + 1 < w && r0 + 1 < grid.height) {
+                        const float* p = z + std::size_t(r0) * w + c0;
+                        zs = st.w00 * p[0] + st.w10 * p[1] + st.w01 * p[w] + st.w11 * p[w + 1];
+                    }
+                    if (std::isnan(zs))  // a void corner or the grid's last row/column
+                        zs = bilinear_valid(z, w, grid.height, std::clamp(c, 0.0, wmax), std::clamp(r, 0.0, hmax));
+                    if (!std::isnan(zs)) best = std::max(best, (double(zs) - z0) * st.inv_s - st.drop);
+                }
+                plane[i] = best == ProfileHull::kNone ? 0.0f : float(fast_atan(best));
+            }
+        }
+        if (options.progress) options.progress->advance(out.texels());
+    });
+    return out;
+}
+
+}  // namespace ts::visibility

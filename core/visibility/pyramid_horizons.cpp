@@ -1,0 +1,92 @@
+// The slides' multi-resolution marching (Snyder and Nowrouzezahrai 2008): from each receiver,
+// sample k lies tau_k = 2^(k / N) texels away (N = the schedule's samples per octave) and
+// reads the mean pyramid level whose texel size matches the gap to the next sample, so far
+// samples see prefiltered (averaged) terrain instead of aliasing single texels. It walks a
+// straight grid line with the receiver row's spacing (on a geographic grid the drift from a
+// true constant-azimuth line over the walk is far below this method's own error).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/util/error.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/mean_pyramid.hpp"
+#include "core/visibility/parallel_for.hpp"
+#include "core/visibility/row_metrics.hpp"
+
+namespace ts::visibility {
+
+namespace {
+
+struct Sample {
+    double tau;  // distance in texels
+    int level;
+};
+
+std::vector<Sample> schedule_samples(int samples_per_octave, int levels, double max_tau) {
+    std::vector<Sample> out;
+    const double ratio = std::exp2(1.0 / samples_per_octave);
+    for (int k = 0;; ++k) {
+        const double tau = std::exp2(double(k) / samples_per_octave);
+        if (tau > max_tau) break;
+        const double gap = tau * (ratio - 1.0);
+        const int level = std::clamp(int(std::floor(std::log2(std::max(gap, 1.0)))), 0, levels - 1);
+        out.push_back({tau, level});
+    }
+    return out;
+}
+
+}  // namespace
+
+HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
+    const PyramidSchedule* schedule = find_pyramid_schedule(options.pyramid_schedule);
+    if (!schedule) throw InputError("--pyramid-schedule: unknown schedule '" + options.pyramid_schedule + "'");
+    const RowMetrics metrics(grid);
+    const MeanPyramid pyramid(grid);
+    const ReceiverWindow win = resolve_window(grid, options.window);
+    HorizonSet out;
+    out.width = win.width;
+    out.height = win.height;
+    out.directions = options.directions;
+    out.angle.assign(out.texels() * std::size_t(options.directions), 0.0f);
+    const double curvature = curvature_factor(options.curvature);
+    float z_top = -std::numeric_limits<float>::infinity();
+    for (float v : grid.z)
+        if (!std::isnan(v)) z_top = std::max(z_top, v);
+    const double max_tau = 2.0 * std::hypot(double(grid.width), double(grid.height));
+    const std::vector<Sample> samples = schedule_samples(schedule->samples_per_octave, pyramid.levels(), max_tau);
+    const double wmax = grid.width - 1, hmax = grid.height - 1;
+
+    parallel_for(win.height, thread_count(options.threads), [&](int lr, int) {
+        const int row = win.row0 + lr;
+        const double dx = metrics.dx(row), dy = metrics.dy(row), unit = std::min(dx, dy);
+        for (int lc = 0; lc < win.width; ++lc) {
+            const int col = win.col0 + lc;
+            const float z0 = grid.at(col, row);
+            if (std::isnan(z0)) continue;
+            for (int d = 0; d < options.directions; ++d) {
+                const double phi = azimuth_rad(d, options.directions);
+                const double step_c = std::cos(phi) * unit / dx, step_r = -std::sin(phi) * unit / dy;
+                double best = -std::numeric_limits<double>::infinity();
+                for (const Sample& smp : samples) {
+                    const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
+                    if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7)
+                        break;  // edge rows survive rounding
+                    const double s = smp.tau * unit;
+                    if ((double(z_top) - z0) / s - curvature * s <= best) break;
+                    const float z = pyramid.sample(smp.level, c, r);
+                    if (std::isnan(z)) continue;
+                    best = std::max(best, (double(z) - z0) / s - curvature * s);
+                }
+                out.plane(d)[std::size_t(lr) * win.width + lc] =
+                    best == -std::numeric_limits<double>::infinity() ? 0.0f : float(std::atan(best));
+            }
+        }
+        if (options.progress) options.progress->advance(std::uint64_t(win.width) * options.directions);
+    });
+    return out;
+}
+
+}  // namespace ts::visibility

@@ -1,0 +1,42 @@
+#pragma once
+// Per-row ground spacing of a height grid, with what the horizon searches need to follow a
+// line of constant azimuth (a rhumb line) on a grid whose east-west spacing varies by row.
+//
+// With rho(r) = dy(r) / dx(r) and G(r) = integral_0^r rho, a constant-azimuth line satisfies
+// col * sin(phi) + G(row) * cos(phi) = const: in (col, G) coordinates it is straight. On a
+// projected grid G is linear and the lines are the usual straight grid lines.
+#include <vector>
+
+#include "core/terrain/height_grid.hpp"
+
+namespace ts::visibility {
+
+class RowMetrics {
+public:
+    explicit RowMetrics(const terrain::HeightGrid& grid);
+
+    int rows() const { return int(dx_.size()); }
+    // Spacing in metres at a fractional row (linear between rows, clamped at the ends).
+    double dx_at(double row) const { return lerp_rows(dx_, row); }
+    double dy_at(double row) const { return lerp_rows(dy_, row); }
+    double dx(int row) const { return dx_[std::size_t(row)]; }
+    double dy(int row) const { return dy_[std::size_t(row)]; }
+
+    // G at integer rows (trapezoid rule on rho) and its piecewise-linear inverse.
+    double g(int row) const { return g_[std::size_t(row)]; }
+    double g_max() const { return g_.back(); }
+    double mean_rho() const { return mean_rho_; }
+    double min_rho() const { return min_rho_; }
+    double rho(double row) const { return dy_at(row) / dx_at(row); }
+    // East-west spacing is floored at this fraction of the north-south one (pole rows).
+    static constexpr double kMinAspect = 0.01;
+    // Fractional row with G(row) = value; value must lie in [0, g_max()].
+    double row_of_g(double value) const;
+
+private:
+    static double lerp_rows(const std::vector<double>& v, double row);
+    std::vector<double> dx_, dy_, g_;
+    double mean_rho_ = 1.0, min_rho_ = 1.0;
+};
+
+}  // namespace ts::visibility

@@ -1,7 +1,9 @@
 // `terrashade visibility`: horizons per texel and azimuth on a real DEM, and what follows
 // from them (sky view factor, visible sky, log-SH and SH visibility), as float32 GeoTIFFs
 // georeferenced like the input.
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -39,9 +41,31 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+bool is_png(const std::string& path) {
+    return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
+}
+
+// A fraction in [0, 1] (svf, sky_visible) as an 8-bit grey quick-look: 0 -> 1, 1 -> 255,
+// void (NaN) -> 0, so a picture can be looked at without a GIS.
+void write_fraction_png(const std::string& path, const dem::Dem& dem, const float* data) {
+    std::vector<std::uint8_t> grey(std::size_t(dem.width) * dem.height);
+    for (std::size_t i = 0; i < grey.size(); ++i) {
+        const float v = data[i];
+        grey[i] = std::isnan(v) ? 0 : std::uint8_t(1.5f + 254.0f * std::clamp(v, 0.0f, 1.0f));
+    }
+    raster::write_u8_image(path, dem.width, dem.height, 1, grey.data(), nullptr);
+}
+
 void write_raster(const std::string& path, const dem::Dem& dem, int bands, const float* data,
                   const std::vector<std::string>& names) {
-    raster::write_float_raster(path, dem.width, dem.height, bands, data, dem.georef, names);
+    if (is_png(path)) {
+        if (bands != 1)
+            throw InputError(path + ": PNG holds only --svf or --sky-visible; use .tif for " + std::to_string(bands) +
+                             " bands");
+        write_fraction_png(path, dem, data);
+    } else {
+        raster::write_float_raster(path, dem.width, dem.height, bands, data, dem.georef, names);
+    }
     std::printf("wrote %s (%d band%s)\n", path.c_str(), bands, bands == 1 ? "" : "s");
 }
 
@@ -144,9 +168,9 @@ void add_visibility_command(CLI::App& root) {
                     "or constant (each horizon holds over its sector, as GIS tools do)")
         ->capture_default_str()
         ->check(CLI::IsMember({"linear", "constant"}));
-    cmd->add_option("--svf", o->svf, "Write the sky view factor (1/pi) int V cos(theta) dw, float32 GeoTIFF");
+    cmd->add_option("--svf", o->svf, "Write the sky view factor (1/pi) int V cos(theta) dw: float32 GeoTIFF (.tif) or 8-bit grey quick-look (.png)");
     cmd->add_option("--sky-visible", o->sky_visible,
-                    "Write the visible sky fraction (1/2pi) int V dw, float32 GeoTIFF");
+                    "Write the visible sky fraction (1/2pi) int V dw: float32 GeoTIFF (.tif) or 8-bit grey quick-look (.png)");
     cmd->add_option("--horizons", o->horizons, "Write the horizon elevation angles, D bands in degrees");
     cmd->add_option("--sh", o->sh, "Write the visibility SH (16 bands), exp of the log-SH with --exp-method");
     cmd->add_option("--log-sh", o->log_sh, "Write the log-SH visibility (16 bands)");

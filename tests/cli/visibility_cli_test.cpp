@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include <OpenImageIO/imageio.h>
+
 #include "core/dem/read_dem.hpp"
 
 namespace fs = std::filesystem;
@@ -95,6 +97,30 @@ TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
     // Same azimuths, so only the horizon error counts: docs/visibility.md measures ~1e-3 rms
     // on such windows; 3e-3 leaves room, a broken method is off by 1e-2 or more.
     EXPECT_LT(std::sqrt(se / n), 3e-3);
+}
+
+TEST_F(VisibilityCli, PngQuickLookMatchesTheFloatRaster) {
+    const fs::path tif = dir_ / "svf.tif", png = dir_ / "svf.png";
+    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + tif.string(), dir_).code, 0);
+    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + png.string(), dir_).code, 0);
+    const auto ref = ts::dem::read_dem(tif);
+    auto in = OIIO::ImageInput::open(png.string());
+    ASSERT_TRUE(in);
+    ASSERT_EQ(in->spec().width, ref.width);
+    ASSERT_EQ(in->spec().nchannels, 1);
+    std::vector<unsigned char> grey(std::size_t(ref.width) * ref.height);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data()));
+    // Grey level g encodes svf as (g - 1) / 254: within half a level of the float value.
+    for (int r = 0; r < ref.height; ++r)
+        for (int c = 0; c < ref.width; ++c) {
+            const int g = grey[std::size_t(r) * ref.width + c];
+            if (std::isnan(ref.at(c, r))) ASSERT_EQ(g, 0);  // void
+            else ASSERT_NEAR((g - 1) / 254.0, ref.at(c, r), 0.5 / 254 + 1e-6);
+        }
+    // Multi-band outputs have no PNG form: a clear error, not a silent first band.
+    const CommandResult bad = run(kWindow + " --directions 8 --sh " + (dir_ / "sh.png").string(), dir_);
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.err.find("PNG holds only"), std::string::npos) << bad.err;
 }
 
 TEST_F(VisibilityCli, VoidReceiverIsNaN) {

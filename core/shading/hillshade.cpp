@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/geo/azimuth.hpp"
-#include "core/terrain/parallel_rows.hpp"
+#include "core/util/parallel_for.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::shading {
@@ -47,7 +47,7 @@ std::vector<std::uint8_t> hillshade(const terrain::HeightGrid& grid, const Hills
     const glm::dvec3 light =
         enu_direction(azimuth_cw_from_north_to_phi(options.azimuth_deg), options.altitude_deg * std::numbers::pi / 180.0);
     const double zf = options.z_factor;
-    terrain::parallel_rows(h - 2, options.threads, w, [&](int begin, int end) {
+    ts::parallel_rows(h - 2, options.threads, w, [&](int begin, int end) {
         for (int r = begin + 1; r < end + 1; ++r) {
             const double dx = grid.dx_m[std::size_t(r)], dy = grid.dy_m[std::size_t(r)];
             if (!(dx > 0.0) || !(dy > 0.0)) continue;  // a pole row: no east-west extent

@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/terrain/parallel_rows.hpp"
+#include "core/util/parallel_for.hpp"
 
 namespace ts::terrain {
 

@@ -49,6 +49,12 @@ struct PyramidLevel {
     float sample(float x, float y) const { return mean.bilinear(x, y); }
     // The same at level-0 texel-centre coordinates.
     float sample_level0(float x0, float y0) const { return mean.bilinear(to_level(x0), to_level(y0)); }
+    // Void-skipping bilinear height (valid_bilinear.hpp) at level-0 texel-centre coordinates,
+    // in double precision, clamped to this level's edges: what a marcher reading coarse levels
+    // at positions along a level-0 ray needs. Mapping by a power of two is exact in double.
+    float sample_level0_valid(double x0, double y0) const {
+        return mean.bilinear_valid((x0 + 0.5) / scale - 0.5, (y0 + 0.5) / scale - 0.5);
+    }
     float to_level(float level0_coord) const { return (level0_coord + 0.5f) / float(scale) - 0.5f; }
 };
 

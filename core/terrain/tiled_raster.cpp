@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/terrain/parallel_rows.hpp"
+#include "core/util/parallel_for.hpp"
 
 namespace ts::terrain {
 

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/terrain/valid_bilinear.hpp"
+
 namespace ts::terrain {
 
 class TiledRaster {
@@ -55,6 +57,17 @@ public:
         const float top = p[0] + (p[1] - p[0]) * fx;
         const float bottom = p[stride_] + (p[stride_ + 1] - p[stride_]) * fx;
         return top + (bottom - top) * fy;
+    }
+    // Bilinear interpolation that skips voids (blend_valid_corners), in double-precision
+    // texel-centre coordinates clamped to the raster: NaN only where every weighted corner is a
+    // void. The same surface, texel for texel, as a flat grid sampled the same way.
+    float bilinear_valid(double x, double y) const {
+        float fx, fy;
+        const int c = valid_bilinear_corner(std::clamp(x, 0.0, double(width_ - 1)), width_, fx);
+        const int r = valid_bilinear_corner(std::clamp(y, 0.0, double(height_ - 1)), height_, fy);
+        // p[1] / p[stride_] exist even on a 1-texel axis: the halo repeats the edge texel.
+        const float* p = address(c, r);
+        return blend_valid_corners(p[0], p[1], p[stride_], p[stride_ + 1], fx, fy);
     }
     // A stored texel by tile and tile-local position, local_col/local_row in [-halo, tile_size + halo).
     float tile_texel(int tx, int ty, int local_col, int local_row) const {

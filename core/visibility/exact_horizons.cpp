@@ -23,15 +23,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/fast_atan.hpp"
-#include "core/visibility/parallel_for.hpp"
 #include "core/visibility/profile_hull.hpp"
+#include "core/visibility/receiver_setup.hpp"
 #include "core/visibility/row_metrics.hpp"
 #include "core/visibility/surface_sampling.hpp"
 
@@ -59,6 +61,24 @@ struct SweepContext {
     double curvature;  // 1 / (2 R_eff) or 0
     int lines_per_texel;
 };
+
+// Receiver window bounds, inclusive.
+int first_col(const SweepContext& cx) { return cx.win.col0; }
+int last_col(const SweepContext& cx) { return cx.win.col0 + cx.win.width - 1; }
+int first_row(const SweepContext& cx) { return cx.win.row0; }
+int last_row(const SweepContext& cx) { return cx.win.row0 + cx.win.height - 1; }
+
+// The numbers n of the sweep lines col*sn + G(row)*cs = n*h that can pass through the
+// receiver window (the invariant is linear in col and G, so its extremes are at the window's
+// corners), with one line of margin on each side.
+std::pair<long, long> line_numbers(const SweepContext& cx, double cs, double sn, double h) {
+    auto invariant = [&](int col, int row) { return col * sn + cx.metrics.g(row) * cs; };
+    double i_min = invariant(first_col(cx), first_row(cx)), i_max = i_min;
+    for (double v : {invariant(last_col(cx), first_row(cx)), invariant(first_col(cx), last_row(cx)),
+                     invariant(last_col(cx), last_row(cx))})
+        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
+    return {long(std::floor(i_min / h)) - 1, long(std::ceil(i_max / h)) + 1};
+}
 
 // Far-field horizon (its tangent) of a line sample at distance s with height z, then queue the
 // sample itself as a blocker; NaN if nothing lies far enough behind it (not splatted: the near
@@ -138,17 +158,12 @@ void sweep_columns(const SweepContext& cx, double phi, Accumulator& acc) {
     // Line n: col*sn + G(row)*cs = n*h, h chosen so lines are at most 1/lpt rows apart at fixed
     // col (closer where rho is larger: rows near a pole on a global grid).
     const double h = cx.metrics.min_rho() * std::abs(cs) / cx.lines_per_texel;
-    auto invariant = [&](double col, int row) { return col * sn + cx.metrics.g(row) * cs; };
-    const int c_lo = cx.win.col0, c_hi = cx.win.col0 + cx.win.width - 1;
-    const int r_lo = cx.win.row0, r_hi = cx.win.row0 + cx.win.height - 1;
-    double i_min = invariant(c_lo, r_lo), i_max = i_min;
-    for (double v : {invariant(c_hi, r_lo), invariant(c_lo, r_hi), invariant(c_hi, r_hi)})
-        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
-    const long n_min = long(std::floor(i_min / h)) - 1, n_max = long(std::ceil(i_max / h)) + 1;
+    const auto [n_min, n_max] = line_numbers(cx, cs, sn, h);
     // Blockers lie towards +phi; walk from there so they are behind.
     const int step = cs > 0 ? -1 : 1;
     const int c_start = cs > 0 ? g.width - 1 : 0;
-    const int c_stop = cs > 0 ? c_lo - 1 : c_hi + 1;  // past the window: nothing left to receive
+    // Stop past the window: nothing left to receive.
+    const int c_stop = cs > 0 ? first_col(cx) - 1 : last_col(cx) + 1;
     const double gmax = cx.metrics.g_max();
     for (long n = n_min; n <= n_max; ++n) {
         acc.hull.clear();
@@ -184,17 +199,11 @@ void sweep_rows(const SweepContext& cx, double phi, Accumulator& acc) {
     const auto& g = cx.grid;
     const double cs = std::cos(phi), sn = std::sin(phi);
     const double h = std::abs(sn) / cx.lines_per_texel;  // lines 1/lpt columns apart
-    auto invariant = [&](double col, int row) { return col * sn + cx.metrics.g(row) * cs; };
-    const int c_lo = cx.win.col0, c_hi = cx.win.col0 + cx.win.width - 1;
-    const int r_lo = cx.win.row0, r_hi = cx.win.row0 + cx.win.height - 1;
-    double i_min = invariant(c_lo, r_lo), i_max = i_min;
-    for (double v : {invariant(c_hi, r_lo), invariant(c_lo, r_hi), invariant(c_hi, r_hi)})
-        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
-    const long n_min = long(std::floor(i_min / h)) - 1, n_max = long(std::ceil(i_max / h)) + 1;
+    const auto [n_min, n_max] = line_numbers(cx, cs, sn, h);
     // North (sn > 0) is towards row 0: blockers at smaller rows, so walk rows upwards.
     const int step = sn > 0 ? 1 : -1;
     const int r_start = sn > 0 ? 0 : g.height - 1;
-    const int r_stop = sn > 0 ? r_hi + 1 : r_lo - 1;
+    const int r_stop = sn > 0 ? last_row(cx) + 1 : first_row(cx) - 1;
     for (long n = n_min; n <= n_max; ++n) {
         acc.hull.clear();
         double s = 0, prev_col = -1;
@@ -228,11 +237,7 @@ void sweep_rows(const SweepContext& cx, double phi, Accumulator& acc) {
 HorizonSet exact_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
     const RowMetrics metrics(grid);
     const ReceiverWindow win = resolve_window(grid, options.window);
-    HorizonSet out;
-    out.width = win.width;
-    out.height = win.height;
-    out.directions = options.directions;
-    out.angle.assign(out.texels() * std::size_t(options.directions), 0.0f);
+    HorizonSet out = zero_horizons(win, options.directions);
     const SweepContext cx{grid, metrics, win, curvature_factor(options.curvature),
                           std::max(1, options.exact_lines_per_texel)};
     // The near field in metres: near_field_texels of the grid's smallest spacing.

@@ -7,7 +7,7 @@
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/slice_projector.hpp"
 #include "core/util/error.hpp"
-#include "core/visibility/parallel_for.hpp"
+#include "core/util/parallel_for.hpp"
 
 namespace ts::visibility {
 

@@ -4,16 +4,20 @@
 // samples see prefiltered (averaged) terrain instead of aliasing single texels. It walks a
 // straight grid line with the receiver row's spacing (on a geographic grid the drift from a
 // true constant-azimuth line over the walk is far below this method's own error).
+// The levels are core/terrain's HeightPyramid (voids skipped in the means), read with the
+// same void-skipping bilinear surface as the other methods (sample_level0_valid).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "core/terrain/height_pyramid.hpp"
 #include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
-#include "core/visibility/mean_pyramid.hpp"
-#include "core/visibility/parallel_for.hpp"
+#include "core/visibility/receiver_setup.hpp"
 #include "core/visibility/row_metrics.hpp"
 
 namespace ts::visibility {
@@ -44,19 +48,16 @@ HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOption
     const PyramidSchedule* schedule = find_pyramid_schedule(options.pyramid_schedule);
     if (!schedule) throw InputError("--pyramid-schedule: unknown schedule '" + options.pyramid_schedule + "'");
     const RowMetrics metrics(grid);
-    const MeanPyramid pyramid(grid);
+    terrain::PyramidOptions pyramid_options;
+    pyramid_options.threads = options.threads;
+    const terrain::HeightPyramid pyramid(grid, pyramid_options);
     const ReceiverWindow win = resolve_window(grid, options.window);
-    HorizonSet out;
-    out.width = win.width;
-    out.height = win.height;
-    out.directions = options.directions;
-    out.angle.assign(out.texels() * std::size_t(options.directions), 0.0f);
+    HorizonSet out = zero_horizons(win, options.directions);
     const double curvature = curvature_factor(options.curvature);
-    float z_top = -std::numeric_limits<float>::infinity();
-    for (float v : grid.z)
-        if (!std::isnan(v)) z_top = std::max(z_top, v);
+    const float z_top = highest_height(grid);
     const double max_tau = 2.0 * std::hypot(double(grid.width), double(grid.height));
-    const std::vector<Sample> samples = schedule_samples(schedule->samples_per_octave, pyramid.levels(), max_tau);
+    const std::vector<Sample> samples =
+        schedule_samples(schedule->samples_per_octave, pyramid.level_count(), max_tau);
     const double wmax = grid.width - 1, hmax = grid.height - 1;
 
     parallel_for(win.height, thread_count(options.threads), [&](int lr, int) {
@@ -76,12 +77,11 @@ HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOption
                         break;  // edge rows survive rounding
                     const double s = smp.tau * unit;
                     if ((double(z_top) - z0) / s - curvature * s <= best) break;
-                    const float z = pyramid.sample(smp.level, c, r);
+                    const float z = pyramid.level(smp.level).sample_level0_valid(c, r);
                     if (std::isnan(z)) continue;
                     best = std::max(best, (double(z) - z0) / s - curvature * s);
                 }
-                out.plane(d)[std::size_t(lr) * win.width + lc] =
-                    best == -std::numeric_limits<double>::infinity() ? 0.0f : float(std::atan(best));
+                out.plane(d)[std::size_t(lr) * win.width + lc] = horizon_angle(best);
             }
         }
         if (options.progress) options.progress->advance(std::uint64_t(win.width) * options.directions);

@@ -4,13 +4,13 @@
 // point could not rise above the best angle found so far.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
-#include "core/visibility/parallel_for.hpp"
+#include "core/visibility/receiver_setup.hpp"
 #include "core/visibility/row_metrics.hpp"
 #include "core/visibility/surface_sampling.hpp"
 
@@ -19,11 +19,7 @@ namespace ts::visibility {
 HorizonSet raymarch_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
     const RowMetrics metrics(grid);
     const ReceiverWindow win = resolve_window(grid, options.window);
-    HorizonSet out;
-    out.width = win.width;
-    out.height = win.height;
-    out.directions = options.directions;
-    out.angle.assign(out.texels() * std::size_t(options.directions), 0.0f);
+    HorizonSet out = zero_horizons(win, options.directions);
     const double curvature = curvature_factor(options.curvature);
     const float z_top = highest_height(grid);
     std::vector<double> cs(std::size_t(options.directions)), sn(cs.size());
@@ -39,8 +35,7 @@ HorizonSet raymarch_horizons(const terrain::HeightGrid& grid, const HorizonOptio
             for (int d = 0; d < options.directions; ++d) {
                 const double t = march_max_slope(grid, metrics, curvature, z_top, col, row, z0, cs[std::size_t(d)],
                                                  sn[std::size_t(d)]);
-                out.plane(d)[std::size_t(lr) * win.width + lc] =
-                    t == -std::numeric_limits<double>::infinity() ? 0.0f : float(std::atan(t));
+                out.plane(d)[std::size_t(lr) * win.width + lc] = horizon_angle(t);
             }
         }
         if (options.progress) options.progress->advance(std::uint64_t(win.width) * options.directions);

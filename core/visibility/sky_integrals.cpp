@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/visibility/parallel_for.hpp"
+#include "core/util/parallel_for.hpp"
 
 namespace ts::visibility {
 

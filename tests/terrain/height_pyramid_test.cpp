@@ -2,6 +2,7 @@
 // corners), equals the same 2x2 mean / max prefilter computed naively on whole grids.
 #include "core/terrain/height_pyramid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -170,6 +171,59 @@ TEST(HeightPyramid, SampleAtLevel0CoordinatesMatchesTexelCentres) {
     for (int i = 0; i < 4; ++i) {
         EXPECT_NEAR(p.level(i).sample_level0(20.25f, 30.5f), 3 * 20.25f + 5 * 30.5f, 1e-3f) << i;
     }
+}
+
+// A plain reference for sample_level0_valid: map to the level, clamp, then weight the (up to)
+// four surrounding texels that exist and are not voids; NaN when no weighted texel is valid.
+float naive_valid_sample(const NaiveLevel& l, int scale, double x0, double y0) {
+    const double x = std::clamp((x0 + 0.5) / scale - 0.5, 0.0, double(l.w - 1));
+    const double y = std::clamp((y0 + 0.5) / scale - 0.5, 0.0, double(l.h - 1));
+    const int c = int(std::floor(x)), r = int(std::floor(y));
+    double sum = 0, wsum = 0;
+    for (int dr = 0; dr < 2; ++dr)
+        for (int dc = 0; dc < 2; ++dc) {
+            const double w = (dc ? x - c : 1 - (x - c)) * (dr ? y - r : 1 - (y - r));
+            if (w <= 0 || c + dc >= l.w || r + dr >= l.h) continue;
+            const float v = l.mean[std::size_t((r + dr) * l.w + c + dc)];
+            if (!std::isnan(v)) sum += w * v, wsum += w;
+        }
+    return wsum > 1e-6 ? float(sum / wsum) : std::nanf("");
+}
+
+TEST(HeightPyramid, ValidSampleSkipsVoidsAndClampsAtEveryLevel) {
+    // Odd sizes (a 1-texel-wide top level), tiles small enough that samples straddle tile
+    // borders, and 20% voids so many footprints mix voids and heights.
+    const int w = 45, h = 23;
+    const std::vector<float> z = random_terrain(w, h, 7u, 0.2);
+    const HeightPyramid p(HeightGrid::uniform(w, h, z, 30, 30), {.tile_size = 8, .halo = 1});
+    const std::vector<NaiveLevel> naive = naive_pyramid(z, w, h);
+    std::mt19937 rng(3);
+    // Positions up to 3 texels beyond every edge, to check the clamping.
+    std::uniform_real_distribution<double> ux(-3.0, w + 2.0), uy(-3.0, h + 2.0);
+    int mixed = 0;
+    for (int i = 0; i < p.level_count(); ++i) {
+        for (int k = 0; k < 2000; ++k) {
+            // Every 4th position exactly on a texel centre or an edge (fraction 0 or 1 cases).
+            const double x0 = k % 4 == 0 ? double(k % (w + 2)) - 1 : ux(rng);
+            const double y0 = k % 4 == 0 ? double(k % (h + 2)) - 1 : uy(rng);
+            const float want = naive_valid_sample(naive[std::size_t(i)], 1 << i, x0, y0);
+            const float got = p.level(i).sample_level0_valid(x0, y0);
+            if (std::isnan(want)) {
+                ASSERT_TRUE(std::isnan(got)) << "level " << i << " at " << x0 << "," << y0;
+            } else {
+                // Heights ~200..820 m; float rounding of the weights and sums stays far below 1e-3 m.
+                ASSERT_NEAR(got, want, 1e-3f) << "level " << i << " at " << x0 << "," << y0;
+                ++mixed;
+            }
+        }
+    }
+    EXPECT_GT(mixed, 1000);  // the comparison really ran on heights, not only on NaNs
+    // A footprint whose only weighted corner is a void has no surface.
+    std::vector<float> holes(16, 100.0f);
+    holes[5] = std::nanf("");  // texel (1, 1)
+    const HeightPyramid q(HeightGrid::uniform(4, 4, holes, 1, 1), {.tile_size = 2, .halo = 1});
+    EXPECT_TRUE(std::isnan(q.level(0).sample_level0_valid(1.0, 1.0)));
+    EXPECT_FLOAT_EQ(q.level(0).sample_level0_valid(1.5, 1.0), 100.0f);
 }
 
 TEST(HeightPyramid, OffsetMetricUsesRowSpacing) {

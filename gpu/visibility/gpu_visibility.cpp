@@ -1,0 +1,416 @@
+#include "gpu/visibility/gpu_visibility.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "core/sh/sh_shared.hpp"
+#include "core/sh/slice_projector.hpp"
+#include "core/util/error.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/visibility/bilinear_march.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/row_metrics.hpp"
+#include "gpu/batch.hpp"
+#include "gpu/kernel.hpp"
+
+namespace ts::gpu::visibility {
+namespace {
+
+namespace vis = ts::visibility;
+
+// Mirrors of the shaders' push-constant blocks (ints and floats, 4 bytes each, no padding).
+struct SweepPush {
+    std::int32_t width, height, col0, row0, win_w, win_h, columns, n_min, line_offset, span_base, chunk_lines,
+        max_points, step, k_begin, k_end;
+    float cs, sn, curvature, delay, mean_rho;
+    float m_hi, m_lo, inv_hi, inv_lo;
+};
+// RowInfo and LineInfo of the shaders.
+struct RowInfo {
+    float dx, dy, g_hi, near_steps, g_lo, dg, pad0, pad1;
+};
+struct LineInfo {
+    std::int32_t first, count;
+    float nh_hi, nh_lo;
+};
+// WalkState of the sweep shader: a line's walk between passes.
+constexpr VkDeviceSize kWalkStateBytes = 32 + 64 * 16;
+// Line samples per sweep pass: llvmpipe ends an invocation's loops after 65535 iterations in
+// all; a sample costs ~50 (plus hull / 16 for the rebase), so 128 samples stay far below.
+constexpr long kPassSamples = 128;
+constexpr int kMaxGpuDirections = 2048;
+// FarEntry of the shaders: 16 bytes per line and window position.
+constexpr VkDeviceSize kFarEntryBytes = 16;
+
+// A double as the sum of two floats (the shaders' double-float values).
+struct SplitDouble {
+    float hi, lo;
+};
+SplitDouble split_double(double v) {
+    const float hi = float(v);
+    return {hi, float(v - double(hi))};
+}
+struct FinishPush {
+    std::int32_t width, height, col0, row0, win_w, win_h, columns, n_min, total_lines, d;
+    float cs, sn, h, curvature, z_top, row_spacing;
+};
+struct LogShPush {
+    std::uint32_t texels;
+    std::int32_t directions;
+    float log_eps;
+};
+struct SkyPush {
+    std::uint32_t texels;
+    std::int32_t directions;
+};
+
+constexpr std::uint32_t kLineGroup = 64;  // local_size_x of vis_exact_sweep.comp
+constexpr std::uint32_t kTexelGroup = 64;  // vis_log_sh, vis_sky
+constexpr std::uint32_t kTile = 8;         // vis_exact_finish is 8 x 8
+constexpr VkDeviceSize kHullBudget = VkDeviceSize(64) << 20;  // scratch for the lines' hulls
+
+// One azimuth's set of sweep lines over a receiver window, computed in double exactly as
+// sweep_columns / sweep_rows do (the GPU then walks each line in float).
+struct SweepPlan {
+    bool columns = true;
+    double cs = 1, sn = 0, h = 1;
+    long n_min = 0, n_max = -1;
+    int start = 0, stop = 0, step = 1;
+    long lines() const { return n_max - n_min + 1; }
+};
+
+// The first integer in [lo, hi] where a monotone (false..true) predicate holds; hi + 1 if none.
+template <class Pred>
+int first_true(int lo, int hi, Pred pred) {
+    int a = lo, b = hi + 1;
+    while (a < b) {
+        const int mid = a + (b - a) / 2;
+        if (pred(mid)) b = mid;
+        else a = mid + 1;
+    }
+    return a;
+}
+
+// Which positions of its walk each line visits, as (first, count): the positions where the
+// CPU sweep's on-grid test holds (in double, the same expression), which form one interval
+// because the line's across coordinate is monotone along it.
+void add_spans(const terrain::HeightGrid& g, const vis::RowMetrics& m, const SweepPlan& p,
+               std::vector<LineInfo>& spans) {
+    constexpr double kEdgeSlack = 1e-7;  // exact_horizons.cpp
+    const int lo = std::min(p.start, p.stop - p.step), hi = std::max(p.start, p.stop - p.step);
+    for (long n = p.n_min; n <= p.n_max; ++n) {
+        auto across = [&](int a) {
+            return p.columns ? (double(n) * p.h - a * p.sn) / p.cs : (double(n) * p.h - m.g(a) * p.cs) / p.sn;
+        };
+        const double top = p.columns ? m.g_max() : double(g.width - 1);
+        const bool rising = across(hi) >= across(lo);
+        auto not_below = [&](int a) { return !(across(a) < -kEdgeSlack); };
+        auto not_above = [&](int a) { return !(across(a) > top + kEdgeSlack); };
+        int first, last;  // the interval in increasing position
+        if (rising) {
+            first = first_true(lo, hi, not_below);
+            last = first_true(lo, hi, [&](int a) { return !not_above(a); }) - 1;
+        } else {
+            first = first_true(lo, hi, not_above);
+            last = first_true(lo, hi, [&](int a) { return !not_below(a); }) - 1;
+        }
+        const SplitDouble nh = split_double(double(n) * p.h);
+        if (last < first) {
+            spans.push_back({0, 0, nh.hi, nh.lo});
+            continue;
+        }
+        spans.push_back({p.step > 0 ? first : last, last - first + 1, nh.hi, nh.lo});
+    }
+}
+
+SweepPlan plan_sweep(const terrain::HeightGrid& g, const vis::RowMetrics& m, const vis::ReceiverWindow& win, int d,
+                     int directions, int lines_per_texel) {
+    SweepPlan p;
+    const double phi = vis::azimuth_rad(d, directions);
+    p.cs = std::cos(phi);
+    p.sn = std::sin(phi);
+    p.columns = std::abs(p.cs) >= std::abs(p.sn) / m.mean_rho();
+    p.h = p.columns ? m.min_rho() * std::abs(p.cs) / lines_per_texel : std::abs(p.sn) / lines_per_texel;
+    auto invariant = [&](double col, int row) { return col * p.sn + m.g(row) * p.cs; };
+    const int c_lo = win.col0, c_hi = win.col0 + win.width - 1;
+    const int r_lo = win.row0, r_hi = win.row0 + win.height - 1;
+    double i_min = invariant(c_lo, r_lo), i_max = i_min;
+    for (double v : {invariant(c_hi, r_lo), invariant(c_lo, r_hi), invariant(c_hi, r_hi)})
+        i_min = std::min(i_min, v), i_max = std::max(i_max, v);
+    p.n_min = long(std::floor(i_min / p.h)) - 1;
+    p.n_max = long(std::ceil(i_max / p.h)) + 1;
+    if (p.columns) {
+        p.step = p.cs > 0 ? -1 : 1;
+        p.start = p.cs > 0 ? g.width - 1 : 0;
+        p.stop = p.cs > 0 ? c_lo - 1 : c_hi + 1;
+    } else {
+        p.step = p.sn > 0 ? 1 : -1;
+        p.start = p.sn > 0 ? 0 : g.height - 1;
+        p.stop = p.sn > 0 ? r_hi + 1 : r_lo - 1;
+    }
+    return p;
+}
+
+struct Kernels {
+    Kernel sweep, finish, log_sh, sky;
+    explicit Kernels(const Context& c)
+        : sweep(c, "vis_exact_sweep", {.storage_buffers = 6, .push_constant_bytes = sizeof(SweepPush)}),
+          finish(c, "vis_exact_finish", {.storage_buffers = 4, .push_constant_bytes = sizeof(FinishPush)}),
+          log_sh(c, "vis_log_sh", {.storage_buffers = 3, .push_constant_bytes = sizeof(LogShPush)}),
+          sky(c, "vis_sky", {.storage_buffers = 3, .push_constant_bytes = sizeof(SkyPush)}) {}
+};
+
+void add_stage_times(std::vector<StageTime>& total, const Batch& batch) {
+    for (const auto& [label, ms] : batch.stage_times()) {
+        auto it = std::find_if(total.begin(), total.end(), [&](const StageTime& s) { return s.label == label; });
+        if (it == total.end()) total.push_back({label, ms});
+        else it->ms += ms;
+    }
+}
+
+// Bytes of the far-field buffer a band needs (the largest azimuth's lines x window positions).
+VkDeviceSize far_bytes(const std::vector<SweepPlan>& plans, const vis::ReceiverWindow& band) {
+    VkDeviceSize most = 0;
+    for (const auto& p : plans)
+        most = std::max(most, VkDeviceSize(p.lines()) * VkDeviceSize(p.columns ? band.width : band.height) *
+                                  kFarEntryBytes);
+    return most;
+}
+
+}  // namespace
+
+Result compute(const Context& context, const terrain::HeightGrid& grid, const Options& options) {
+    const auto& ho = options.horizon;
+    if (grid.width < 1 || grid.height < 1 || grid.z.size() != std::size_t(grid.width) * std::size_t(grid.height))
+        throw InputError("height grid: empty or inconsistent size");
+    if (ho.method != vis::HorizonMethod::exact)
+        throw InputError("--method " + std::string(vis::method_name(ho.method)) +
+                         ": only exact runs on the GPU so far (use --cpu)");
+    if (ho.directions < 1 || ho.directions > 4096)
+        throw InputError("--directions: must be between 1 and 4096, got " + std::to_string(ho.directions));
+    // The log-SH shader loops ~17 times per direction, and llvmpipe ends an invocation's loops
+    // after 65535 iterations in all.
+    if (ho.directions > kMaxGpuDirections)
+        throw InputError("--directions: the GPU path takes at most " + std::to_string(kMaxGpuDirections) + ", got " +
+                         std::to_string(ho.directions) + " (use --cpu)");
+    if (options.log_sh && ho.directions < 4)
+        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(ho.directions));
+    const VkDeviceSize range = context.limits().maxStorageBufferRange;
+    const VkDeviceSize grid_bytes = VkDeviceSize(grid.z.size()) * sizeof(float);
+    if (grid_bytes > range)
+        throw InputError("height grid: " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
+                         " does not fit one GPU storage buffer (" + std::to_string(range >> 20) +
+                         " MiB); crop it or use --cpu");
+
+    const vis::RowMetrics metrics(grid);
+    const vis::ReceiverWindow win = vis::resolve_window(grid, ho.window);
+    const int directions = ho.directions;
+    const int lpt = std::max(1, ho.exact_lines_per_texel);
+    const double curvature = vis::curvature_factor(ho.curvature);
+    double unit = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics.dx(r), metrics.dy(r)});
+    const double near_m = std::max(0.0, ho.exact_near_field_texels) * unit;
+    const float z_top = vis::highest_height(grid);
+
+    // Per row: spacing (east-west floored as RowMetrics does), G, and the near field's step
+    // count, all in double here so the GPU takes the CPU's decisions.
+    std::vector<RowInfo> rows(std::size_t(grid.height));
+    for (int r = 0; r < grid.height; ++r) {
+        const double ds = vis::kMarchStepTexels * std::min(metrics.dx(r), metrics.dy(r));
+        const SplitDouble g = split_double(metrics.g(r));
+        const double dg = r + 1 < grid.height ? metrics.g(r + 1) - metrics.g(r) : 1.0;
+        rows[std::size_t(r)] = {float(metrics.dx(r)), float(metrics.dy(r)), g.hi,
+                                float(near_m > 0 ? int(near_m / ds + 1e-9) : 0), g.lo, float(dg), 0.0f, 0.0f};
+    }
+
+    // Bands of receiver rows: every per-band buffer within the storage-buffer range.
+    const VkDeviceSize per_row = VkDeviceSize(win.width) * 4 * VkDeviceSize(std::max(directions, 16));
+    int band_rows = int(std::min<VkDeviceSize>(VkDeviceSize(win.height), std::max<VkDeviceSize>(1, range / per_row)));
+    if (options.max_band_rows > 0) band_rows = std::min(band_rows, options.max_band_rows);
+    auto band_plans = [&](const vis::ReceiverWindow& band) {
+        std::vector<SweepPlan> plans;
+        for (int d = 0; d < directions; ++d) plans.push_back(plan_sweep(grid, metrics, band, d, directions, lpt));
+        return plans;
+    };
+    while (band_rows > 1 &&
+           far_bytes(band_plans({win.col0, win.row0, win.width, band_rows}), {win.col0, win.row0, win.width, band_rows}) >
+               range)
+        band_rows = (band_rows + 1) / 2;
+
+    const int max_along = std::max(grid.width, grid.height);
+    // A line gets at most 6 points per step: its sample and 5 blocker-only points between.
+    const std::int32_t max_points = 6 * max_along + 8;
+    const VkDeviceSize hull_line_bytes = VkDeviceSize(max_points) * 8;
+    const VkDeviceSize hull_budget = std::min(kHullBudget, range);
+    const long chunk_cap = long(std::max<VkDeviceSize>(kLineGroup, hull_budget / hull_line_bytes / kLineGroup * kLineGroup));
+
+    Result result;
+    result.horizons.width = win.width;
+    result.horizons.height = win.height;
+    result.horizons.directions = directions;
+    const std::size_t texels = result.horizons.texels();
+    result.horizons.angle.assign(texels * std::size_t(directions), 0.0f);
+    if (options.log_sh) result.log_sh.assign(texels * 16, 0.0f);
+    if (options.sky) {
+        result.svf.assign(texels, 0.0f);
+        result.sky_visible.assign(texels, 0.0f);
+    }
+
+    // ts_slice_azimuth_weight of every slice and coefficient (the shared formula, in double).
+    std::vector<float> slice_weights(std::size_t(directions) * 16);
+    for (int d = 0; d < directions; ++d)
+        for (int i = 0; i < 16; ++i) {
+            const int l = int(std::sqrt(double(i)));
+            slice_weights[std::size_t(d) * 16 + std::size_t(i)] = float(sh::shared::ts_slice_azimuth_weight(
+                i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * 3.14159265358979323846 / directions));
+        }
+
+    const Kernels kernels(context);
+    const auto wall_start = std::chrono::steady_clock::now();
+    Batch batch(context);
+    const Buffer heights = batch.upload_new(grid.z);
+    const Buffer row_buffer = batch.upload_new(std::span<const RowInfo>(rows));
+    const Buffer weight_buffer = batch.upload_new(std::span<const float>(slice_weights));
+    batch.mark("upload");
+    batch.submit_and_wait();
+    add_stage_times(result.stages, batch);
+
+    for (int band_row0 = 0; band_row0 < win.height; band_row0 += band_rows) {
+        const vis::ReceiverWindow band{win.col0, win.row0 + band_row0, win.width,
+                                       std::min(band_rows, win.height - band_row0)};
+        const auto plans = band_plans(band);
+        const std::size_t band_texels = std::size_t(band.width) * std::size_t(band.height);
+        long most_lines = 0;
+        for (const auto& p : plans) most_lines = std::max(most_lines, p.lines());
+        const long chunk = std::min(chunk_cap, most_lines);
+        const Buffer hull = context.create_buffer(VkDeviceSize(chunk) * hull_line_bytes);
+        const Buffer states = context.create_buffer(VkDeviceSize(chunk) * kWalkStateBytes);
+        const Buffer far = context.create_buffer(far_bytes(plans, band));
+        const Buffer horizons = context.create_buffer(band_texels * std::size_t(directions) * sizeof(float));
+        std::vector<LineInfo> spans;
+        std::vector<long> span_base;
+        for (const auto& p : plans) {
+            span_base.push_back(long(spans.size()));
+            add_spans(grid, metrics, p, spans);
+        }
+        const Buffer span_buffer = batch.upload_new(std::span<const LineInfo>(spans));
+
+        for (int d = 0; d < directions; ++d) {
+            const SweepPlan& p = plans[std::size_t(d)];
+            const SplitDouble mult = split_double(p.columns ? p.sn : p.cs);
+            const SplitDouble inv = split_double(1.0 / (p.columns ? p.cs : p.sn));
+            batch.fill(far, 0x7fc00000u);  // every entry "no sample" (slope NaN)
+            for (long first = 0; first < p.lines(); first += chunk) {
+                const long n = std::min(chunk, p.lines() - first);
+                long longest = 0;
+                for (long l = first; l < first + n; ++l)
+                    longest = std::max(longest, long(spans[std::size_t(span_base[std::size_t(d)] + l)].count));
+                for (long k0 = 0; k0 < longest; k0 += kPassSamples) {
+                    const SweepPush push{grid.width,
+                                         grid.height,
+                                         band.col0,
+                                         band.row0,
+                                         band.width,
+                                         band.height,
+                                         p.columns ? 1 : 0,
+                                         std::int32_t(p.n_min),
+                                         std::int32_t(first),
+                                         std::int32_t(span_base[std::size_t(d)]),
+                                         std::int32_t(n),
+                                         max_points,
+                                         p.step,
+                                         std::int32_t(k0),
+                                         std::int32_t(k0 + kPassSamples),
+                                         float(p.cs),
+                                         float(p.sn),
+                                         float(curvature),
+                                         float(near_m),
+                                         float(metrics.mean_rho()),
+                                         mult.hi,
+                                         mult.lo,
+                                         inv.hi,
+                                         inv.lo};
+                    batch.dispatch(kernels.sweep, {heights, row_buffer, hull, far, span_buffer, states}, push,
+                                   groups_for(std::uint64_t(n), kLineGroup));
+                }
+            }
+            const FinishPush push{grid.width,
+                                  grid.height,
+                                  band.col0,
+                                  band.row0,
+                                  band.width,
+                                  band.height,
+                                  p.columns ? 1 : 0,
+                                  std::int32_t(p.n_min),
+                                  std::int32_t(p.lines()),
+                                  d,
+                                  float(p.cs),
+                                  float(p.sn),
+                                  float(p.h),
+                                  float(curvature),
+                                  z_top,
+                                  float(1.0 / lpt)};
+            batch.dispatch(kernels.finish, {heights, row_buffer, far, horizons}, push,
+                           groups_for(std::uint64_t(band.width), std::uint64_t(band.height), kTile, kTile));
+        }
+        batch.mark("horizons");
+
+        std::vector<float> band_horizons(band_texels * std::size_t(directions));
+        std::vector<float> band_sh, band_svf, band_sky;
+        std::unique_ptr<Buffer> sh_buffer, svf_buffer, sky_buffer;
+        if (options.log_sh) {
+            sh_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * 16 * sizeof(float)));
+            batch.dispatch(kernels.log_sh, {horizons, *sh_buffer, weight_buffer},
+                           LogShPush{std::uint32_t(band_texels), directions, options.log_eps},
+                           groups_for(band_texels, kTexelGroup));
+            batch.mark("log_sh");
+        }
+        if (options.sky) {
+            svf_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
+            sky_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
+            batch.dispatch(kernels.sky, {horizons, *svf_buffer, *sky_buffer},
+                           SkyPush{std::uint32_t(band_texels), directions}, groups_for(band_texels, kTexelGroup));
+            batch.mark("sky");
+        }
+        batch.download(horizons, std::span<float>(band_horizons));
+        if (sh_buffer) {
+            band_sh.resize(band_texels * 16);
+            batch.download(*sh_buffer, std::span<float>(band_sh));
+        }
+        if (svf_buffer) {
+            band_svf.resize(band_texels);
+            band_sky.resize(band_texels);
+            batch.download(*svf_buffer, std::span<float>(band_svf));
+            batch.download(*sky_buffer, std::span<float>(band_sky));
+        }
+        batch.mark("download");
+        batch.submit_and_wait();
+        add_stage_times(result.stages, batch);
+        ++result.bands;
+
+        // The band's rows into the window-wide layouts.
+        const std::size_t offset = std::size_t(band_row0) * std::size_t(win.width);
+        auto place = [&](const std::vector<float>& from, std::vector<float>& to, int planes) {
+            for (int i = 0; i < planes; ++i)
+                std::memcpy(to.data() + std::size_t(i) * texels + offset, from.data() + std::size_t(i) * band_texels,
+                            band_texels * sizeof(float));
+        };
+        place(band_horizons, result.horizons.angle, directions);
+        if (options.log_sh) place(band_sh, result.log_sh, 16);
+        if (options.sky) {
+            place(band_svf, result.svf, 1);
+            place(band_sky, result.sky_visible, 1);
+        }
+        if (ho.progress) ho.progress->advance(band_texels * std::size_t(directions));
+    }
+    result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
+    return result;
+}
+
+}  // namespace ts::gpu::visibility

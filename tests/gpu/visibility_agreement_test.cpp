@@ -1,0 +1,280 @@
+// GPU visibility (gpu/visibility) against the CPU reference path (core/visibility): exact
+// horizons, svf, sky_visible and log-SH on a 200 x 200 window of every shared DEM, receiver
+// windows and bands of rows, voids; every case with the validation layer on.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/dem/read_dem.hpp"
+#include "core/util/error.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/horizon_sh.hpp"
+#include "core/visibility/sky_integrals.hpp"
+#include "core/visibility/visibility_grid.hpp"
+#include "gpu/visibility/gpu_visibility.hpp"
+#include "tests/gpu/validated_context.hpp"
+
+namespace ts::gpu {
+namespace {
+
+namespace vis = ts::visibility;
+
+// A centred window of a height grid as a grid of its own (heights copied, its rows' spacing).
+struct GridCrop {
+    std::vector<float> z;
+    terrain::HeightGrid grid;
+};
+
+GridCrop crop(const terrain::HeightGrid& g, int size) {
+    const int w = std::min(size, g.width), h = std::min(size, g.height);
+    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
+    GridCrop out;
+    out.z.resize(std::size_t(w) * std::size_t(h));
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) out.z[std::size_t(r) * w + c] = g.at(c0 + c, r0 + r);
+    out.grid.width = w;
+    out.grid.height = h;
+    out.grid.z = out.z;
+    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
+    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
+    return out;
+}
+
+GridCrop crop_of_file(const char* name, int size) {
+    const dem::Dem dem = dem::read_dem(std::filesystem::path(TS_SHARED_DATA) / "dem" / name);
+    const vis::VisibilityGrid full(dem);
+    return crop(full.view(), size);
+}
+
+// Tolerances (the figures measured on lavapipe are in the first test's output).
+//
+// Horizons: the GPU walks the same lines through the same samples in float instead of double.
+// That moves a texel's horizon by < 3e-5 rad (measured on five DEMs and the whole N00E010
+// tile: distances along lines in float, llvmpipe's atan 3.4e-6 rad off). But the CPU method has discontinuities that
+// float can decide the other way, and then that one texel-azimuth differs by up to a few 1e-2:
+//  - a blocker exactly `near field` (2 texels) behind a line sample joins the far field or not
+//    (a position float puts a few metres off, 2e-5 of a 111 km texel of the 1-degree grid);
+//  - next to a void, lerp_valid takes the valid neighbour's height for a position that double
+//    rounding puts 1e-14 inside the neighbour's texel (a line along a texel column at 90
+//    degrees), while float has it exactly on the void.
+// So: texel-azimuths agree to kHorizonTol except at most kFlipFraction of them ("flips"), and
+// the RMS over all of them stays below kHorizonTol (measured 2.6e-6 at most).
+constexpr double kHorizonTol = 1e-4;    // rad
+constexpr double kFlipFraction = 1e-4;  // measured 0 on five DEMs, 1e-5 on the 1-degree global grid
+// svf and sky_visible: the aim, 1e-4 absolute, on every texel (measured <= 5e-6, and
+// 2.8e-5 with the global grid's flips). log-SH: coefficients up to ~8 summed from 32 slices in
+// float, 1e-4 absolute on texels without a flip (measured 2.8e-5).
+constexpr double kSvfTol = 1e-4;
+constexpr double kShTol = 1e-4;
+
+struct Comparison {
+    double max_horizon = 0;  // over texel-azimuths that are not flips
+    double rms_horizon = 0;  // over all texel-azimuths
+    std::size_t flips = 0, compared = 0, nan_mismatches = 0;
+    double max_svf = 0, max_sky = 0;  // over all texels
+    double max_svf_unflipped = 0, max_sh = 0;  // over texels without a flip
+};
+
+struct CpuRun {
+    vis::HorizonSet horizons;
+    std::vector<float> svf, sky, log_sh;
+    double ms = 0;
+};
+
+CpuRun run_cpu(const terrain::HeightGrid& grid, const vis::HorizonOptions& options) {
+    const auto t0 = std::chrono::steady_clock::now();
+    CpuRun r;
+    r.horizons = vis::compute_horizons(grid, options);
+    r.svf = vis::svf_raster(r.horizons);
+    r.sky = vis::sky_visible_raster(r.horizons);
+    r.log_sh = vis::log_sh_raster(r.horizons);
+    r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+}
+
+double abs_diff(float a, float b) { return std::abs(double(a) - double(b)); }
+
+Comparison compare(const CpuRun& cpu, const visibility::Result& gpu) {
+    Comparison c;
+    const std::size_t texels = cpu.horizons.texels();
+    std::vector<bool> flipped(texels, false);
+    double sum2 = 0;
+    for (std::size_t i = 0; i < cpu.horizons.angle.size(); ++i) {
+        const float a = cpu.horizons.angle[i], b = gpu.horizons.angle[i];
+        if (std::isnan(a) || std::isnan(b)) {
+            c.nan_mismatches += std::isnan(a) != std::isnan(b);
+            continue;
+        }
+        const double d = abs_diff(a, b);
+        sum2 += d * d;
+        ++c.compared;
+        if (d > kHorizonTol) {
+            if (std::getenv("TS_GPU_VISIBILITY_VERBOSE") && c.flips < 20)
+                std::printf("  flip d=%zu col=%zu row=%zu cpu %.6f gpu %.6f\n", i / texels, (i % texels) % std::size_t(cpu.horizons.width),
+                            (i % texels) / std::size_t(cpu.horizons.width), a, b);
+            ++c.flips;
+            flipped[i % texels] = true;
+            continue;
+        }
+        c.max_horizon = std::max(c.max_horizon, d);
+    }
+    c.rms_horizon = c.compared ? std::sqrt(sum2 / double(c.compared)) : 0.0;
+    for (std::size_t t = 0; t < texels; ++t) {
+        if (std::isnan(cpu.svf[t]) != std::isnan(gpu.svf[t]) || std::isnan(cpu.sky[t]) != std::isnan(gpu.sky_visible[t]))
+            ++c.nan_mismatches;
+        if (std::isnan(cpu.svf[t])) continue;
+        c.max_svf = std::max(c.max_svf, abs_diff(cpu.svf[t], gpu.svf[t]));
+        c.max_sky = std::max(c.max_sky, abs_diff(cpu.sky[t], gpu.sky_visible[t]));
+        if (flipped[t]) continue;
+        c.max_svf_unflipped = std::max(c.max_svf_unflipped, abs_diff(cpu.svf[t], gpu.svf[t]));
+        for (int i = 0; i < 16; ++i) {
+            const float a = cpu.log_sh[std::size_t(i) * texels + t], b = gpu.log_sh[std::size_t(i) * texels + t];
+            if (std::isnan(a) != std::isnan(b)) ++c.nan_mismatches;
+            else if (!std::isnan(a)) c.max_sh = std::max(c.max_sh, abs_diff(a, b));
+        }
+    }
+    return c;
+}
+
+// Every texel within tolerance (flips counted, see above). `near_voids`: a flip next to a void
+// (a whole line seeing a void or its neighbour) moves a texel's horizon by up to ~0.1 rad and
+// its svf by up to ~1e-3, so there the RMS and svf are checked on the texels without a flip.
+void expect_agreement(const Comparison& c, bool near_voids = false) {
+    EXPECT_EQ(c.nan_mismatches, 0u);
+    EXPECT_LE(c.max_horizon, kHorizonTol);
+    if (!near_voids) {
+        EXPECT_LE(c.rms_horizon, kHorizonTol);
+    }
+    EXPECT_LE(double(c.flips), kFlipFraction * double(c.compared));
+    if (near_voids) {
+        EXPECT_LE(c.max_svf_unflipped, kSvfTol);
+    } else {
+        EXPECT_LE(c.max_svf, kSvfTol);
+        EXPECT_LE(c.max_sky, kSvfTol);
+    }
+    EXPECT_LE(c.max_sh, kShTol);
+}
+
+std::string stage_list(const visibility::Result& r) {
+    std::string s;
+    for (const auto& st : r.stages) s += st.label + " " + std::to_string(int(std::lround(st.ms))) + " ";
+    return s;
+}
+
+using GpuVisibilityTest = test_support::ValidatedTest;
+
+TEST_F(GpuVisibilityTest, ExactHorizonsSvfAndShMatchTheCpuOnEverySharedDem) {
+    const std::filesystem::path dir = std::filesystem::path(TS_SHARED_DATA) / "dem";
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    ASSERT_GE(files.size(), 5u);
+    double cpu_total = 0, gpu_total = 0;
+    for (const auto& file : files) {
+        SCOPED_TRACE(file.filename().string());
+        const dem::Dem dem = dem::read_dem(file);
+        const vis::VisibilityGrid full(dem);
+        const GridCrop c = crop(full.view(), 200);
+        vis::HorizonOptions options;
+        options.directions = 32;
+        const CpuRun cpu = run_cpu(c.grid, options);
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto gpu = visibility::compute(*context_, c.grid, {.horizon = options});
+        const double gpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const Comparison cmp = compare(cpu, gpu);
+        std::printf("%-38s %3dx%-3d D=32 horizon max %.1e rms %.1e rad, flips %zu/%zu; svf %.1e sky %.1e "
+                    "log-SH %.1e; cpu %.0f ms, gpu %.0f ms [ms: %s]\n",
+                    file.filename().string().c_str(), c.grid.width, c.grid.height, cmp.max_horizon, cmp.rms_horizon,
+                    cmp.flips, cmp.compared, cmp.max_svf, cmp.max_sky, cmp.max_sh, cpu.ms, gpu_ms,
+                    stage_list(gpu).c_str());
+        cpu_total += cpu.ms;
+        gpu_total += gpu_ms;
+        expect_agreement(cmp);
+    }
+    std::printf("all windows: cpu %.0f ms, gpu %.0f ms (gpu time / cpu time %.2f)\n", cpu_total, gpu_total,
+                gpu_total / cpu_total);
+}
+
+TEST_F(GpuVisibilityTest, BandsOfRowsJoinIntoTheWholeWindowResult) {
+    const GridCrop c = crop_of_file("srtm3_N39E040_1000px.tif", 120);
+    visibility::Options options;
+    options.horizon.directions = 16;
+    const auto whole = visibility::compute(*context_, c.grid, options);
+    options.max_band_rows = 37;  // 4 bands, the last one short
+    const auto banded = visibility::compute(*context_, c.grid, options);
+    EXPECT_EQ(whole.bands, 1);
+    EXPECT_EQ(banded.bands, 4);
+    // Same lines, same samples, same arithmetic: identical, not just close.
+    EXPECT_EQ(whole.horizons.angle, banded.horizons.angle);
+    EXPECT_EQ(whole.log_sh, banded.log_sh);
+    EXPECT_EQ(whole.svf, banded.svf);
+}
+
+TEST_F(GpuVisibilityTest, ReceiverWindowEqualsTheSameTexelsOfTheWholeGridAndTheCpu) {
+    const GridCrop c = crop_of_file("copernicus_N45E005_grenoble_500px.tif", 120);
+    visibility::Options options;
+    options.horizon.directions = 16;
+    const auto whole = visibility::compute(*context_, c.grid, options);
+    // A window touching the grid's east edge: blockers still come from the whole grid.
+    options.horizon.window = {.col0 = 70, .row0 = 30, .width = 50, .height = 40};
+    const auto part = visibility::compute(*context_, c.grid, options);
+    ASSERT_EQ(part.horizons.width, 50);
+    ASSERT_EQ(part.horizons.height, 40);
+    const CpuRun cpu = run_cpu(c.grid, options.horizon);
+    for (int d = 0; d < 16; ++d)
+        for (int r = 0; r < 40; ++r)
+            for (int col = 0; col < 50; ++col) {
+                ASSERT_EQ(part.horizons.at(d, col, r), whole.horizons.at(d, 70 + col, 30 + r)) << d << " " << col << " " << r;
+                ASSERT_NEAR(part.horizons.at(d, col, r), cpu.horizons.at(d, col, r), kHorizonTol);
+            }
+    for (int r = 0; r < 40; ++r)
+        for (int col = 0; col < 50; ++col)
+            EXPECT_NEAR(part.svf[std::size_t(r) * 50 + col], cpu.svf[std::size_t(r) * 50 + col], kSvfTol);
+}
+
+TEST_F(GpuVisibilityTest, VoidsNeitherBlockNorReceiveAsOnTheCpu) {
+    GridCrop c = crop_of_file("N00E011.hgt.zip", 100);
+    // A 12 x 9 hole and a lone void texel: NaN receivers, and no surface there for blockers.
+    for (int r = 40; r < 49; ++r)
+        for (int col = 30; col < 42; ++col) c.z[std::size_t(r) * 100 + col] = std::nanf("");
+    c.z[std::size_t(70) * 100 + 71] = std::nanf("");
+    vis::HorizonOptions options;
+    options.directions = 16;
+    const CpuRun cpu = run_cpu(c.grid, options);
+    const auto gpu = visibility::compute(*context_, c.grid, {.horizon = options});
+    const Comparison cmp = compare(cpu, gpu);
+    EXPECT_TRUE(std::isnan(gpu.horizons.at(3, 35, 44)));
+    EXPECT_TRUE(std::isnan(gpu.svf[std::size_t(70) * 100 + 71]));
+    EXPECT_TRUE(std::isnan(gpu.log_sh[std::size_t(70) * 100 + 71]));
+    std::printf("voids: flips %zu/%zu, svf max %.1e (%.1e away from flips), sky %.1e\n", cmp.flips, cmp.compared,
+                cmp.max_svf, cmp.max_svf_unflipped, cmp.max_sky);
+    expect_agreement(cmp, true);
+}
+
+TEST_F(GpuVisibilityTest, NoCurvatureAndTwoLinesPerTexelAgreeToo) {
+    const GridCrop c = crop_of_file("N00E010.hgt", 100);
+    vis::HorizonOptions options;
+    options.directions = 8;
+    options.curvature = false;
+    options.exact_lines_per_texel = 2;
+    const CpuRun cpu = run_cpu(c.grid, options);
+    const auto gpu = visibility::compute(*context_, c.grid, {.horizon = options});
+    expect_agreement(compare(cpu, gpu));
+}
+
+TEST_F(GpuVisibilityTest, OnlyTheExactMethodRunsOnTheGpu) {
+    const GridCrop c = crop_of_file("N00E010.hgt", 20);
+    visibility::Options options;
+    options.horizon.method = vis::HorizonMethod::pyramid;
+    EXPECT_THROW(visibility::compute(*context_, c.grid, options), InputError);
+}
+
+}  // namespace
+}  // namespace ts::gpu

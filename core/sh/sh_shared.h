@@ -1,6 +1,6 @@
 // The single definition of the log-SH formulas, shared by C++ (core/sh) and GLSL (gpu/shaders).
 //
-// Written in the common subset of C++20 and GLSL 4.50: only the macros below, plain
+// Written in the common subset of C++20 and GLSL 4.50: only the macros of glsl_compat.h, plain
 // arithmetic, sqrt/sin/cos/asin, for loops and if. No templates, namespaces, std::, const&,
 // float suffixes. docs/method.md derives every formula.
 //
@@ -16,23 +16,8 @@
 #ifndef TS_SH_SHARED_H
 #define TS_SH_SHARED_H
 
-#ifdef TS_GLSL
-#define TS_REAL float
-#define TS_VEC3 vec3
-#define TS_OUT_ARRAY(T, name, N) out T name[N]
-#define TS_INOUT_ARRAY(T, name, N) inout T name[N]
-#define TS_IN_ARRAY(T, name, N) in T name[N]
-#define TS_INLINE
-#else
-#define TS_REAL double
-#define TS_VEC3 glm::dvec3
-#define TS_OUT_ARRAY(T, name, N) T(&name)[N]
-#define TS_INOUT_ARRAY(T, name, N) T(&name)[N]
-#define TS_IN_ARRAY(T, name, N) const T(&name)[N]
-#define TS_INLINE inline
-#endif
+#include "core/util/glsl_compat.h"
 
-#define TS_PI 3.14159265358979323846
 #define TS_SH_COUNT 16
 
 // ---------------------------------------------------------------------------------------

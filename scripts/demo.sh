@@ -20,7 +20,7 @@ $ts visibility "$dem" --directions 32 --method exact \
     --svf out/svf.tif --sky-visible out/sky_visible.tif --horizons out/horizons.tif --sh out/visibility_sh.tif
 $ts visibility "$dem" --directions 32 --svf out/svf.png
 
-echo "== the sun over Grenoble at the June solstice, local noon"
+echo "== the sun over Grenoble at the June solstice, 12:00 CEST (solar noon is ~13:38 there)"
 $ts sun --time 2025-06-21T12:00:00+02:00 --lat 45.19 --lon 5.72 --height-m 212
 
 echo "demo: outputs in out/: $(ls out | tr '\n' ' ')"

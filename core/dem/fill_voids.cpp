@@ -18,14 +18,14 @@ constexpr std::size_t kRelaxationBudget = 200'000'000;
 }  // namespace
 
 void fill_voids(Dem& dem) {
-    std::vector<std::size_t> todo;
+    std::vector<std::size_t> pending;
     for (std::size_t i = 0; i < dem.z.size(); ++i)
         if (dem.void_mask[i] || std::isnan(dem.z[i])) {
             dem.void_mask[i] = 1;
-            todo.push_back(i);
+            pending.push_back(i);
         }
-    if (todo.empty()) return;
-    if (todo.size() == dem.z.size()) throw input_error(dem.source, "no valid height anywhere (all cells are nodata)");
+    if (pending.empty()) return;
+    if (pending.size() == dem.z.size()) throw input_error(dem.source, "no valid height anywhere (all cells are nodata)");
 
     // Multi-source breadth-first search from the measured cells gives each void its layer
     // (8-neighbour distance to the rim); filling in that order makes the peel O(cells).
@@ -33,7 +33,7 @@ void fill_voids(Dem& dem) {
     constexpr int kUnset = -1;
     std::vector<int> layer(dem.z.size(), kUnset);
     std::vector<std::size_t> queue;
-    queue.reserve(todo.size());
+    queue.reserve(pending.size());
     for (std::size_t i = 0; i < dem.z.size(); ++i)
         if (!dem.void_mask[i]) layer[i] = 0;
     auto for_neighbours = [&](std::size_t i, auto&& visit) {
@@ -44,7 +44,7 @@ void fill_voids(Dem& dem) {
                 if ((dc || dr) && cc >= 0 && cc < w && rr >= 0 && rr < h) visit(dem.index(cc, rr));
             }
     };
-    for (std::size_t i : todo) {  // first layer: voids touching a measured cell
+    for (std::size_t i : pending) {  // first layer: voids touching a measured cell
         bool rim = false;
         for_neighbours(i, [&](std::size_t n) { rim = rim || layer[n] == 0; });
         if (rim) {

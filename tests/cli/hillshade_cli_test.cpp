@@ -26,6 +26,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "tests/cli/cli_support.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -39,13 +41,9 @@ struct CommandResult {
 };
 
 // Runs a shell command, returns its exit code and its stderr.
-CommandResult run(const std::string& cmd, const fs::path& dir) {
-    const fs::path err_file = dir / "stderr.txt";
-    const int status = std::system((cmd + " >/dev/null 2>" + err_file.string()).c_str());
-    std::ifstream in(err_file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+CommandResult run(const std::string& cmd, const fs::path&) {
+    const ts::cli_test::Result r = ts::cli_test::run(cmd);
+    return {r.exit_code, r.err};
 }
 
 struct Image {
@@ -67,16 +65,7 @@ Image read_image(const fs::path& path) {
     return img;
 }
 
-std::string capture(const std::string& cmd) {
-    std::string out;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return out;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    pclose(p);
-    return out;
-}
+std::string capture(const std::string& cmd) { return ts::cli_test::run(cmd).out; }
 
 struct Comparison {
     long compared = 0, equal = 0, max_diff = 0, over_one = 0;

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
-#include "tests/cli/info_test_support.hpp"
+#include "tests/cli/cli_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace ts::cli_test;

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/cli/info_test_support.hpp"
+#include "tests/cli/cli_support.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

@@ -8,33 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/cli/cli_support.hpp"
+
 namespace {
 
-struct Result {
-    int exit_code = -1;
-    std::string out, err;
-};
+using ts::cli_test::Result;
 
-// Runs terrashade with `args`, stdout captured, stderr merged after a marker.
-Result run(const std::string& args) {
-    const std::string marker = "\n--stderr--\n";
-    const std::string command =
-        "( " + std::string(TS_BIN) + " " + args + " 2>/tmp/ts_sun_cli_err_$$; status=$?; printf '" +
-        "\\n--stderr--\\n'; cat /tmp/ts_sun_cli_err_$$; rm -f /tmp/ts_sun_cli_err_$$; exit $status )";
-    Result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    std::size_t n = 0;
-    std::string all;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) all.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    const auto at = all.rfind(marker);
-    r.out = all.substr(0, at);
-    r.err = at == std::string::npos ? "" : all.substr(at + marker.size());
-    return r;
-}
+// Runs terrashade with `args`, stdout and stderr captured apart.
+Result run(const std::string& args) { return ts::cli_test::run(std::string(TS_BIN) + " " + args); }
 
 // The SPA paper's example: 2003-10-17 12:30:30 at UTC-7, Golden CO, 1830.14 m, 820 hPa, 11 C, delta T 67 s.
 const std::string kPublished =

@@ -15,6 +15,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/dem/read_dem.hpp"
+#include "tests/cli/cli_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,13 +29,9 @@ struct CommandResult {
     std::string err;
 };
 
-CommandResult run(const std::string& args, const fs::path& dir) {
-    const fs::path err_file = dir / "stderr.txt";
-    const int status = std::system((kBin + " " + args + " >/dev/null 2>" + err_file.string()).c_str());
-    std::ifstream in(err_file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+CommandResult run(const std::string& args, const fs::path&) {
+    const ts::cli_test::Result r = ts::cli_test::run(kBin + " " + args);
+    return {r.exit_code, r.err};
 }
 
 class VisibilityCli : public ::testing::Test {

@@ -1,5 +1,5 @@
 #pragma once
-// Helpers for the `terrashade info` CLI tests: run a command, keep its exit code, stdout and
+// Helpers for the CLI tests: run a command, keep its exit code, stdout and
 // stderr; a private temp dir per test binary; gdalinfo/gdaltransform as oracles (never linked).
 #include <sys/wait.h>
 #include <unistd.h>

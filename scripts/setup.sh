@@ -10,7 +10,8 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 BUILD_PKGS=(
   build-essential cmake ninja-build pkg-config
   libgeographiclib-dev      # geodesy: local ENU frames, geodesics, UTM/UPS
-  libopenimageio-dev        # image I/O: PNG, EXR, HDR, TIFF pixels
+  libopenimageio-dev        # image I/O in tests; EXR/HDR environment maps
+  libpng-dev                # PNG output (light to link; see docs/dependencies.md)
   openimageio-tools
   libtiff-dev libgeotiff-dev  # GeoTIFF tags and GeoKeys (OIIO 2.4 does not expose them)
   libproj-dev proj-data     # CRS transforms for projections GeographicLib lacks

@@ -6,9 +6,8 @@
 #include <cstring>
 #include <memory>
 
-#include <OpenImageIO/imageio.h>
-
 #include "core/raster/geotiff_georef.hpp"
+#include "core/raster/png_writer.hpp"
 #include "core/raster/tiff_file.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
@@ -118,11 +117,7 @@ void write_u8_image(const std::filesystem::path& path, int width, int height, in
         throw input_error(path.string(), "an 8-bit image has 1, 3 or 4 channels, not " + std::to_string(channels));
     if (ext == ".png") {
         write_atomically(path, [&](const std::filesystem::path& tmp) {
-            auto out = OIIO::ImageOutput::create(tmp.string());
-            if (!out) throw input_error(path.string(), "cannot create a PNG writer");
-            OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-            if (!out->open(tmp.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, data) || !out->close())
-                throw input_error(path.string(), "writing PNG failed: " + out->geterror());
+            write_png(tmp, path, width, height, channels, data);
         });
         return;
     }

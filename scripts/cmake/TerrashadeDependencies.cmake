@@ -1,7 +1,8 @@
 # Every external library, found once. scripts/setup.sh installs them (docs/dependencies.md says why each).
 find_package(Threads REQUIRED)
 find_package(PROJ CONFIG REQUIRED)
-find_package(OpenImageIO CONFIG REQUIRED)
+find_package(OpenImageIO CONFIG REQUIRED)  # tests read images with it; later: EXR/HDR environment maps
+find_package(PNG REQUIRED)                  # 8-bit PNG output (core/raster/png_writer.hpp says why not OIIO)
 # Debian 12's OpenImageIO config lists /usr/include/opencv4 even when OpenCV is not installed,
 # which makes every target linking it fail to generate: drop that one directory.
 get_target_property(_ts_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)

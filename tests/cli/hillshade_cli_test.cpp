@@ -35,16 +35,9 @@ namespace {
 const std::string kBin = TS_BIN;
 const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
 
-struct CommandResult {
-    int code;
-    std::string err;
-};
-
-// Runs a shell command, returns its exit code and its stderr.
-CommandResult run(const std::string& cmd, const fs::path&) {
-    const ts::cli_test::Result r = ts::cli_test::run(cmd);
-    return {r.exit_code, r.err};
-}
+// Runs a shell command (terrashade or a GDAL oracle).
+using ts::cli_test::Result;
+using ts::cli_test::run;
 
 struct Image {
     int width = 0, height = 0, channels = 0;
@@ -108,8 +101,8 @@ protected:
         } else {
             cmd = "gdalwarp -q -overwrite -t_srs EPSG:32637 -tr 120 120 -r bilinear " + kDem + "srtm3_N39E040_1000px.tif ";
         }
-        const CommandResult r = run(cmd + out.string(), dir_);
-        EXPECT_EQ(r.code, 0) << r.err;
+        const Result r = run(cmd + out.string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
         return out;
     }
     static void TearDownTestSuite() {
@@ -125,10 +118,10 @@ void expect_matches_gdaldem(const fs::path& dir, const fs::path& dem, const std:
                             bool exact_mask) {
     const fs::path ts_out = dir / (dem.stem().string() + "_ts.tif");
     const fs::path gd_out = dir / (dem.stem().string() + "_gd.tif");
-    const CommandResult gd = run("gdaldem hillshade -q " + gd_flags + " " + dem.string() + " " + gd_out.string(), dir);
-    ASSERT_EQ(gd.code, 0) << gd.err;
-    const CommandResult ts = run(kBin + " hillshade " + dem.string() + " --out " + ts_out.string() + " " + ts_flags, dir);
-    ASSERT_EQ(ts.code, 0) << ts.err;
+    const Result gd = run("gdaldem hillshade -q " + gd_flags + " " + dem.string() + " " + gd_out.string());
+    ASSERT_EQ(gd.exit_code, 0) << gd.err;
+    const Result ts = run(kBin + " hillshade " + dem.string() + " --out " + ts_out.string() + " " + ts_flags);
+    ASSERT_EQ(ts.exit_code, 0) << ts.err;
     const Image a = read_image(ts_out), b = read_image(gd_out);
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);
@@ -171,7 +164,7 @@ void expect_geographic_band_matches(const fs::path& dir, const std::string& src,
     int src_w = 0, src_h = 0;
     ASSERT_EQ(std::sscanf(src_info.substr(src_info.find("Size is")).c_str(), "Size is %d, %d", &src_w, &src_h), 2);
     ASSERT_EQ(run("gdal_translate -q -srcwin 0 " + std::to_string(row0) + " " + std::to_string(src_w) + " " + std::to_string(rows) +
-                      " " + kDem + src + " " + band.string(), dir).code, 0);
+                      " " + kDem + src + " " + band.string()).exit_code, 0);
     // Read the band's geotransform back from gdalinfo: "Origin = (x,y)" and "Pixel Size = (dx,-dy)".
     const std::string info = capture("gdalinfo " + band.string());
     double x0 = 0, y0 = 0, sx = 0, sy = 0;
@@ -188,12 +181,12 @@ void expect_geographic_band_matches(const fs::path& dir, const std::string& src,
     // Same pixels, metric geotransform (the CRS only names units for gdaldem).
     char ullr[256];
     std::snprintf(ullr, sizeof ullr, "0 %.6f %.6f 0", dy_m * h, dx_m * w);
-    ASSERT_EQ(run("gdal_translate -q -a_srs EPSG:32637 -a_ullr " + std::string(ullr) + " " + band.string() + " " + metric.string(), dir).code, 0);
+    ASSERT_EQ(run("gdal_translate -q -a_srs EPSG:32637 -a_ullr " + std::string(ullr) + " " + band.string() + " " + metric.string()).exit_code, 0);
     const fs::path ts_out = dir / ("ts_" + band.filename().string());
     const fs::path gd_out = dir / ("gd_" + band.filename().string());
-    ASSERT_EQ(run("gdaldem hillshade -q " + metric.string() + " " + gd_out.string(), dir).code, 0);
-    const CommandResult ts = run(kBin + " hillshade --no-fill " + band.string() + " --out " + ts_out.string(), dir);
-    ASSERT_EQ(ts.code, 0) << ts.err;
+    ASSERT_EQ(run("gdaldem hillshade -q " + metric.string() + " " + gd_out.string()).exit_code, 0);
+    const Result ts = run(kBin + " hillshade --no-fill " + band.string() + " --out " + ts_out.string());
+    ASSERT_EQ(ts.exit_code, 0) << ts.err;
     const Image a = read_image(ts_out), b = read_image(gd_out);
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);
@@ -214,8 +207,8 @@ TEST_F(HillshadeCli, GeographicDemUsesTrueMetricSpacing) {
 TEST_F(HillshadeCli, WritesGeoreferencedTiffAndPng) {
     const fs::path tif = p("grenoble.tif"), png = p("grenoble.png");
     const std::string dem = kDem + "copernicus_N45E005_grenoble_500px.tif";
-    ASSERT_EQ(run(kBin + " hillshade " + dem + " --out " + tif.string(), dir_).code, 0);
-    ASSERT_EQ(run(kBin + " hillshade " + dem + " -o " + png.string(), dir_).code, 0);
+    ASSERT_EQ(run(kBin + " hillshade " + dem + " --out " + tif.string()).exit_code, 0);
+    ASSERT_EQ(run(kBin + " hillshade " + dem + " -o " + png.string()).exit_code, 0);
     const Image a = read_image(tif), b = read_image(png);
     ASSERT_EQ(a.width, 500);
     ASSERT_EQ(b.width, 500);
@@ -238,23 +231,23 @@ TEST_F(HillshadeCli, BadFlagsExitTwoWithOneLine) {
     const fs::path out = p("bad.tif");
     // The unit tests cover every boundary; here one of each kind reaches the user as one line.
     for (const std::string flags : {"--altitude 95", "--azimuth nan", "--z-factor 0", "--altitude abc"}) {
-        const CommandResult r = run(kBin + " hillshade " + dem + " --out " + out.string() + " " + flags, dir_);
-        EXPECT_EQ(r.code, 2) << flags;
+        const Result r = run(kBin + " hillshade " + dem + " --out " + out.string() + " " + flags);
+        EXPECT_EQ(r.exit_code, 2) << flags;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << flags;
     }
-    const CommandResult ext = run(kBin + " hillshade " + dem + " --out " + p("x.jpg").string(), dir_);
-    EXPECT_EQ(ext.code, 2);
+    const Result ext = run(kBin + " hillshade " + dem + " --out " + p("x.jpg").string());
+    EXPECT_EQ(ext.exit_code, 2);
     EXPECT_NE(ext.err.find("x.jpg"), std::string::npos) << ext.err;
-    const CommandResult no_out = run(kBin + " hillshade " + dem, dir_);
-    EXPECT_EQ(no_out.code, 2);
+    const Result no_out = run(kBin + " hillshade " + dem);
+    EXPECT_EQ(no_out.exit_code, 2);
 }
 
 TEST_F(HillshadeCli, MissingDemLeavesExistingOutputUntouched) {
     const fs::path out = p("keep.tif");
     { std::ofstream(out) << "keep"; }
-    const CommandResult r = run(kBin + " hillshade " + p("no_such.hgt").string() + " --out " + out.string(), dir_);
-    EXPECT_EQ(r.code, 2);
+    const Result r = run(kBin + " hillshade " + p("no_such.hgt").string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("no_such.hgt"), std::string::npos) << r.err;
     std::ifstream in(out);
     std::string content;

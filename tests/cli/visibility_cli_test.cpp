@@ -24,15 +24,10 @@ namespace {
 const std::string kBin = TS_BIN;
 const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
 
-struct CommandResult {
-    int code;
-    std::string err;
-};
+using ts::cli_test::Result;
 
-CommandResult run(const std::string& args, const fs::path&) {
-    const ts::cli_test::Result r = ts::cli_test::run(kBin + " " + args);
-    return {r.exit_code, r.err};
-}
+// Runs terrashade with `args`.
+Result run(const std::string& args) { return ts::cli_test::run(kBin + " " + args); }
 
 class VisibilityCli : public ::testing::Test {
 protected:
@@ -54,10 +49,9 @@ const std::string kWindow = "visibility " + kDem + "N00E010.hgt --crop 10.45,0.4
 
 TEST_F(VisibilityCli, WritesGeoreferencedRasters) {
     const fs::path svf = dir_ / "svf.tif", sky = dir_ / "sky.tif", hz = dir_ / "hz.tif", sh = dir_ / "sh.tif";
-    const CommandResult r = run(kWindow + " --directions 16 --svf " + svf.string() + " --sky-visible " + sky.string() +
-                                    " --horizons " + hz.string() + " --sh " + sh.string(),
-                                dir_);
-    ASSERT_EQ(r.code, 0) << r.err;
+    const Result r = run(kWindow + " --directions 16 --svf " + svf.string() + " --sky-visible " + sky.string() +
+                                    " --horizons " + hz.string() + " --sh " + sh.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto in = ts::dem::read_dem(kDem + "N00E010.hgt");
     const auto out = ts::dem::read_dem(svf);
     ASSERT_GT(out.width, 100);
@@ -84,8 +78,8 @@ TEST_F(VisibilityCli, WritesGeoreferencedRasters) {
 
 TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
     const fs::path a = dir_ / "exact.tif", b = dir_ / "ray.tif";
-    ASSERT_EQ(run(kWindow + " --directions 16 --method exact --svf " + a.string(), dir_).code, 0);
-    ASSERT_EQ(run(kWindow + " --directions 16 --method raymarch --svf " + b.string(), dir_).code, 0);
+    ASSERT_EQ(run(kWindow + " --directions 16 --method exact --svf " + a.string()).exit_code, 0);
+    ASSERT_EQ(run(kWindow + " --directions 16 --method raymarch --svf " + b.string()).exit_code, 0);
     const auto ea = ts::dem::read_dem(a), eb = ts::dem::read_dem(b);
     double se = 0;
     int n = 0;
@@ -98,8 +92,8 @@ TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
 
 TEST_F(VisibilityCli, PngQuickLookMatchesTheFloatRaster) {
     const fs::path tif = dir_ / "svf.tif", png = dir_ / "svf.png";
-    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + tif.string(), dir_).code, 0);
-    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + png.string(), dir_).code, 0);
+    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + tif.string()).exit_code, 0);
+    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + png.string()).exit_code, 0);
     const auto ref = ts::dem::read_dem(tif);
     auto in = OIIO::ImageInput::open(png.string());
     ASSERT_TRUE(in);
@@ -115,17 +109,17 @@ TEST_F(VisibilityCli, PngQuickLookMatchesTheFloatRaster) {
             else ASSERT_NEAR((g - 1) / 254.0, ref.at(c, r), 0.5 / 254 + 1e-6);
         }
     // Multi-band outputs have no PNG form: a clear error, not a silent first band.
-    const CommandResult bad = run(kWindow + " --directions 8 --sh " + (dir_ / "sh.png").string(), dir_);
-    EXPECT_EQ(bad.code, 2);
+    const Result bad = run(kWindow + " --directions 8 --sh " + (dir_ / "sh.png").string());
+    EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("PNG holds only"), std::string::npos) << bad.err;
 }
 
 TEST_F(VisibilityCli, VoidReceiverIsNaN) {
     // nodata_3x3.tif: a 3x3 grid whose lower-right 2x2 block is nodata (9999).
     const fs::path svf = dir_ / "svf.tif";
-    const CommandResult r =
-        run("visibility " + kDem + "nodata_3x3.tif --directions 8 --no-curvature --svf " + svf.string(), dir_);
-    ASSERT_EQ(r.code, 0) << r.err;
+    const Result r =
+        run("visibility " + kDem + "nodata_3x3.tif --directions 8 --no-curvature --svf " + svf.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto out = ts::dem::read_dem(svf);
     ASSERT_EQ(out.width, 3);
     EXPECT_TRUE(std::isnan(out.at(1, 1)) || out.is_void(1, 1));
@@ -138,8 +132,8 @@ TEST_F(VisibilityCli, BadUsageExitsTwoWithOneLine) {
          {"visibility " + kDem + "N00E010.hgt --method nonsense --svf x.tif",
           "visibility " + kDem + "N00E010.hgt --directions 0 --svf x.tif", "visibility " + kDem + "N00E010.hgt",
           std::string("visibility /nonexistent.hgt --svf x.tif")}) {
-        const CommandResult r = run(args, dir_);
-        EXPECT_EQ(r.code, 2) << args;
+        const Result r = run(args);
+        EXPECT_EQ(r.exit_code, 2) << args;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
     }
 }

@@ -1,0 +1,33 @@
+#include "core/light/sky_color.hpp"
+
+#include <algorithm>
+
+namespace ts::light {
+
+Rgb xyz_to_linear_srgb(double X, double Y, double Z) {
+    return Rgb(static_cast<float>(3.2404542 * X - 1.5371385 * Y - 0.4985314 * Z),
+               static_cast<float>(-0.9692660 * X + 1.8760108 * Y + 0.0415560 * Z),
+               static_cast<float>(0.0556434 * X - 0.2040259 * Y + 1.0572252 * Z));
+}
+
+Rgb xyY_to_linear_srgb(double x, double y, double Y) {
+    if (!(y > 0.0) || !(Y > 0.0)) return Rgb(0.0f);
+    const double X = x * Y / y;
+    const double Z = (1.0 - x - y) * Y / y;
+    const Rgb rgb = xyz_to_linear_srgb(X, Y, Z);
+    return Rgb(std::max(rgb.r, 0.0f), std::max(rgb.g, 0.0f), std::max(rgb.b, 0.0f));
+}
+
+double luminance(const Rgb& rgb) {
+    return 0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b;
+}
+
+Chromaticity planckian_chromaticity(double kelvin) {
+    const double t = std::clamp(kelvin, 4000.0, 25000.0);
+    const double u = 1.0 / t;
+    const double x = -3.0258469e9 * u * u * u + 2.1070379e6 * u * u + 0.2226347e3 * u + 0.240390;
+    const double y = 3.0817580 * x * x * x - 5.87338670 * x * x + 3.75112997 * x - 0.37001483;
+    return {x, y};
+}
+
+}  // namespace ts::light

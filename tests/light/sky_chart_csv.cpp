@@ -1,0 +1,80 @@
+// Prints the data behind docs/charts/sky_*.png (scripts/chart_sky.py runs it):
+//   sky_chart_csv OUT_DIR  ->  OUT_DIR/sky_profile.csv, OUT_DIR/sky_sh.csv
+// sky_profile: luminance and RGB along the sun's vertical plane (signed zenith angle, positive
+// towards the sun) for several turbidities and the overcast sky, sun 30 degrees up.
+// sky_sh: the same profile for the clear (T = 3) and overcast skies beside their order-4 SH
+// reconstruction.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "core/geo/azimuth.hpp"
+#include "core/light/overcast_sky.hpp"
+#include "core/light/preetham_sky.hpp"
+#include "core/light/sky_color.hpp"
+#include "core/light/sky_sh.hpp"
+
+using namespace ts::light;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kSunAzimuth = 180.0;
+constexpr double kSunElevation = 30.0;
+
+// Signed zenith angle z in [-90, 90]: positive towards the sun's azimuth.
+glm::dvec3 vertical_dir(double signed_zenith_deg) {
+    const double az = signed_zenith_deg >= 0 ? kSunAzimuth : kSunAzimuth + 180.0;
+    return ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(az),
+                                  (90.0 - std::abs(signed_zenith_deg)) * kDeg);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: sky_chart_csv OUT_DIR\n");
+        return 2;
+    }
+    const std::filesystem::path dir = argv[1];
+    const glm::dvec3 sun =
+        ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), kSunElevation * kDeg);
+
+    std::ofstream profile(dir / "sky_profile.csv");
+    profile << "sky,turbidity,signed_zenith_deg,luminance,r,g,b\n";
+    const double turbidities[] = {2.0, 3.0, 5.0, 8.0};
+    for (double t : turbidities) {
+        const PreethamSky sky(t, 0.2, sun);
+        for (double z = -89.5; z <= 89.5; z += 1.0) {
+            const Rgb l = sky.radiance(vertical_dir(z));
+            profile << "clear," << t << ',' << z << ',' << luminance(l) << ',' << l.r << ',' << l.g << ',' << l.b
+                    << '\n';
+        }
+    }
+    const OvercastSky overcast(1.0, 0.2, sun);
+    for (double z = -89.5; z <= 89.5; z += 1.0) {
+        const Rgb l = overcast.radiance(vertical_dir(z));
+        profile << "overcast,0," << z << ',' << luminance(l) << ',' << l.r << ',' << l.g << ',' << l.b << '\n';
+    }
+
+    std::ofstream shcsv(dir / "sky_sh.csv");
+    shcsv << "sky,signed_zenith_deg,true_luminance,sh_luminance\n";
+    const PreethamSky clear(3.0, 0.2, sun);
+    const Sky* skies[] = {&clear, &overcast};
+    const char* names[] = {"clear T=3", "overcast"};
+    for (int k = 0; k < 2; ++k) {
+        const SkySh sh = project_sky_sh(*skies[k]);
+        // The whole circle: the vertical plane continues below the horizon (the ground).
+        for (double a = -179.5; a <= 179.5; a += 1.0) {
+            const double z = a;  // signed angle from the zenith, beyond +-90 below the horizon
+            const double phi = ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth);
+            const glm::dvec3 d(std::sin(z * kDeg) * std::cos(phi), std::sin(z * kDeg) * std::sin(phi),
+                               std::cos(z * kDeg));
+            shcsv << names[k] << ',' << z << ',' << luminance(skies[k]->radiance(d)) << ','
+                  << luminance(reconstruct_sky_sh(sh, d)) << '\n';
+        }
+    }
+    std::printf("wrote %s and %s\n", (dir / "sky_profile.csv").c_str(), (dir / "sky_sh.csv").c_str());
+    return 0;
+}

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,7 @@
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/exact_azimuth.hpp"
 #include "core/visibility/fast_atan.hpp"
 #include "core/visibility/profile_hull.hpp"
 #include "core/visibility/receiver_setup.hpp"
@@ -39,12 +41,6 @@
 
 namespace ts::visibility {
 namespace {
-
-// Per-worker scratch: weighted sums of far-field horizons for one azimuth over the window.
-struct Accumulator {
-    std::vector<float> sum, weight;
-    DelayedHull hull;
-};
 
 // One near-field step from a texel centre: offset, bilinear weights, 1/distance, curvature drop.
 struct NearStep {
@@ -63,10 +59,18 @@ struct SweepContext {
 };
 
 // Receiver window bounds, inclusive.
-int first_col(const SweepContext& cx) { return cx.win.col0; }
-int last_col(const SweepContext& cx) { return cx.win.col0 + cx.win.width - 1; }
-int first_row(const SweepContext& cx) { return cx.win.row0; }
-int last_row(const SweepContext& cx) { return cx.win.row0 + cx.win.height - 1; }
+int first_col(const SweepContext& cx) {
+    return cx.win.col0;
+}
+int last_col(const SweepContext& cx) {
+    return cx.win.col0 + cx.win.width - 1;
+}
+int first_row(const SweepContext& cx) {
+    return cx.win.row0;
+}
+int last_row(const SweepContext& cx) {
+    return cx.win.row0 + cx.win.height - 1;
+}
 
 // The numbers n of the sweep lines col*sn + G(row)*cs = n*h that can pass through the
 // receiver window (the invariant is linear in col and G, so its extremes are at the window's
@@ -78,6 +82,16 @@ std::pair<long, long> line_numbers(const SweepContext& cx, double cs, double sn,
                      invariant(last_col(cx), last_row(cx))})
         i_min = std::min(i_min, v), i_max = std::max(i_max, v);
     return {long(std::floor(i_min / h)) - 1, long(std::ceil(i_max / h)) + 1};
+}
+
+// The spacing h of the lines n: col*sn + G(row)*cs = n*h. Column sweeps: at most 1/lpt rows
+// apart at fixed col (closer where rho is larger: rows near a pole on a global grid). Row
+// sweeps: 1/lpt columns apart.
+double column_line_spacing(const SweepContext& cx, double cs) {
+    return cx.metrics.min_rho() * std::abs(cs) / cx.lines_per_texel;
+}
+double row_line_spacing(const SweepContext& cx, double sn) {
+    return std::abs(sn) / cx.lines_per_texel;
 }
 
 // Far-field horizon (its tangent) of a line sample at distance s with height z, then queue the
@@ -134,7 +148,7 @@ void add_segment_blockers(DelayedHull& hull, const terrain::HeightGrid& g, doubl
 
 // Adds a line sample's horizon to the texels it lies between. `across` is the fractional
 // texel coordinate across the sweep (row for column sweeps, col for row sweeps).
-inline void splat(Accumulator& acc, const SweepContext& cx, bool across_is_row, int along, double across, float slope,
+inline void splat(FarFieldSums& acc, const SweepContext& cx, bool across_is_row, int along, double across, float slope,
                   double spacing) {
     if (std::isnan(slope)) return;
     const int t0 = int(std::floor(across));
@@ -152,20 +166,19 @@ inline void splat(Accumulator& acc, const SweepContext& cx, bool across_is_row, 
 }
 
 // Lines sampled at every integer column (|d col| >= |d row| along the line).
-void sweep_columns(const SweepContext& cx, double phi, Accumulator& acc) {
+void sweep_columns(const SweepContext& cx, double phi, long n_begin, long n_end, FarFieldSums& acc) {
     const auto& g = cx.grid;
     const double cs = std::cos(phi), sn = std::sin(phi);
     // Line n: col*sn + G(row)*cs = n*h, h chosen so lines are at most 1/lpt rows apart at fixed
     // col (closer where rho is larger: rows near a pole on a global grid).
-    const double h = cx.metrics.min_rho() * std::abs(cs) / cx.lines_per_texel;
-    const auto [n_min, n_max] = line_numbers(cx, cs, sn, h);
+    const double h = column_line_spacing(cx, cs);
     // Blockers lie towards +phi; walk from there so they are behind.
     const int step = cs > 0 ? -1 : 1;
     const int c_start = cs > 0 ? g.width - 1 : 0;
     // Stop past the window: nothing left to receive.
     const int c_stop = cs > 0 ? first_col(cx) - 1 : last_col(cx) + 1;
     const double gmax = cx.metrics.g_max();
-    for (long n = n_min; n <= n_max; ++n) {
+    for (long n = n_begin; n < n_end; ++n) {
         acc.hull.clear();
         double s = 0, prev_row = -1;
         bool started = false;
@@ -195,16 +208,15 @@ void sweep_columns(const SweepContext& cx, double phi, Accumulator& acc) {
 }
 
 // Lines sampled at every integer row.
-void sweep_rows(const SweepContext& cx, double phi, Accumulator& acc) {
+void sweep_rows(const SweepContext& cx, double phi, long n_begin, long n_end, FarFieldSums& acc) {
     const auto& g = cx.grid;
     const double cs = std::cos(phi), sn = std::sin(phi);
-    const double h = std::abs(sn) / cx.lines_per_texel;  // lines 1/lpt columns apart
-    const auto [n_min, n_max] = line_numbers(cx, cs, sn, h);
+    const double h = row_line_spacing(cx, sn);
     // North (sn > 0) is towards row 0: blockers at smaller rows, so walk rows upwards.
     const int step = sn > 0 ? 1 : -1;
     const int r_start = sn > 0 ? 0 : g.height - 1;
     const int r_stop = sn > 0 ? last_row(cx) + 1 : first_row(cx) - 1;
-    for (long n = n_min; n <= n_max; ++n) {
+    for (long n = n_begin; n < n_end; ++n) {
         acc.hull.clear();
         double s = 0, prev_col = -1;
         bool started = false;
@@ -234,80 +246,145 @@ void sweep_rows(const SweepContext& cx, double phi, Accumulator& acc) {
 
 }  // namespace
 
-HorizonSet exact_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
-    const RowMetrics metrics(grid);
-    const ReceiverWindow win = resolve_window(grid, options.window);
-    HorizonSet out = zero_horizons(win, options.directions);
-    const SweepContext cx{grid, metrics, win, curvature_factor(options.curvature),
-                          std::max(1, options.exact_lines_per_texel)};
+ExactAzimuthSweep::ExactAzimuthSweep(const terrain::HeightGrid& grid, const HorizonOptions& options)
+    : grid_(grid),
+      metrics_(grid),
+      win_(resolve_window(grid, options.window)),
+      curvature_(curvature_factor(options.curvature)),
+      lines_per_texel_(std::max(1, options.exact_lines_per_texel)),
+      z_top_(highest_height(grid)) {
     // The near field in metres: near_field_texels of the grid's smallest spacing.
     double unit = std::numeric_limits<double>::infinity();
-    for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics.dx(r), metrics.dy(r)});
-    const double near_m = std::max(0.0, options.exact_near_field_texels) * unit;
-    const float z_top = highest_height(grid);
-    const int workers = std::min(thread_count(options.threads), options.directions);
-    std::vector<Accumulator> scratch;
-    for (int w = 0; w < workers; ++w) scratch.push_back({{}, {}, DelayedHull(near_m)});
-    parallel_for(options.directions, workers, [&](int d, int worker) {
-        Accumulator& acc = scratch[std::size_t(worker)];
-        acc.sum.assign(out.texels(), 0.0f);
-        acc.weight.assign(out.texels(), 0.0f);
-        const double phi = azimuth_rad(d, options.directions);
-        const double cs = std::cos(phi), sn = std::sin(phi);
-        // Sample along the axis the line crosses fastest, so samples are <= 1 texel apart.
-        if (std::abs(cs) >= std::abs(sn) / metrics.mean_rho())
-            sweep_columns(cx, phi, acc);
-        else
-            sweep_rows(cx, phi, acc);
-        float* plane = out.plane(d);
-        std::vector<NearStep> near_steps;
-        const double wmax = grid.width - 1, hmax = grid.height - 1;
-        for (int lr = 0; lr < win.height; ++lr) {
-            const int row = win.row0 + lr;
-            // Near-field steps as the reference takes them (1/4 texel); over a few texels the
-            // row's spacing is constant to 1e-5, so the steps are set up once per row. Since the
-            // receivers are texel centres, every texel of the row shares each step's integer
-            // offset and bilinear weights.
-            const double dx = metrics.dx(row), dy = metrics.dy(row), ds = kMarchStepTexels * std::min(dx, dy);
-            const double dc = cs * ds / dx, dr = -sn * ds / dy;
-            const int steps = near_m > 0 ? int(near_m / ds + 1e-9) : 0;
-            near_steps.resize(std::size_t(steps));
-            for (int k = 1; k <= steps; ++k) {
-                NearStep& st = near_steps[std::size_t(k - 1)];
-                st.dcol = k * dc;
-                st.drow = k * dr;
-                st.col0 = int(std::floor(st.dcol));
-                st.row0 = int(std::floor(st.drow));
-                const float fc = float(st.dcol - st.col0), fr = float(st.drow - st.row0);
-                st.w00 = (1 - fc) * (1 - fr), st.w10 = fc * (1 - fr), st.w01 = (1 - fc) * fr, st.w11 = fc * fr;
-                st.inv_s = 1.0 / (k * ds);
-                st.drop = cx.curvature * k * ds;
+    for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics_.dx(r), metrics_.dy(r)});
+    near_m_ = std::max(0.0, options.exact_near_field_texels) * unit;
+    // Per-tile tops dilated by one tile, when the near field fits (exact_azimuth.hpp). The
+    // march moves at most near_field_texels texels along each axis (each step is a quarter of
+    // the smaller spacing), and its bilinear corners one more.
+    if (std::ceil(std::max(0.0, options.exact_near_field_texels)) + 2 <= kTile) {
+        tiles_x_ = (grid.width + kTile - 1) / kTile;
+        const int tiles_y = (grid.height + kTile - 1) / kTile;
+        std::vector<float> top(std::size_t(tiles_x_) * tiles_y, -std::numeric_limits<float>::infinity());
+        for (int r = 0; r < grid.height; ++r)
+            for (int c = 0; c < grid.width; ++c) {
+                const float v = grid.at(c, r);
+                float& t = top[std::size_t(r / kTile) * tiles_x_ + c / kTile];
+                if (v > t) t = v;  // NaN (void) never compares greater
             }
-            const float* z = grid.z.data();
-            const int w = grid.width;
-            for (int lc = 0; lc < win.width; ++lc) {
-                const std::size_t i = std::size_t(lr) * win.width + lc;
-                const int col = win.col0 + lc;
-                const float z0 = grid.at(col, row);
-                if (std::isnan(z0)) continue;  // void receiver: NaN from the dispatcher
-                double best = acc.weight[i] > 0 ? double(acc.sum[i] / acc.weight[i]) : ProfileHull::kNone;
-                for (const NearStep& st : near_steps) {
-                    const double c = col + st.dcol, r = row + st.drow;
-                    if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
-                    if ((double(z_top) - z0) * st.inv_s - st.drop <= best) break;  // exact early exit
-                    const int c0 = col + st.col0, r0 = row + st.row0;
-                    float zs = kNoHeight;
-                    if (c0 >= 0 && r0 >= 0 && c0 + 1 < w && r0 + 1 < grid.height) {
-                        const float* p = z + std::size_t(r0) * w + c0;
-                        zs = st.w00 * p[0] + st.w10 * p[1] + st.w01 * p[w] + st.w11 * p[w + 1];
-                    }
-                    if (std::isnan(zs))  // a void corner or the grid's last row/column
-                        zs = bilinear_valid(z, w, grid.height, std::clamp(c, 0.0, wmax), std::clamp(r, 0.0, hmax));
-                    if (!std::isnan(zs)) best = std::max(best, (double(zs) - z0) * st.inv_s - st.drop);
-                }
-                plane[i] = best == ProfileHull::kNone ? 0.0f : float(fast_atan(best));
+        block_top_.assign(top.size(), -std::numeric_limits<float>::infinity());
+        for (int ty = 0; ty < tiles_y; ++ty)
+            for (int tx = 0; tx < tiles_x_; ++tx) {
+                float m = -std::numeric_limits<float>::infinity();
+                for (int y = std::max(0, ty - 1); y <= std::min(tiles_y - 1, ty + 1); ++y)
+                    for (int x = std::max(0, tx - 1); x <= std::min(tiles_x_ - 1, tx + 1); ++x)
+                        m = std::max(m, top[std::size_t(y) * tiles_x_ + x]);
+                block_top_[std::size_t(ty) * tiles_x_ + tx] = m;
             }
+    }
+}
+
+SweepPlan ExactAzimuthSweep::plan(double phi) const {
+    const SweepContext cx{grid_, metrics_, win_, curvature_, lines_per_texel_};
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    SweepPlan p;
+    p.phi = phi;
+    // Sample along the axis the line crosses fastest, so samples are <= 1 texel apart.
+    p.along_columns = std::abs(cs) >= std::abs(sn) / metrics_.mean_rho();
+    const double h = p.along_columns ? column_line_spacing(cx, cs) : row_line_spacing(cx, sn);
+    std::tie(p.n_min, p.n_max) = line_numbers(cx, cs, sn, h);
+    return p;
+}
+
+FarFieldSums ExactAzimuthSweep::make_sums() const {
+    FarFieldSums s{{}, {}, DelayedHull(near_m_)};
+    s.sum.assign(texels(), 0.0f);
+    s.weight.assign(texels(), 0.0f);
+    return s;
+}
+
+void ExactAzimuthSweep::sweep_far_field(const SweepPlan& plan, long n_begin, long n_end, FarFieldSums& sums) const {
+    const SweepContext cx{grid_, metrics_, win_, curvature_, lines_per_texel_};
+    n_begin = std::max(n_begin, plan.n_min);
+    n_end = std::min(n_end, plan.n_max + 1);
+    if (plan.along_columns)
+        sweep_columns(cx, plan.phi, n_begin, n_end, sums);
+    else
+        sweep_rows(cx, plan.phi, n_begin, n_end, sums);
+}
+
+void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* weight, int lr_begin, int lr_end,
+                                    float* plane, double band_lo, double band_hi) const {
+    const auto& grid = grid_;
+    const auto& metrics = metrics_;
+    const auto& win = win_;
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    const double near_m = near_m_;
+    std::vector<NearStep> near_steps;
+    const double wmax = grid.width - 1, hmax = grid.height - 1;
+    for (int lr = lr_begin; lr < lr_end; ++lr) {
+        const int row = win.row0 + lr;
+        // Near-field steps as the reference takes them (1/4 texel); over a few texels the
+        // row's spacing is constant to 1e-5, so the steps are set up once per row. Since the
+        // receivers are texel centres, every texel of the row shares each step's integer
+        // offset and bilinear weights.
+        const double dx = metrics.dx(row), dy = metrics.dy(row), ds = kMarchStepTexels * std::min(dx, dy);
+        const double dc = cs * ds / dx, dr = -sn * ds / dy;
+        const int steps = near_m > 0 ? int(near_m / ds + 1e-9) : 0;
+        near_steps.resize(std::size_t(steps));
+        for (int k = 1; k <= steps; ++k) {
+            NearStep& st = near_steps[std::size_t(k - 1)];
+            st.dcol = k * dc;
+            st.drow = k * dr;
+            st.col0 = int(std::floor(st.dcol));
+            st.row0 = int(std::floor(st.drow));
+            const float fc = float(st.dcol - st.col0), fr = float(st.drow - st.row0);
+            st.w00 = (1 - fc) * (1 - fr), st.w10 = fc * (1 - fr), st.w01 = (1 - fc) * fr, st.w11 = fc * fr;
+            st.inv_s = 1.0 / (k * ds);
+            st.drop = curvature_ * k * ds;
         }
+        const float* z = grid.z.data();
+        const int w = grid.width;
+        for (int lc = 0; lc < win.width; ++lc) {
+            const std::size_t i = std::size_t(lr) * win.width + lc;
+            const int col = win.col0 + lc;
+            const float z0 = grid.at(col, row);
+            if (std::isnan(z0)) continue;  // void receiver: NaN from the dispatcher
+            const float z_top = near_top(col, row);
+            double best = weight[i] > 0 ? double(sum[i] / weight[i]) : ProfileHull::kNone;
+            for (const NearStep& st : near_steps) {
+                const double c = col + st.dcol, r = row + st.drow;
+                if (best >= band_hi) break;  // above the band whatever follows
+                if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
+                // Exact early exit: even the highest point in reach cannot raise the horizon
+                // (into the band).
+                if ((double(z_top) - z0) * st.inv_s - st.drop <= std::max(best, band_lo)) break;
+                const int c0 = col + st.col0, r0 = row + st.row0;
+                float zs = kNoHeight;
+                if (c0 >= 0 && r0 >= 0 && c0 + 1 < w && r0 + 1 < grid.height) {
+                    const float* p = z + std::size_t(r0) * w + c0;
+                    zs = st.w00 * p[0] + st.w10 * p[1] + st.w01 * p[w] + st.w11 * p[w + 1];
+                }
+                if (std::isnan(zs))  // a void corner or the grid's last row/column
+                    zs = bilinear_valid(z, w, grid.height, std::clamp(c, 0.0, wmax), std::clamp(r, 0.0, hmax));
+                if (!std::isnan(zs)) best = std::max(best, (double(zs) - z0) * st.inv_s - st.drop);
+            }
+            plane[i] = best == ProfileHull::kNone ? 0.0f : float(fast_atan(best));
+        }
+    }
+}
+
+HorizonSet exact_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
+    const ExactAzimuthSweep sweep(grid, options);
+    HorizonSet out = zero_horizons(sweep.window(), options.directions);
+    const int workers = std::min(thread_count(options.threads), options.directions);
+    std::vector<FarFieldSums> scratch;
+    for (int w = 0; w < workers; ++w) scratch.push_back(sweep.make_sums());
+    parallel_for(options.directions, workers, [&](int d, int worker) {
+        FarFieldSums& acc = scratch[std::size_t(worker)];
+        std::fill(acc.sum.begin(), acc.sum.end(), 0.0f);
+        std::fill(acc.weight.begin(), acc.weight.end(), 0.0f);
+        const SweepPlan plan = sweep.plan(azimuth_rad(d, options.directions));
+        sweep.sweep_far_field(plan, plan.n_min, plan.n_max + 1, acc);
+        sweep.finish_rows(plan.phi, acc.sum.data(), acc.weight.data(), 0, out.height, out.plane(d));
         if (options.progress) options.progress->advance(out.texels());
     });
     return out;

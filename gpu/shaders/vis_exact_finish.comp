@@ -14,6 +14,10 @@ layout(std430, set = 0, binding = 0) readonly buffer Heights { float z[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Rows { RowInfo rows[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Far { FarEntry far[]; };
 layout(std430, set = 0, binding = 3) buffer Horizons { float horizon[]; };  // [d][row][col] of the window
+// The highest height of the 3 x 3 blocks of kTopTile x kTopTile texels around each block
+// (host-made, as the CPU's ExactAzimuthSweep::near_top): the near field's exact early exit.
+layout(std430, set = 0, binding = 7) readonly buffer BlockTop { float block_top[]; };  // [tile row][tile col]
+const int kTopTile = 16;
 
 layout(push_constant) uniform Push {
     int width, height;
@@ -23,10 +27,14 @@ layout(push_constant) uniform Push {
     int total_lines;
     int d;
     float cs, sn, h, curvature, z_top, row_spacing;
+    int tiles_x;  // blocks across block_top; 0: no block tops (near field too long), use z_top
 } p;
 
 #define GRID_W p.width
 #define GRID_H p.height
+#define HEIGHTS_BINDING_1 4
+#define HEIGHTS_BINDING_2 5
+#define HEIGHTS_BINDING_3 6
 #include "gpu/visibility/vis_surface.glsl"
 
 const float kMarchStepTexels = 0.25;
@@ -67,10 +75,11 @@ void main() {
     float dc = p.cs * ds / rm.dx, dr = -p.sn * ds / rm.dy;
     int steps = int(rm.near_steps);
     float wmax = float(p.width - 1), hmax = float(p.height - 1);
+    float z_top = p.tiles_x > 0 ? block_top[(row / kTopTile) * p.tiles_x + col / kTopTile] : p.z_top;
     for (int k = 1; k <= steps; ++k) {
         float c = float(col) + float(k) * dc, r = float(row) + float(k) * dr, sk = float(k) * ds;
         if (c < -1e-5 || r < -1e-5 || c > wmax + 1e-5 || r > hmax + 1e-5) break;
-        if ((p.z_top - z0) / sk - p.curvature * sk <= best) break;  // exact early exit
+        if ((z_top - z0) / sk - p.curvature * sk <= best) break;  // exact early exit
         // Offsets from the texel itself keep the position exact (clamped onto the grid).
         float oc = clamp(float(k) * dc, -float(col), wmax - float(col));
         float orow = clamp(float(k) * dr, -float(row), hmax - float(row));

@@ -45,6 +45,9 @@ layout(push_constant) uniform Push {
 
 #define GRID_W p.width
 #define GRID_H p.height
+#define HEIGHTS_BINDING_1 6
+#define HEIGHTS_BINDING_2 7
+#define HEIGHTS_BINDING_3 8
 #include "gpu/visibility/vis_surface.glsl"
 
 const float kMinCrossing = 1e-3;

@@ -59,6 +59,7 @@ SplitDouble split_double(double v) {
 struct FinishPush {
     std::int32_t width, height, col0, row0, win_w, win_h, columns, n_min, total_lines, d;
     float cs, sn, h, curvature, z_top, row_spacing;
+    std::int32_t tiles_x;
 };
 struct LogShPush {
     std::uint32_t texels;
@@ -72,7 +73,7 @@ struct SkyPush {
 
 constexpr std::uint32_t kLineGroup = 64;  // local_size_x of vis_exact_sweep.comp
 constexpr std::uint32_t kTexelGroup = 64;  // vis_log_sh, vis_sky
-constexpr std::uint32_t kTile = 8;         // vis_exact_finish is 8 x 8
+constexpr std::uint32_t kTileW = 8, kTileH = 8;  // vis_exact_finish is 8 x 8
 constexpr VkDeviceSize kHullBudget = VkDeviceSize(64) << 20;  // scratch for the lines' hulls
 
 // One azimuth's set of sweep lines over a receiver window, computed in double exactly as
@@ -157,11 +158,23 @@ SweepPlan plan_sweep(const terrain::HeightGrid& g, const vis::RowMetrics& m, con
     return p;
 }
 
+// How the heights are split by rows into storage buffers (vis_surface.glsl's height_at).
+constexpr int kMaxHeightParts = 4;
+struct HeightParts {
+    int parts = 1, rows_per_part = 0;
+};
+
 struct Kernels {
     Kernel sweep, finish, log_sh, sky;
-    explicit Kernels(const Context& c)
-        : sweep(c, "vis_exact_sweep", {.storage_buffers = 6, .push_constant_bytes = sizeof(SweepPush)}),
-          finish(c, "vis_exact_finish", {.storage_buffers = 4, .push_constant_bytes = sizeof(FinishPush)}),
+    Kernels(const Context& c, const HeightParts& hp)
+        : sweep(c, "vis_exact_sweep",
+                {.storage_buffers = 6 + kMaxHeightParts - 1,
+                 .push_constant_bytes = sizeof(SweepPush),
+                 .specialization = {std::uint32_t(hp.parts), std::uint32_t(hp.rows_per_part)}}),
+          finish(c, "vis_exact_finish",
+                 {.storage_buffers = 4 + kMaxHeightParts - 1 + 1,
+                  .push_constant_bytes = sizeof(FinishPush),
+                  .specialization = {std::uint32_t(hp.parts), std::uint32_t(hp.rows_per_part)}}),
           log_sh(c, "vis_log_sh", {.storage_buffers = 3, .push_constant_bytes = sizeof(LogShPush)}),
           sky(c, "vis_sky", {.storage_buffers = 3, .push_constant_bytes = sizeof(SkyPush)}) {}
 };
@@ -202,11 +215,17 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     if (options.log_sh && ho.directions < 4)
         throw InputError("--sh: needs at least 4 directions, got " + std::to_string(ho.directions));
     const VkDeviceSize range = context.limits().maxStorageBufferRange;
-    const VkDeviceSize grid_bytes = VkDeviceSize(grid.z.size()) * sizeof(float);
-    if (grid_bytes > range)
+    const VkDeviceSize height_range =
+        options.max_height_buffer_bytes > 0 ? std::min<VkDeviceSize>(range, options.max_height_buffer_bytes) : range;
+    // Heights: whole rows per storage buffer, at most kMaxHeightParts buffers.
+    HeightParts hp;
+    hp.rows_per_part = int(std::min<VkDeviceSize>(VkDeviceSize(grid.height),
+                                                  height_range / (VkDeviceSize(grid.width) * sizeof(float))));
+    if (hp.rows_per_part < 1 || (grid.height + hp.rows_per_part - 1) / hp.rows_per_part > kMaxHeightParts)
         throw InputError("height grid: " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
-                         " does not fit one GPU storage buffer (" + std::to_string(range >> 20) +
-                         " MiB); crop it or use --cpu");
+                         " needs more than " + std::to_string(kMaxHeightParts) + " GPU storage buffers of " +
+                         std::to_string(height_range >> 20) + " MiB; crop it or use --cpu");
+    hp.parts = (grid.height + hp.rows_per_part - 1) / hp.rows_per_part;
 
     const vis::RowMetrics metrics(grid);
     const vis::ReceiverWindow win = vis::resolve_window(grid, ho.window);
@@ -217,6 +236,31 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics.dx(r), metrics.dy(r)});
     const double near_m = std::max(0.0, ho.exact_near_field_texels) * unit;
     const float z_top = vis::highest_height(grid);
+    // The near field's early exit: the top of the 3 x 3 blocks of kTopTile texels around each
+    // block (as the CPU's ExactAzimuthSweep), when the march and its bilinear corners stay inside.
+    constexpr int kTopTile = 16;  // vis_exact_finish.comp
+    int tiles_x = 0;
+    std::vector<float> block_top(1, z_top);
+    if (std::ceil(std::max(0.0, ho.exact_near_field_texels)) + 2 <= kTopTile) {
+        tiles_x = (grid.width + kTopTile - 1) / kTopTile;
+        const int tiles_y = (grid.height + kTopTile - 1) / kTopTile;
+        std::vector<float> top(std::size_t(tiles_x) * std::size_t(tiles_y), -std::numeric_limits<float>::infinity());
+        for (int r = 0; r < grid.height; ++r)
+            for (int c = 0; c < grid.width; ++c) {
+                const float v = grid.at(c, r);
+                float& t = top[std::size_t(r / kTopTile) * std::size_t(tiles_x) + std::size_t(c / kTopTile)];
+                if (v > t) t = v;  // a void (NaN) never compares greater
+            }
+        block_top.assign(top.size(), -std::numeric_limits<float>::infinity());
+        for (int ty = 0; ty < tiles_y; ++ty)
+            for (int tx = 0; tx < tiles_x; ++tx) {
+                float m = -std::numeric_limits<float>::infinity();
+                for (int y = std::max(0, ty - 1); y <= std::min(tiles_y - 1, ty + 1); ++y)
+                    for (int x = std::max(0, tx - 1); x <= std::min(tiles_x - 1, tx + 1); ++x)
+                        m = std::max(m, top[std::size_t(y) * std::size_t(tiles_x) + std::size_t(x)]);
+                block_top[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)] = m;
+            }
+    }
 
     // Per row: spacing (east-west floored as RowMetrics does), G, and the near field's step
     // count, all in double here so the GPU takes the CPU's decisions.
@@ -271,12 +315,23 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
                 i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * 3.14159265358979323846 / directions));
         }
 
-    const Kernels kernels(context);
+    const Kernels kernels(context, hp);
     const auto wall_start = std::chrono::steady_clock::now();
     Batch batch(context);
-    const Buffer heights = batch.upload_new(grid.z);
+    std::vector<Buffer> height_parts;
+    for (int i = 0; i < hp.parts; ++i) {
+        const std::size_t first = std::size_t(i) * std::size_t(hp.rows_per_part) * std::size_t(grid.width);
+        const std::size_t count =
+            std::min(std::size_t(hp.rows_per_part), std::size_t(grid.height - i * hp.rows_per_part)) *
+            std::size_t(grid.width);
+        height_parts.push_back(batch.upload_new(grid.z.subspan(first, count)));
+    }
+    const Buffer& heights = height_parts[0];
+    // Parts 1..3 as the shaders bind them (part 0 again where a part does not exist).
+    auto part = [&](int i) -> const Buffer& { return i < hp.parts ? height_parts[std::size_t(i)] : heights; };
     const Buffer row_buffer = batch.upload_new(std::span<const RowInfo>(rows));
     const Buffer weight_buffer = batch.upload_new(std::span<const float>(slice_weights));
+    const Buffer top_buffer = batch.upload_new(std::span<const float>(block_top));
     batch.mark("upload");
     batch.submit_and_wait();
     add_stage_times(result.stages, batch);
@@ -336,10 +391,11 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
                                          mult.lo,
                                          inv.hi,
                                          inv.lo};
-                    batch.dispatch(kernels.sweep, {heights, row_buffer, hull, far, span_buffer, states}, push,
+                    batch.dispatch(kernels.sweep, {heights, row_buffer, hull, far, span_buffer, states, part(1), part(2), part(3)}, push,
                                    groups_for(std::uint64_t(n), kLineGroup));
                 }
             }
+            batch.mark("sweep");
             const FinishPush push{grid.width,
                                   grid.height,
                                   band.col0,
@@ -355,11 +411,17 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
                                   float(p.h),
                                   float(curvature),
                                   z_top,
-                                  float(1.0 / lpt)};
-            batch.dispatch(kernels.finish, {heights, row_buffer, far, horizons}, push,
-                           groups_for(std::uint64_t(band.width), std::uint64_t(band.height), kTile, kTile));
+                                  float(1.0 / lpt),
+                                  tiles_x};
+            batch.dispatch(kernels.finish, {heights, row_buffer, far, horizons, part(1), part(2), part(3), top_buffer}, push,
+                           groups_for(std::uint64_t(band.width), std::uint64_t(band.height), kTileW, kTileH));
+            batch.mark("finish");
+            // Two marks per azimuth and at most 63 per batch: submit every 24 azimuths.
+            if ((d + 1) % 24 == 0 && d + 1 < directions) {
+                batch.submit_and_wait();
+                add_stage_times(result.stages, batch);
+            }
         }
-        batch.mark("horizons");
 
         std::vector<float> band_horizons(band_texels * std::size_t(directions));
         std::vector<float> band_sh, band_svf, band_sky;

@@ -7,9 +7,10 @@
 //   auto r = gpu::visibility::compute(context, grid, {.horizon = {.directions = 32}});
 //   // r.horizons, r.log_sh, r.svf, r.sky_visible as the CPU functions return them
 //
-// Heights and per-row spacing live whole on the device (blockers are read across tiles), so
-// the grid must fit one storage buffer (maxStorageBufferRange: 128 MiB = 33.5 M texels on
-// lavapipe). Receivers are processed in bands of rows small enough for each stage's buffers;
+// Heights and per-row spacing live whole on the device (every line of a sweep crosses the whole
+// grid, so blockers are read from anywhere), split by rows into at most 4 storage buffers
+// (maxStorageBufferRange: 128 MiB = 33.5 M texels each on lavapipe, so 134 M texels in all).
+// Receivers are processed in bands of rows small enough for each stage's buffers;
 // a band's result equals the same rows of a whole-window run (tested bit for bit). Each
 // azimuth's lines are swept in passes of 128 samples (llvmpipe ends an invocation's loops after
 // 65535 iterations in all), and at most 2048 directions are taken.
@@ -34,6 +35,10 @@ struct Options {
     // Upper bound on the rows of receivers per band (0 = as many as the buffers allow); tests
     // set it small to check that bands join seamlessly.
     int max_band_rows = 0;
+    // Upper bound on the bytes of one buffer of heights (0 = the device's maxStorageBufferRange):
+    // heights larger than it are split by rows into up to 4 buffers. Tests set it small to check
+    // that a split run equals a whole one.
+    std::size_t max_height_buffer_bytes = 0;
 };
 
 struct StageTime {

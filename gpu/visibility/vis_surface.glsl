@@ -3,7 +3,8 @@
 //   struct RowInfo { float dx, dy, g_hi, near_steps, g_lo, dg, pad0, pad1; };
 //   layout(std430, binding = 0) readonly buffer Heights { float z[]; };
 //   layout(std430, binding = 1) readonly buffer Rows { RowInfo rows[]; };
-// and defines GRID_W / GRID_H (the grid's size, ints) before including.
+// and defines GRID_W / GRID_H (the grid's size, ints) and HEIGHTS_BINDING_1..3 (bindings of the
+// other height parts, see height_at) before including.
 // Same rules as the CPU: a void (NaN) neither blocks nor receives; bilinear over valid corners
 // with renormalised weights; rows' east-west spacing already floored (RowMetrics::kMinAspect).
 //
@@ -21,7 +22,26 @@ float lerp_valid(float a, float b, float t) {
     return kNaN;
 }
 
-float height_at(int c, int r) { return z[r * GRID_W + c]; }
+// Heights of the whole grid, row-major, split by rows into kHeightParts storage buffers of
+// kRowsPerPart rows each (so a grid larger than maxStorageBufferRange still fits): part 0 is
+// `z` at binding 0, parts 1..3 at HEIGHTS_BINDING_1..3 (the shader defines them; the host binds
+// part 0 again where a part does not exist). Specialization constants: with one part the
+// compiler drops the selection.
+layout(constant_id = 0) const int kHeightParts = 1;
+layout(constant_id = 1) const int kRowsPerPart = 1073741824;
+layout(std430, set = 0, binding = HEIGHTS_BINDING_1) readonly buffer Heights1 { float z1[]; };
+layout(std430, set = 0, binding = HEIGHTS_BINDING_2) readonly buffer Heights2 { float z2[]; };
+layout(std430, set = 0, binding = HEIGHTS_BINDING_3) readonly buffer Heights3 { float z3[]; };
+
+float height_at(int c, int r) {
+    if (kHeightParts == 1) return z[r * GRID_W + c];
+    int part = r / kRowsPerPart;
+    int i = (r - part * kRowsPerPart) * GRID_W + c;
+    if (part == 0) return z[i];
+    if (part == 1) return z1[i];
+    if (part == 2) return z2[i];
+    return z3[i];
+}
 
 // surface_sampling.hpp's bilinear_valid at (base_col + off_col, base_row + off_row).
 float bilinear_valid_at(int base_col, int base_row, float off_col, float off_row) {

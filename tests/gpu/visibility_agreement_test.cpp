@@ -217,6 +217,28 @@ TEST_F(GpuVisibilityTest, BandsOfRowsJoinIntoTheWholeWindowResult) {
     EXPECT_EQ(whole.svf, banded.svf);
 }
 
+TEST_F(GpuVisibilityTest, HeightsSplitAcrossBuffersEqualTheWholeGridRun) {
+    const GridCrop c = crop_of_file("srtm3_N39E040_1000px.tif", 120);
+    visibility::Options options;
+    options.horizon.directions = 16;
+    const auto whole = visibility::compute(*context_, c.grid, options);
+    // A storage buffer of 45 rows of heights: the heights in 3 buffers (45, 45, 30 rows), as a
+    // grid larger than 128 MiB would be on lavapipe, and the receivers in bands of 50 rows.
+    options.max_height_buffer_bytes = 45 * 120 * sizeof(float);
+    options.max_band_rows = 50;
+    const auto split = visibility::compute(*context_, c.grid, options);
+    EXPECT_EQ(whole.bands, 1);
+    EXPECT_EQ(split.bands, 3);
+    // Same lines, same samples, same arithmetic whichever buffer a height comes from: identical.
+    EXPECT_EQ(whole.horizons.angle, split.horizons.angle);
+    EXPECT_EQ(whole.log_sh, split.log_sh);
+    EXPECT_EQ(whole.svf, split.svf);
+    EXPECT_EQ(whole.sky_visible, split.sky_visible);
+    // Five buffers' worth of rows is more than the GPU path takes: a clear error, not a crash.
+    options.max_height_buffer_bytes = 20 * 120 * sizeof(float);
+    EXPECT_THROW(visibility::compute(*context_, c.grid, options), InputError);
+}
+
 TEST_F(GpuVisibilityTest, ReceiverWindowEqualsTheSameTexelsOfTheWholeGridAndTheCpu) {
     const GridCrop c = crop_of_file("copernicus_N45E005_grenoble_500px.tif", 120);
     visibility::Options options;
@@ -274,6 +296,34 @@ TEST_F(GpuVisibilityTest, OnlyTheExactMethodRunsOnTheGpu) {
     visibility::Options options;
     options.horizon.method = vis::HorizonMethod::pyramid;
     EXPECT_THROW(visibility::compute(*context_, c.grid, options), InputError);
+}
+
+
+// The whole N00E010 tile at D = 32, GPU against CPU, with stage times: the figure the
+// performance work is judged by. Slow on the CPU side (seconds), so not in the default run:
+//   test_gpu_visibility --gtest_also_run_disabled_tests --gtest_filter='*WholeTile*'
+// (TS_GPU_VISIBILITY_SKIP_CPU=1 times the GPU alone).
+TEST_F(GpuVisibilityTest, DISABLED_WholeTileAgreesAndIsTimed) {
+    const dem::Dem dem = dem::read_dem(std::filesystem::path(TS_SHARED_DATA) / "dem" / "N00E010.hgt");
+    const vis::VisibilityGrid full(dem);
+    vis::HorizonOptions options;
+    const char* d_env = std::getenv("TS_GPU_VISIBILITY_DIRECTIONS");
+    options.directions = d_env ? std::atoi(d_env) : 32;
+    const char* reps_env = std::getenv("TS_GPU_VISIBILITY_REPEATS");
+    const int reps = reps_env ? std::max(1, std::atoi(reps_env)) : 2;
+    for (int rep = 0; rep < reps; ++rep) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto gpu = visibility::compute(*context_, full.view(), {.horizon = options});
+        const double gpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("whole tile gpu %.0f ms [device ms: %s]\n", gpu_ms, stage_list(gpu).c_str());
+        if (rep > 0 || std::getenv("TS_GPU_VISIBILITY_SKIP_CPU")) continue;
+        const CpuRun cpu = run_cpu(full.view(), options);
+        const Comparison cmp = compare(cpu, gpu);
+        std::printf("whole tile: horizon max %.1e rms %.1e rad, flips %zu/%zu; svf %.1e sky %.1e log-SH %.1e; cpu %.0f ms\n",
+                    cmp.max_horizon, cmp.rms_horizon, cmp.flips, cmp.compared, cmp.max_svf, cmp.max_sky, cmp.max_sh,
+                    cpu.ms);
+        expect_agreement(cmp);
+    }
 }
 
 }  // namespace

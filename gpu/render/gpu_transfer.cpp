@@ -1,0 +1,220 @@
+#include "gpu/render/gpu_transfer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+
+#include "core/sh/exp_method.hpp"
+#include "core/sh/sh_exp.hpp"
+#include "core/sh/sh_exp_shared.hpp"
+#include "core/util/error.hpp"
+#include "gpu/batch.hpp"
+
+namespace ts::gpu::render {
+namespace {
+
+constexpr VkDeviceSize kCoeffs = 16;
+
+// Mirrors of the shaders' push-constant blocks.
+struct TransferPush {
+    std::uint32_t texels;
+    std::uint32_t stride;
+    std::uint32_t uniform_lobe;
+    float threshold;
+    std::int32_t max_squarings;
+};
+struct ShadePush {
+    std::uint32_t quads;
+    std::uint32_t plane_quads;
+};
+
+// T's planes on the device are padded to whole quads of texels (render_shade.comp shades four
+// texels per invocation with vec4 loads).
+std::size_t padded(std::size_t texels) {
+    return (texels + 3) / 4 * 4;
+}
+
+// The lighting SH as render_shade.comp reads it: one (r, g, b, 0) per coefficient.
+std::array<float, kCoeffs * 4> light_vec4(const std::array<glm::vec3, 16>& light_sh) {
+    std::array<float, kCoeffs * 4> light{};
+    for (std::size_t i = 0; i < kCoeffs; ++i)
+        for (int c = 0; c < 3; ++c) light[4 * i + std::size_t(c)] = light_sh[i][c];
+    return light;
+}
+
+ShadePush shade_push(std::size_t texels) {
+    return {std::uint32_t(padded(texels) / 4), std::uint32_t(padded(texels) / 4)};
+}
+
+constexpr std::uint32_t kGroup = 64;  // local_size_x of both shaders
+// Bands per submit: each adds two timestamp marks, at most Batch::kMaxMarks per submit.
+constexpr std::size_t kBandsPerSubmit = 16;
+
+void add_stage_times(std::vector<StageTime>& total, const Batch& batch) {
+    for (const auto& [label, ms] : batch.stage_times()) {
+        auto it = std::find_if(total.begin(), total.end(), [&](const StageTime& s) { return s.label == label; });
+        if (it == total.end()) total.push_back({label, ms});
+        else it->ms += ms;
+    }
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <typename T>
+std::span<const std::byte> bytes_of(const T* data, std::size_t count) {
+    return std::as_bytes(std::span<const T>(data, count));
+}
+
+}  // namespace
+
+std::size_t max_band_texels(const Context& context) {
+    const VkDeviceSize by_range = context.limits().maxStorageBufferRange / (kCoeffs * sizeof(float));
+    const VkDeviceSize by_groups = VkDeviceSize(context.limits().maxComputeWorkGroupCount[0]) * kGroup;
+    return std::size_t(std::max<VkDeviceSize>(kGroup, std::min(by_range, by_groups) / 4 * 4));
+}
+
+TransferField::TransferField(const Context& context, const ts::render::TransferInputs& in, std::size_t band_texels)
+    : context_(context),
+      transfer_kernel_(context, "render_transfer",
+                       {.storage_buffers = 5, .push_constant_bytes = sizeof(TransferPush)}),
+      shade_kernel_(context, "render_shade", {.storage_buffers = 3, .push_constant_bytes = sizeof(ShadePush)}),
+      texels_(in.texels),
+      light_(context.create_buffer(kCoeffs * 4 * sizeof(float))) {
+    if (in.method != sh::ExpMethod::hybrid)
+        throw InputError("--exp-method " + std::string(sh::to_string(in.method)) +
+                         ": only hybrid runs on the GPU (use --cpu)");
+    if (texels_ == 0) return;
+    if (!in.log_visibility || !in.lobe_axis || !in.lobe_log_zh)
+        throw std::invalid_argument("gpu::render::TransferField: null input array");
+    std::size_t band = max_band_texels(context);
+    if (band_texels > 0) band = std::min(band, band_texels);
+
+    const sh::ExpOptions exp_options;  // the CPU path's hybrid threshold and squaring cap
+    const auto start = std::chrono::steady_clock::now();
+    stages_.clear();
+    Batch batch(context);
+    static_assert(sizeof(sh::exp_shared::TsLinearRow) == 3 * sizeof(float));
+    const Buffer linear_table = batch.upload_new(std::span<const sh::exp_shared::TsLinearRow>(
+        sh::exp_shared::kTsLinearTable, std::size_t(TS_LINEAR_ROWS)));
+    Buffer uniform_zh;
+    if (in.uniform_lobe) {
+        uniform_zh = context.create_buffer(4 * sizeof(float));
+        batch.upload(uniform_zh, bytes_of(in.lobe_log_zh, 4));
+    }
+    for (std::size_t first = 0; first < texels_; first += band) {
+        const std::size_t n = std::min(band, texels_ - first);
+        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float)),
+               context.create_buffer(padded(n) * 3 * sizeof(float))};
+        // The band's inputs live until this band's submit.
+        const Buffer log_vis = context.create_buffer(n * kCoeffs * sizeof(float));
+        const Buffer axis = context.create_buffer(n * 3 * sizeof(float));
+        Buffer zh;
+        for (VkDeviceSize i = 0; i < kCoeffs; ++i)
+            batch.upload(log_vis, bytes_of(in.log_visibility + i * texels_ + first, n), i * n * sizeof(float));
+        batch.upload(axis, bytes_of(in.lobe_axis + 3 * first, 3 * n));
+        if (!in.uniform_lobe) {
+            zh = context.create_buffer(n * 4 * sizeof(float));
+            batch.upload(zh, bytes_of(in.lobe_log_zh + 4 * first, 4 * n));
+        }
+        if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
+        batch.mark("upload");
+        batch.dispatch(transfer_kernel_, {log_vis, axis, in.uniform_lobe ? uniform_zh : zh, b.transfer, linear_table},
+                       TransferPush{std::uint32_t(n), std::uint32_t(padded(n)), in.uniform_lobe ? 1u : 0u,
+                                    exp_options.hybrid_threshold, exp_options.max_squarings},
+                       groups_for(n, kGroup));
+        batch.mark("transfer");
+        batch.submit_and_wait();
+        add_stage_times(stages_, batch);
+        bands_.push_back(std::move(b));
+    }
+    wall_ms_ = ms_since(start);
+}
+
+void TransferField::download(float* transfer_out) {
+    stages_.clear();
+    if (texels_ == 0) return;
+    const auto start = std::chrono::steady_clock::now();
+    Batch batch(context_);
+    for (std::size_t k = 0; k < bands_.size(); ++k) {
+        const Band& b = bands_[k];
+        for (VkDeviceSize i = 0; i < kCoeffs; ++i)
+            batch.download(b.transfer, std::span<float>(transfer_out + i * texels_ + b.first, b.texels),
+                           i * padded(b.texels) * sizeof(float));
+        batch.mark("download");
+        if ((k + 1) % kBandsPerSubmit == 0) {
+            batch.submit_and_wait();
+            add_stage_times(stages_, batch);
+        }
+    }
+    batch.submit_and_wait();
+    add_stage_times(stages_, batch);
+    wall_ms_ = ms_since(start);
+}
+
+void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) {
+    stages_.clear();
+    if (texels_ == 0) return;
+    const auto start = std::chrono::steady_clock::now();
+    const auto light = light_vec4(light_sh);
+    Batch batch(context_);
+    batch.upload(light_, std::span<const float>(light.data(), light.size()));
+    batch.mark("light");
+    for (std::size_t k = 0; k < bands_.size(); ++k) {
+        const Band& b = bands_[k];
+        batch.dispatch(shade_kernel_, {b.transfer, light_, b.rgb}, shade_push(b.texels),
+                       groups_for(padded(b.texels) / 4, kGroup));
+        batch.mark("shade");
+        batch.download(b.rgb, std::span<glm::vec3>(rgb_out + b.first, b.texels));
+        batch.mark("download");
+        if ((k + 1) % kBandsPerSubmit == 0) {
+            batch.submit_and_wait();
+            add_stage_times(stages_, batch);
+        }
+    }
+    batch.submit_and_wait();
+    add_stage_times(stages_, batch);
+    wall_ms_ = ms_since(start);
+}
+
+std::vector<StageTime> transfer_vectors(const Context& context, const ts::render::TransferInputs& inputs,
+                                        float* transfer_out) {
+    TransferField field(context, inputs);
+    std::vector<StageTime> stages = field.stages();
+    field.download(transfer_out);
+    stages.insert(stages.end(), field.stages().begin(), field.stages().end());
+    return stages;
+}
+
+std::vector<StageTime> shade_transfer(const Context& context, const float* transfer, std::size_t texels,
+                                      const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) {
+    std::vector<StageTime> stages;
+    if (texels == 0) return stages;
+    const Kernel kernel(context, "render_shade", {.storage_buffers = 3, .push_constant_bytes = sizeof(ShadePush)});
+    const std::size_t band = max_band_texels(context);
+    const auto light = light_vec4(light_sh);
+    Batch batch(context);
+    const Buffer light_buffer = batch.upload_new(std::span<const float>(light.data(), light.size()));
+    for (std::size_t first = 0; first < texels; first += band) {
+        const std::size_t n = std::min(band, texels - first);
+        const Buffer t = context.create_buffer(padded(n) * kCoeffs * sizeof(float));
+        const Buffer rgb = context.create_buffer(padded(n) * 3 * sizeof(float));
+        if (padded(n) != n) batch.fill(t);  // the quad's spare texels: zeros, not stale memory
+        for (VkDeviceSize i = 0; i < kCoeffs; ++i)
+            batch.upload(t, bytes_of(transfer + i * texels + first, n), i * padded(n) * sizeof(float));
+        batch.mark("upload");
+        batch.dispatch(kernel, {t, light_buffer, rgb}, shade_push(n), groups_for(padded(n) / 4, kGroup));
+        batch.mark("shade");
+        batch.download(rgb, std::span<glm::vec3>(rgb_out + first, n));
+        batch.mark("download");
+        batch.submit_and_wait();
+        add_stage_times(stages, batch);
+    }
+    return stages;
+}
+
+}  // namespace ts::gpu::render

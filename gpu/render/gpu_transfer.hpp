@@ -1,0 +1,83 @@
+#pragma once
+// The transfer stage on the GPU (core/render/transfer.hpp's two steps, same layouts):
+//   transfer vectors T = exp_SH(V_log + rotate(F_log, axis))   shader render_transfer.comp
+//   relight          rgb = sum_i T_i L_i                          shader render_shade.comp
+// The exponentiation is core/sh/sh_exp_shared.h, the same text the CPU path compiles.
+//
+//   gpu::Context context;
+//   gpu::render::TransferField field(context, inputs);   // T computed, kept on the device
+//   field.shade(light_sh, rgb);                            // per frame: one dispatch, rgb back
+//   field.download(transfer);                              // T as [16][texels] if wanted
+//
+// Texels are processed in bands small enough for the device's storage-buffer range
+// (maxStorageBufferRange: 128 MiB = 2.09 M texels of T on lavapipe) and its dispatch size.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/render/transfer.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/context.hpp"
+#include "gpu/kernel.hpp"
+
+namespace ts::gpu::render {
+
+struct StageTime {
+    std::string label;
+    double ms;  // device time, summed over bands (NaN without GPU timestamps)
+};
+
+class TransferField {
+public:
+    // Computes every texel's transfer vector on the device. Only the hybrid exponentiation runs
+    // on the GPU (ts::InputError otherwise); inputs.threads is ignored. Stages: upload,
+    // transfer.
+    // band_texels > 0 caps the texels per band below the device's limit (tests check that bands
+    // join seamlessly).
+    TransferField(const Context& context, const ts::render::TransferInputs& inputs, std::size_t band_texels = 0);
+
+    std::size_t texels() const { return texels_; }
+
+    // T as [16][texels] (transfer.hpp's layout). Stage: download.
+    void download(float* transfer_out);
+    // rgb_out[t] = sum_i T[i][t] * light[i]. Stages: light, shade, download.
+    void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out);
+
+    // Per-stage device times and the wall-clock time of the last operation (the constructor,
+    // download or shade).
+    const std::vector<StageTime>& stages() const { return stages_; }
+    double wall_ms() const { return wall_ms_; }
+    int bands() const { return int(bands_.size()); }
+
+private:
+    struct Band {
+        std::size_t first = 0, texels = 0;
+        Buffer transfer;  // [16][band texels]
+        Buffer rgb;       // [band texels][3]
+    };
+
+    const Context& context_;
+    Kernel transfer_kernel_;
+    Kernel shade_kernel_;
+    std::size_t texels_ = 0;
+    std::vector<Band> bands_;
+    Buffer light_;
+    std::vector<StageTime> stages_;
+    double wall_ms_ = 0;
+};
+
+// One-shot mirrors of ts::render::transfer_vectors and shade_transfer (the second uploads T);
+// both return the per-stage device times.
+std::vector<StageTime> transfer_vectors(const Context& context, const ts::render::TransferInputs& inputs,
+                                        float* transfer_out);
+std::vector<StageTime> shade_transfer(const Context& context, const float* transfer, std::size_t texels,
+                                      const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out);
+
+// Texels per band on this device: the storage-buffer range over the 64 bytes of T per texel,
+// and the largest one-dimensional dispatch.
+std::size_t max_band_texels(const Context& context);
+
+}  // namespace ts::gpu::render

@@ -1,0 +1,116 @@
+// `terrashade visibility` on the Vulkan device (the default) against `--cpu`: the same outputs
+// within the GPU path's tolerances (tests/gpu/visibility_agreement_test.cpp states them), the
+// CPU fallbacks (a method the GPU lacks, no Vulkan at all) and the errors of --device.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/dem/read_dem.hpp"
+#include "tests/cli/cli_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBin = TS_BIN;
+const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
+// 121 x 121 texels of the Gabon tile (as visibility_cli_test.cpp).
+const std::string kWindow = "visibility " + kDem + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
+// The driver manifests pointed at nothing: the Vulkan loader finds no device.
+const std::string kNoVulkan = "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json ";
+
+using ts::cli_test::Result;
+Result run(const std::string& args, const std::string& env = "") {
+    return ts::cli_test::run(env + kBin + " " + args);
+}
+
+// Every band of a float GeoTIFF, band-interleaved by pixel as OIIO reads it.
+std::vector<float> read_all_bands(const fs::path& path, int& bands) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) return {};
+    const auto& spec = in->spec();
+    bands = spec.nchannels;
+    std::vector<float> v(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(bands));
+    if (!in->read_image(0, 0, 0, bands, OIIO::TypeDesc::FLOAT, v.data())) return {};
+    return v;
+}
+
+double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
+    double m = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::isnan(a[i]) || std::isnan(b[i])) {
+            if (std::isnan(a[i]) != std::isnan(b[i])) return INFINITY;
+            continue;
+        }
+        m = std::max(m, std::abs(double(a[i]) - double(b[i])));
+    }
+    return m;
+}
+
+class VisibilityGpuCli : public ::testing::Test {
+protected:
+    fs::path dir_ = ts::cli_test::temp_root() /
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    void SetUp() override { fs::create_directories(dir_); }
+};
+
+}  // namespace
+
+TEST_F(VisibilityGpuCli, DefaultRunsOnTheDeviceAndAgreesWithCpu) {
+    const auto out = [&](const std::string& tag, const std::string& what) { return (dir_ / (tag + what)).string(); };
+    for (const std::string tag : {"gpu", "cpu"}) {
+        const Result r = run(kWindow + " --directions 16 --svf " + out(tag, "svf.tif") + " --sky-visible " +
+                             out(tag, "sky.tif") + " --log-sh " + out(tag, "lsh.tif") + " --horizons " +
+                             out(tag, "hz.tif") + (tag == "cpu" ? " --cpu" : ""));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        // Which path ran is said on stdout ("horizons on <device name>" or "horizons on the CPU").
+        EXPECT_EQ(r.out.find("horizons on the CPU") != std::string::npos, tag == "cpu") << r.out;
+    }
+    for (const std::string what : {"svf.tif", "sky.tif", "lsh.tif", "hz.tif"}) {
+        SCOPED_TRACE(what);
+        int bands_gpu = 0, bands_cpu = 0;
+        const auto g = read_all_bands(out("gpu", what), bands_gpu);
+        const auto c = read_all_bands(out("cpu", what), bands_cpu);
+        ASSERT_FALSE(g.empty());
+        ASSERT_EQ(g.size(), c.size());
+        EXPECT_EQ(bands_gpu, bands_cpu);
+        // svf and sky_visible: the 1e-4 absolute; log-SH: 1e-4 (float sums of 16 slices);
+        // horizons in degrees: 1e-4 rad = 0.0057 deg (this window has no flips; measured 5e-4 deg).
+        const double tol = what == "hz.tif" ? 0.0057 : 1e-4;
+        EXPECT_LE(max_abs_diff(g, c), tol);
+    }
+    // Same georeferencing and layout as the CPU output.
+    const auto a = ts::dem::read_dem(out("gpu", "svf.tif")), b = ts::dem::read_dem(out("cpu", "svf.tif"));
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    EXPECT_EQ(a.georef.crs().epsg(), b.georef.crs().epsg());
+}
+
+TEST_F(VisibilityGpuCli, MethodsTheGpuLacksRunOnTheCpuWithANote) {
+    const Result r = run(kWindow + " --directions 8 --method pyramid --svf " + (dir_ / "p.tif").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("--method pyramid runs on the CPU"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("horizons on the CPU"), std::string::npos) << r.out;
+}
+
+TEST_F(VisibilityGpuCli, NoVulkanFallsBackToTheCpuUnlessADeviceWasAskedFor) {
+    const std::string svf = (dir_ / "svf.tif").string();
+    const Result fallback = run(kWindow + " --directions 8 --svf " + svf, kNoVulkan);
+    ASSERT_EQ(fallback.exit_code, 0) << fallback.err;
+    EXPECT_NE(fallback.err.find("warning: no usable Vulkan device"), std::string::npos) << fallback.err;
+    EXPECT_TRUE(fs::exists(svf));
+
+    const Result asked = run(kWindow + " --directions 8 --device 0 --svf " + svf, kNoVulkan);
+    EXPECT_EQ(asked.exit_code, 2);
+    EXPECT_NE(asked.err.find("mesa-vulkan-drivers"), std::string::npos) << asked.err;
+
+    const Result both = run(kWindow + " --cpu --device 0 --svf " + svf);
+    EXPECT_EQ(both.exit_code, 2);
+    const Result bad_index = run(kWindow + " --device 99 --svf " + svf);
+    EXPECT_EQ(bad_index.exit_code, 2) << bad_index.err;
+}

@@ -112,6 +112,9 @@ void add_bench_command(CLI::App& root) {
     bench->require_subcommand(1);
     add_bench_sh_command(*bench);
     add_bench_visibility_command(*bench);
+    add_bench_render_command(*bench);
+    add_bench_relight_command(*bench);
+    add_bench_transfer_command(*bench);
     // Further areas: add_bench_<area>_command(*bench); declared in app/command.hpp.
 }
 

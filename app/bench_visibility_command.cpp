@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,7 +25,12 @@
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/sky_integrals.hpp"
+#include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#ifdef TERRASHADE_HAS_GPU
+#include "gpu/context.hpp"
+#include "gpu/visibility/gpu_visibility.hpp"
+#endif
 
 namespace ts::app {
 namespace {
@@ -43,6 +49,10 @@ struct BenchVisibilityOptions {
     int reference_directions = 256;
     int full_directions = 32;
     bool full = false;
+    bool whole = false;  // --whole: the whole DEM on the GPU, the CPU and SAGA, stage by stage
+    int repeats = 3;
+    bool no_saga = false;
+    std::optional<std::uint32_t> device;
     bool no_curvature = false;
     bool saga = false;
     int threads = 0;
@@ -279,7 +289,204 @@ void write_csv(const BenchVisibilityOptions& o, const std::vector<Row>& rows) {
     }
 }
 
+
+// ---- --whole: the whole DEM, GPU and CPU stage by stage, and SAGA on a UTM copy ----
+
+bool have_program(const char* name) {
+    return std::system(("command -v " + std::string(name) + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+// The median of a few timings (the machine is shared: one run can be 2x another).
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? kNaN : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// svf RMSE of `svf` (whole-grid layout) against `ref` (the window's layout), interior of the window.
+double window_svf_rmse(const std::vector<float>& svf, int grid_w, const visibility::ReceiverWindow& w,
+                       const std::vector<float>& ref) {
+    std::vector<float> part(std::size_t(w.width) * std::size_t(w.height));
+    for (int r = 0; r < w.height; ++r)
+        for (int c = 0; c < w.width; ++c)
+            part[std::size_t(r) * w.width + c] = svf[std::size_t(w.row0 + r) * grid_w + std::size_t(w.col0 + c)];
+    return compare(part, ref, w.width, w.height).rmse;
+}
+
+visibility::ReceiverWindow centred(int width, int height, int n) {
+    const int w = std::min(n, width), h = std::min(n, height);
+    return {(width - w) / 2, (height - h) / 2, w, h};
+}
+
+// SAGA quantities (saga_quantities) of a set computed on a window of `g`, from the window's
+// texels of g: the set covers the window only.
+SagaQuantities saga_quantities_window(const visibility::HorizonSet& set, const terrain::HeightGrid& g,
+                                      const visibility::ReceiverWindow& w) {
+    std::vector<float> z(std::size_t(w.width) * std::size_t(w.height));
+    for (int r = 0; r < w.height; ++r)
+        for (int c = 0; c < w.width; ++c) z[std::size_t(r) * w.width + c] = g.at(w.col0 + c, w.row0 + r);
+    terrain::HeightGrid sub;
+    sub.width = w.width;
+    sub.height = w.height;
+    sub.z = z;
+    sub.dx_m.assign(g.dx_m.begin() + w.row0, g.dx_m.begin() + w.row0 + w.height);
+    sub.dy_m.assign(g.dy_m.begin() + w.row0, g.dy_m.begin() + w.row0 + w.height);
+    return saga_quantities(set, sub);
+}
+
+void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
+    const dem::Dem dem = dem::read_dem(path);
+    const std::string name = std::filesystem::path(path).filename().string();
+    const visibility::VisibilityGrid grid(dem);
+    const int D = o.full_directions;
+    const double texel_azimuths = double(dem.width) * dem.height * D;
+    visibility::HorizonOptions ho;
+    ho.directions = D;
+    ho.curvature = !o.no_curvature;
+    ho.threads = o.threads;
+    std::printf("%s: %dx%d texels, D = %d, exact horizons -> svf, sky_visible, log-SH; median of %d runs "
+                "(wall ms; the machine is shared, compare rows of one run)\n",
+                name.c_str(), dem.width, dem.height, D, o.repeats);
+
+    // The reference: raymarch horizons of a centred window, blockers from the whole grid.
+    const visibility::ReceiverWindow win = centred(dem.width, dem.height, o.window);
+    visibility::HorizonOptions ref_opts = ho;
+    ref_opts.method = visibility::HorizonMethod::raymarch;
+    ref_opts.directions = o.reference_directions;
+    ref_opts.window = win;
+    auto t0 = std::chrono::steady_clock::now();
+    const visibility::HorizonSet ref = visibility::compute_horizons(grid.view(), ref_opts);
+    const auto svf_ref = visibility::svf_raster(ref, visibility::WedgeRule::linear, o.threads);
+    std::printf("  reference: raymarch D=%d on the centred %dx%d window, %.0f ms\n", o.reference_directions,
+                win.width, win.height, ms_since(t0));
+
+    // CPU path, stage by stage.
+    std::vector<double> cpu_h, cpu_sh, cpu_sky, cpu_total;
+    std::vector<float> cpu_svf;
+    for (int rep = 0; rep < o.repeats; ++rep) {
+        t0 = std::chrono::steady_clock::now();
+        const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
+        cpu_h.push_back(ms_since(t0));
+        auto t1 = std::chrono::steady_clock::now();
+        (void)visibility::log_sh_raster(set, visibility::kDefaultVisibilityLogEps, o.threads);
+        cpu_sh.push_back(ms_since(t1));
+        t1 = std::chrono::steady_clock::now();
+        cpu_svf = visibility::svf_raster(set, visibility::WedgeRule::linear, o.threads);
+        (void)visibility::sky_visible_raster(set, visibility::WedgeRule::linear, o.threads);
+        cpu_sky.push_back(ms_since(t1));
+        cpu_total.push_back(ms_since(t0));
+    }
+    const double cpu_ms = median(cpu_total);
+    const double cpu_err = window_svf_rmse(cpu_svf, dem.width, win, svf_ref);
+    std::printf("  cpu  %9.0f ms  (horizons %.0f, log_sh %.0f, svf+sky %.0f)  %.3g texel-azimuths/s  svf RMSE %.5f\n",
+                cpu_ms, median(cpu_h), median(cpu_sh), median(cpu_sky), texel_azimuths / (cpu_ms / 1000),
+                cpu_err);
+
+    double gpu_ms = kNaN;
+#ifdef TERRASHADE_HAS_GPU
+    try {
+        const gpu::Context context(gpu::ContextOptions{.device_index = o.device});
+        std::vector<double> total;
+        std::vector<std::vector<gpu::visibility::StageTime>> stages;
+        std::vector<float> gpu_svf;
+        for (int rep = 0; rep < o.repeats; ++rep) {
+            gpu::visibility::Options go;
+            go.horizon = ho;
+            t0 = std::chrono::steady_clock::now();
+            auto r = gpu::visibility::compute(context, grid.view(), go);
+            total.push_back(ms_since(t0));
+            stages.push_back(r.stages);
+            gpu_svf = std::move(r.svf);
+        }
+        gpu_ms = median(total);
+        std::string stage_text;
+        for (std::size_t i = 0; i < stages[0].size(); ++i) {
+            std::vector<double> v;
+            for (const auto& s : stages) v.push_back(i < s.size() ? s[i].ms : kNaN);
+            stage_text += (i ? ", " : "") + stages[0][i].label + " " + std::to_string(int(std::lround(median(v))));
+        }
+        std::printf("  gpu  %9.0f ms  (device ms: %s; on %s)  %.3g texel-azimuths/s  svf RMSE %.5f\n", gpu_ms,
+                    stage_text.c_str(), context.device_info().name.c_str(), texel_azimuths / (gpu_ms / 1000),
+                    window_svf_rmse(gpu_svf, dem.width, win, svf_ref));
+        std::printf("  gpu / cpu time: %.2f\n", gpu_ms / cpu_ms);
+    } catch (const InputError& e) {
+        if (o.device) throw;
+        std::printf("  gpu  not run: %s\n", e.what());
+    }
+#endif
+
+    if (o.no_saga) return;
+    if (!have_program("saga_cmd") || !have_program("gdalwarp")) {
+        std::printf("  saga not run: saga_cmd or gdalwarp is not installed\n");
+        return;
+    }
+    // SAGA as a user would run it: the DEM reprojected to its UTM zone at ~92 m, then
+    // ta_lighting 3 with its defaults (10 km radius, cell-size method) and D sectors.
+    const auto dir = std::filesystem::temp_directory_path() / ("terrashade-bench-whole-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
+    const int zone = std::clamp(int(std::floor((centre.x + 180.0) / 6.0)) + 1, 1, 60);
+    const std::string epsg = "EPSG:" + std::to_string((centre.y >= 0 ? 32600 : 32700) + zone);
+    const std::string utm = (dir / "utm.tif").string(), svf = (dir / "svf.tif").string(),
+                      vis = (dir / "visible.tif").string(), log = (dir / "saga.log").string();
+    const std::string warp = "gdalwarp -q -overwrite -t_srs " + epsg + " -tr 92 92 -r bilinear '" + path + "' '" + utm +
+                             "' > '" + log + "' 2>&1";
+    if (std::system(warp.c_str()) != 0) throw InputError("gdalwarp failed; see " + log);
+    const dem::Dem udem = dem::read_dem(utm);
+    const std::string saga = "saga_cmd ta_lighting 3 -DEM '" + utm + "' -VISIBLE '" + vis + "' -SVF '" + svf +
+                             "' -NDIRS " + std::to_string(D) + " > '" + log + "' 2>&1";
+    std::vector<double> saga_times;
+    for (int rep = 0; rep < o.repeats; ++rep) {
+        std::filesystem::remove(svf);
+        t0 = std::chrono::steady_clock::now();
+        const int rc = std::system(saga.c_str());
+        saga_times.push_back(ms_since(t0));
+        if (rc != 0 || !std::filesystem::exists(svf)) throw InputError("saga_cmd failed; see " + log);
+    }
+    const double saga_ms = median(saga_times);
+    // Errors in SAGA's own formulas (see docs/visibility.md), against the raymarch horizons of a
+    // centred window of the UTM copy (blockers from the whole copy, flat Earth as SAGA).
+    const visibility::VisibilityGrid ugrid(udem);
+    const visibility::ReceiverWindow uwin = centred(udem.width, udem.height, o.window);
+    visibility::HorizonOptions uref = ref_opts;
+    uref.window = uwin;
+    uref.curvature = false;
+    const auto uref_set = visibility::compute_horizons(ugrid.view(), uref);
+    const SagaQuantities ref_q = saga_quantities_window(uref_set, ugrid.view(), uwin);
+    const dem::Dem saga_vis = dem::read_dem(vis), saga_svf = dem::read_dem(svf);
+    std::vector<float> sv(std::size_t(uwin.width) * uwin.height), ss(sv.size());
+    for (int r = 0; r < uwin.height; ++r)
+        for (int c = 0; c < uwin.width; ++c) {
+            sv[std::size_t(r) * uwin.width + c] = saga_vis.at(uwin.col0 + c, uwin.row0 + r) / 100.0f;
+            ss[std::size_t(r) * uwin.width + c] = saga_svf.at(uwin.col0 + c, uwin.row0 + r);
+        }
+    visibility::HorizonOptions ours = ho;
+    ours.window = uwin;
+    ours.curvature = false;
+    const SagaQuantities our_q =
+        saga_quantities_window(visibility::compute_horizons(ugrid.view(), ours), ugrid.view(), uwin);
+    std::printf("  saga %9.0f ms  (saga_cmd ta_lighting 3, defaults, %d sectors, on %s %dx%d at 92 m)  %.3g "
+                "texel-azimuths/s\n",
+                saga_ms, D, epsg.c_str(), udem.width, udem.height,
+                double(udem.width) * udem.height * D / (saga_ms / 1000));
+    std::printf("  in SAGA's formulas on the UTM window: SVF RMSE saga %.5f, terrashade exact %.5f; Visible RMSE "
+                "saga %.5f, terrashade exact %.5f\n",
+                compare(ss, ref_q.svf, uwin.width, uwin.height).rmse,
+                compare(our_q.svf, ref_q.svf, uwin.width, uwin.height).rmse,
+                compare(sv, ref_q.visible, uwin.width, uwin.height).rmse,
+                compare(our_q.visible, ref_q.visible, uwin.width, uwin.height).rmse);
+    std::printf("  saga time / cpu time: %.2f", saga_ms / cpu_ms);
+    if (!std::isnan(gpu_ms)) std::printf(", saga time / gpu time: %.2f", saga_ms / gpu_ms);
+    std::printf("\n");
+    std::filesystem::remove_all(dir);
+}
+
 void run_bench_visibility(const BenchVisibilityOptions& o) {
+    if (o.whole) {
+        if (o.reference_directions % o.full_directions != 0)
+            throw InputError("--full-directions must divide --reference-directions");
+        for (const auto& path : o.dems) run_whole(o, path);
+        return;
+    }
     for (int d : o.directions)
         if (d < 1 || o.reference_directions % d != 0)
             throw InputError("--directions: each count must divide --reference-directions (" +
@@ -418,7 +625,16 @@ void add_bench_visibility_command(CLI::App& bench) {
         ->capture_default_str()
         ->check(CLI::Range(8, 4096));
     cmd->add_flag("--full", o->full, "Also time exact and pyramid on the whole DEM");
-    cmd->add_option("--full-directions", o->full_directions, "Azimuths for --full")
+    cmd->add_flag("--whole", o->whole,
+                  "Instead of the window study: the whole DEM at --full-directions, GPU and CPU stage by stage "
+                  "(median of --repeats), texel-azimuths per second, svf RMSE against the raymarch on the centred "
+                  "--window, and saga_cmd ta_lighting 3 (defaults, same sectors) on a UTM copy made by gdalwarp");
+    cmd->add_option("--repeats", o->repeats, "--whole: runs per path (median reported)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 20));
+    cmd->add_flag("--no-saga", o->no_saga, "--whole: skip SAGA");
+    cmd->add_option("--device", o->device, "--whole: Vulkan device index (terrashade devices)");
+    cmd->add_option("--full-directions", o->full_directions, "Azimuths for --full and --whole")
         ->capture_default_str()
         ->check(CLI::Range(1, 4096));
     cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth for every method (SAGA has no curvature)");

@@ -18,4 +18,14 @@ void add_devices_command(CLI::App& root);
 // `terrashade sun`: the sun's position at a time and place (app/sun_command.cpp).
 void add_sun_command(CLI::App& root);
 
+// `terrashade render` and `terrashade relight` (app/render_command.cpp, app/relight_command.cpp; issue 6).
+void add_render_command(CLI::App& root);
+void add_relight_command(CLI::App& root);
+// `terrashade bench relight` (app/bench_relight_command.cpp), called by add_bench_command.
+void add_bench_relight_command(CLI::App& bench);
+// `terrashade bench render` (app/bench_render_command.cpp), called by add_bench_command.
+void add_bench_render_command(CLI::App& bench);
+// `terrashade bench transfer` (app/bench_transfer_command.cpp): exp + relight, CPU vs GPU.
+void add_bench_transfer_command(CLI::App& bench);
+
 }  // namespace ts::app

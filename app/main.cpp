@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
     ts::app::add_bench_command(root);
     ts::app::add_visibility_command(root);
     ts::app::add_sun_command(root);
+    ts::app::add_render_command(root);
+    ts::app::add_relight_command(root);
 #ifdef TERRASHADE_HAS_GPU
     ts::app::add_devices_command(root);
 #endif

@@ -1,0 +1,123 @@
+// `terrashade render`: one shaded picture of a DEM under the sun and sky at a time (or a sun
+// position given directly), as a map on the DEM's grid or a perspective camera view.
+// Pipeline and formulas: docs/rendering.md.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "app/render_options.hpp"
+#include "core/light/utc_time.hpp"
+#include "core/raster/raster_writer.hpp"
+#include "core/util/error.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/visibility/sun_visibility.hpp"
+
+namespace ts::app {
+namespace {
+
+struct RenderCommandArgs {
+    RenderArgs render;
+    std::string time;
+    std::optional<double> sun_azimuth, sun_elevation;
+    std::string out;
+    std::string sun_visibility;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void run_render(const RenderCommandArgs& a) {
+    // Every check that needs no DEM first.
+    const bool by_time = !a.time.empty();
+    const bool by_angles = a.sun_azimuth.has_value() || a.sun_elevation.has_value();
+    if (by_time == by_angles)
+        throw InputError("render: give either --time or both --sun-azimuth and --sun-elevation");
+    if (by_angles && !(a.sun_azimuth && a.sun_elevation))
+        throw InputError("render: --sun-azimuth and --sun-elevation go together");
+    std::optional<light::UtcTime> time;
+    if (by_time) time = light::parse_utc_time(a.time);
+    render::check_image_extension(a.out);
+    if (!a.sun_visibility.empty()) {
+        const std::string& p = a.sun_visibility;
+        if (!(p.size() > 4 && (p.ends_with(".tif") || p.ends_with(".tiff"))))
+            throw input_error(p, "--sun-visibility writes a float32 GeoTIFF: use .tif");
+    }
+    const render::SceneOptions options = scene_options(a.render);
+    const render::Exposure exposure = exposure_of(a.render);
+
+    const dem::Dem dem = load_dem_input(a.render.dem);
+    std::unique_ptr<render::Scene> scene;
+    {
+        ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(a.render.directions), "rays");
+        render::SceneOptions with_bar = options;
+        with_bar.renderer.progress = &bar;
+        scene = std::make_unique<render::Scene>(dem, with_bar);
+    }
+    const render::SunState sun = time ? scene->sun_at(*time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
+    if (sun.elevation_deg < -0.27)
+        std::fprintf(stderr, "terrashade: warning: the sun is below the horizon (elevation %.2f deg): sky light only\n",
+                     sun.elevation_deg);
+
+    const auto t1 = std::chrono::steady_clock::now();
+    render::LinearImage image;
+    scene->render(sun, image);
+    const double frame_s = seconds_since(t1);
+
+    const bool map = options.view == render::ViewKind::map;
+    const double scale = render::write_image(a.out, image, exposure, map ? &dem.georef : nullptr);
+    std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,
+                time ? (" at " + light::format_utc_time(*time)).c_str() : "");
+    std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
+    if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
+    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s\n",
+                scene->renderer().visibility_seconds(), scene->renderer().transfer_seconds(), a.render.directions,
+                frame_s);
+    if (!a.out.ends_with(".exr"))
+        std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
+    std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);
+    if (!a.sun_visibility.empty()) {
+        // The renderer sweeps only when the sky has a sun (an overcast sky has none); the file
+        // is geometry, so sweep here then.
+        const light::Rgb e = scene->last_sky()->sun().irradiance;
+        std::vector<float> swept;
+        if (!(e.x > 0 || e.y > 0 || e.z > 0)) {
+            visibility::SunVisibilityOptions so;
+            so.curvature = options.renderer.curvature;
+            so.threads = options.renderer.threads;
+            swept = visibility::sun_visibility(scene->grid(), sun.azimuth_deg, sun.elevation_deg, so);
+        }
+        raster::write_float_raster(a.sun_visibility, dem.width, dem.height, 1,
+                                   swept.empty() ? scene->renderer().sun_visibility().data() : swept.data(), dem.georef,
+                                   {"sun_visibility: visible fraction of the sun disc"});
+        std::printf("wrote %s\n", a.sun_visibility.c_str());
+    }
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& root) {
+    auto a = std::make_shared<RenderCommandArgs>();
+    CLI::App* cmd = root.add_subcommand(
+        "render",
+        "Shaded picture of a DEM under the real sun and sky: a map on the DEM grid or a perspective view "
+        "(docs/rendering.md). Sun shadows from the exact horizon, sky light through log-SH visibility.");
+    add_render_options(*cmd, a->render);
+    cmd->add_option("--time", a->time, "UTC instant, ISO 8601 with a zone (e.g. 2025-06-21T12:00:00+02:00); "
+                                       "the sun is placed for the DEM's centre");
+    cmd->add_option("--sun-azimuth", a->sun_azimuth, "Sun azimuth, degrees clockwise from north (instead of --time)")
+        ->check(CLI::Range(-360.0, 720.0));
+    cmd->add_option("--sun-elevation", a->sun_elevation, "Sun elevation above the horizon, degrees")
+        ->check(CLI::Range(-90.0, 90.0));
+    cmd->add_option("-o,--out", a->out, "Output: .png / .tif (8-bit sRGB; a map .tif is georeferenced) or .exr (linear)")
+        ->required();
+    cmd->add_option("--sun-visibility", a->sun_visibility,
+                    "Also write the sun's visible fraction per texel (0..1) as a float32 GeoTIFF");
+    cmd->callback([a] { run_render(*a); });
+}
+
+}  // namespace ts::app

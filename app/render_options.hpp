@@ -1,0 +1,39 @@
+#pragma once
+// The options `render`, `relight` and `bench relight` share (app/render_command.cpp,
+// app/relight_command.cpp, app/bench_relight_command.cpp): the DEM, sky, view, materials,
+// exposure and quality knobs, and their conversion to a render::SceneOptions.
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/dem_input.hpp"
+#include "core/render/render_scene.hpp"
+
+namespace ts::app {
+
+struct RenderArgs {
+    DemInput dem;
+    std::string sky = "clear";
+    std::string view = "map";
+    std::string camera;
+    std::string size;
+    std::string exposure = "auto";
+    std::string materials = "rule";
+    std::string albedo;
+    int directions = 32;
+    bool no_curvature = false;
+    bool cpu = false;
+    double haze_km = 250.0;
+    std::string exp_method = "scaling_squaring";
+    int threads = 0;
+};
+
+// Adds the shared options to `cmd` (not the sun/time or output options).
+void add_render_options(CLI::App& cmd, RenderArgs& args);
+
+// Parses and checks everything that can be checked before reading the DEM.
+render::SceneOptions scene_options(const RenderArgs& args);
+render::Exposure exposure_of(const RenderArgs& args);
+
+}  // namespace ts::app

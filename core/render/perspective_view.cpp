@@ -1,0 +1,325 @@
+#include "core/render/perspective_view.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/terrain/height_pyramid.hpp"
+#include "core/terrain/valid_bilinear.hpp"
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/visibility/earth_curvature.hpp"
+
+namespace ts::render {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr float kNoSurface = -std::numeric_limits<float>::infinity();
+// sin(3 deg): where the air light and the land beyond the DEM are read from the sky.
+constexpr float kHorizonLift = 0.0523f;
+
+double parse_number(std::string_view s, const std::string& what) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    double v = 0;
+    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v))
+        throw InputError("--camera: " + what + " '" + std::string(s) + "' is not a number");
+    return v;
+}
+
+// Max pyramid over bilinear patches (see the header); level l is w_l x h_l.
+struct PatchPyramid {
+    std::vector<std::vector<float>> max;
+    std::vector<int> w, h;
+
+    explicit PatchPyramid(const terrain::HeightGrid& g, int threads) {
+        const int pw = std::max(1, g.width - 1), ph = std::max(1, g.height - 1);
+        std::vector<float> level0(std::size_t(pw) * ph, kNoSurface);
+        for (int j = 0; j < ph; ++j)
+            for (int i = 0; i < pw; ++i) {
+                float m = kNoSurface;
+                for (int dj = 0; dj < 2; ++dj)
+                    for (int di = 0; di < 2; ++di) {
+                        const int c = std::min(i + di, g.width - 1), r = std::min(j + dj, g.height - 1);
+                        const float z = g.at(c, r);
+                        if (!std::isnan(z)) m = std::max(m, z);
+                    }
+                level0[std::size_t(j) * pw + i] = m;
+            }
+        max.push_back(std::move(level0));
+        w.push_back(pw), h.push_back(ph);
+        while (w.back() > 1 || h.back() > 1) {
+            max.push_back(terrain::downsample_2x2(max.back().data(), w.back(), h.back(), true, threads));
+            w.push_back((w.back() + 1) / 2), h.push_back((h.back() + 1) / 2);
+        }
+    }
+};
+
+struct Ray {
+    double x0, y0;   // texel-centre coordinates at s = 0
+    double ux, uy;   // texel units per horizontal metre
+    double z0, kz, curv;  // height(s) = z0 + kz s + curv s^2 (curv: the terrain's drop, as a lift of the ray)
+    double height_at(double s) const { return z0 + s * (kz + s * curv); }
+    double min_height(double s0, double s1) const {
+        double m = std::min(height_at(s0), height_at(s1));
+        if (curv > 0) {
+            const double sv = -kz / (2 * curv);
+            if (sv > s0 && sv < s1) m = std::min(m, height_at(sv));
+        }
+        return m;
+    }
+};
+
+float surface(const terrain::HeightGrid& g, double x, double y) {
+    float fx = 0, fy = 0;
+    const int c = terrain::valid_bilinear_corner(std::clamp(x, 0.0, double(g.width - 1)), g.width, fx);
+    const int r = terrain::valid_bilinear_corner(std::clamp(y, 0.0, double(g.height - 1)), g.height, fy);
+    const int c1 = std::min(c + 1, g.width - 1), r1 = std::min(r + 1, g.height - 1);
+    return terrain::blend_valid_corners(g.at(c, r), g.at(c1, r), g.at(c, r1), g.at(c1, r1), fx, fy);
+}
+
+// The first s in [s_begin, s_end] where the ray is at or below the surface, or < 0.
+double march(const terrain::HeightGrid& g, const PatchPyramid& pyr, const Ray& ray, double s_begin, double s_end,
+             double nudge) {
+    const int top = int(pyr.max.size()) - 1;
+    int level = top;
+    double s = s_begin;
+    for (int guard = 0; guard < 1 << 22 && s <= s_end; ++guard) {
+        const double x = ray.x0 + s * ray.ux, y = ray.y0 + s * ray.uy;
+        const int size = 1 << level;
+        const int ci = std::clamp(int(std::floor(x / size)), 0, pyr.w[level] - 1);
+        const int cj = std::clamp(int(std::floor(y / size)), 0, pyr.h[level] - 1);
+        double exit = s_end;
+        if (ray.ux > 0) exit = std::min(exit, ((ci + 1.0) * size - ray.x0) / ray.ux);
+        if (ray.ux < 0) exit = std::min(exit, (double(ci) * size - ray.x0) / ray.ux);
+        if (ray.uy > 0) exit = std::min(exit, ((cj + 1.0) * size - ray.y0) / ray.uy);
+        if (ray.uy < 0) exit = std::min(exit, (double(cj) * size - ray.y0) / ray.uy);
+        exit = std::max(exit, s);
+        const float bound = pyr.max[level][std::size_t(cj) * pyr.w[level] + ci];
+        if (ray.min_height(s, exit) > double(bound)) {
+            s = exit + nudge;
+            level = std::min(level + 1, top);
+            continue;
+        }
+        if (level > 0) {
+            --level;
+            continue;
+        }
+        // A level-0 patch the ray may cross: bracket by sub-steps, refine by bisection.
+        constexpr int kSteps = 4;
+        auto below = [&](double t) {
+            const float h = surface(g, ray.x0 + t * ray.ux, ray.y0 + t * ray.uy);
+            return !std::isnan(h) && ray.height_at(t) <= double(h);
+        };
+        double prev = s;
+        if (below(s)) return s;
+        for (int k = 1; k <= kSteps; ++k) {
+            const double t = s + (exit - s) * k / kSteps;
+            if (below(t)) {
+                double lo = prev, hi = t;
+                for (int it = 0; it < 12; ++it) {
+                    const double mid = 0.5 * (lo + hi);
+                    (below(mid) ? hi : lo) = mid;
+                }
+                return hi;
+            }
+            prev = t;
+        }
+        s = exit + nudge;
+        level = std::min(1, top);
+    }
+    return -1.0;
+}
+
+}  // namespace
+
+Camera parse_camera(std::string_view text) {
+    std::vector<std::string_view> parts;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = text.find(',', start);
+        parts.push_back(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+        if (comma == std::string_view::npos) break;
+        start = comma + 1;
+    }
+    if (parts.size() != 6)
+        throw InputError("--camera " + std::string(text) + ": give lon,lat,height,heading,pitch,fov (6 numbers)");
+    Camera c;
+    c.lon_deg = parse_number(parts[0], "lon");
+    c.lat_deg = parse_number(parts[1], "lat");
+    c.height_m = parse_number(parts[2], "height");
+    c.heading_deg = parse_number(parts[3], "heading");
+    c.pitch_deg = parse_number(parts[4], "pitch");
+    c.fov_deg = parse_number(parts[5], "fov");
+    if (c.lat_deg < -90 || c.lat_deg > 90) throw InputError("--camera: latitude must be in [-90, 90]");
+    if (c.pitch_deg < -90 || c.pitch_deg > 90) throw InputError("--camera: pitch must be in [-90, 90]");
+    if (c.fov_deg <= 1 || c.fov_deg >= 170) throw InputError("--camera: fov must be in (1, 170) degrees");
+    return c;
+}
+
+std::string format_camera(const Camera& c) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.5f,%.5f,%.0f,%.1f,%.1f,%.0f", c.lon_deg, c.lat_deg, c.height_m, c.heading_deg,
+                  c.pitch_deg, c.fov_deg);
+    return buf;
+}
+
+Camera default_camera(const terrain::HeightGrid& g, const geo::Georef& georef) {
+    const int mid = g.height / 2;
+    const double dx = g.dx_m[std::size_t(mid)], dy = g.dy_m[std::size_t(mid)];
+    const double extent = std::max((g.width - 1) * dx, (g.height - 1) * dy);
+    double mean = 0, top = -1e30;
+    std::size_t n = 0;
+    for (float z : g.z)
+        if (!std::isnan(z)) mean += z, ++n, top = std::max(top, double(z));
+    mean = n ? mean / double(n) : 0.0;
+    Camera c;
+    c.heading_deg = 35.0;
+    c.pitch_deg = -16.0;
+    c.fov_deg = 55.0;
+    const double back = 0.62 * extent;  // horizontal distance from the centre
+    const double east = -back * std::sin(c.heading_deg * kDeg), north = -back * std::cos(c.heading_deg * kDeg);
+    const double col = (g.width - 1) * 0.5 + east / dx, row = (g.height - 1) * 0.5 - north / dy;
+    const glm::dvec2 ll = georef.pixel_to_lonlat(col + 0.5, row + 0.5);
+    c.lon_deg = ll.x, c.lat_deg = ll.y;
+    // Look down at the centre's mean height, at least 500 m above the highest point.
+    c.height_m = std::max(mean + back * std::tan(-c.pitch_deg * kDeg), top + 500.0);
+    return c;
+}
+
+PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef& georef, const Camera& camera,
+                                 const PerspectiveOptions& options)
+    : grid_(g), options_(options) {
+    if (options_.width < 1 || options_.height < 1 || options_.width > 16384 || options_.height > 16384)
+        throw InputError("--size: width and height must be in 1..16384");
+    if (g.width < 2 || g.height < 2) throw InputError("perspective view: the DEM needs at least 2x2 texels");
+    const glm::dvec2 px = georef.lonlat_to_pixel({camera.lon_deg, camera.lat_deg});
+    cam_ = {px.x - 0.5, px.y - 0.5, camera.height_m};
+    const int cam_row = std::clamp(int(std::lround(cam_.y)), 0, g.height - 1);
+    const double dx = g.dx_m[std::size_t(cam_row)], dy = g.dy_m[std::size_t(cam_row)];
+    const double curv = visibility::curvature_factor(options_.curvature);
+    const float ground = surface(g, std::clamp(cam_.x, 0.0, double(g.width - 1)), std::clamp(cam_.y, 0.0, double(g.height - 1)));
+    const bool inside = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
+    below_terrain_ = inside && !std::isnan(ground) && cam_.z <= double(ground);
+
+    const PatchPyramid pyr(g, options_.threads);
+    const double h = camera.heading_deg * kDeg, p = camera.pitch_deg * kDeg;
+    const glm::dvec3 forward{std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
+    const glm::dvec3 right{std::cos(h), -std::sin(h), 0.0};
+    const glm::dvec3 up{right.y * forward.z - right.z * forward.y, right.z * forward.x - right.x * forward.z,
+                        right.x * forward.y - right.y * forward.x};
+    const double half = std::tan(0.5 * camera.fov_deg * kDeg);
+    const double aspect = double(options_.height) / options_.width;
+    const double nudge = 1e-4 * std::min(dx, dy);
+    pixels_.assign(std::size_t(options_.width) * options_.height, Pixel{});
+
+    parallel_rows(options_.height, options_.threads, options_.width * 400LL, [&](int j0, int j1) {
+        for (int j = j0; j < j1; ++j)
+            for (int i = 0; i < options_.width; ++i) {
+                const double a = (2.0 * (i + 0.5) / options_.width - 1.0) * half;
+                const double b = (1.0 - 2.0 * (j + 0.5) / options_.height) * half * aspect;
+                glm::dvec3 d = forward + a * right + b * up;
+                d /= std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+                Pixel& px_out = pixels_[std::size_t(j) * options_.width + i];
+                px_out.dir = glm::vec3(d);
+                const double hl = std::hypot(d.x, d.y);
+                if (below_terrain_) {
+                    px_out.x = float(cam_.x), px_out.y = float(cam_.y);
+                    continue;
+                }
+                if (hl < 1e-9) {  // straight down (or up)
+                    if (d.z < 0 && inside) px_out.x = float(cam_.x), px_out.y = float(cam_.y);
+                    continue;
+                }
+                Ray ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, curv};
+                // Clip to the grid's box of patches.
+                double s0 = 0, s1 = std::numeric_limits<double>::infinity();
+                auto clip = [&](double origin, double u, double lo, double hi) {
+                    if (std::abs(u) < 1e-15) {
+                        if (origin < lo || origin > hi) s1 = -1;
+                        return;
+                    }
+                    double ta = (lo - origin) / u, tb = (hi - origin) / u;
+                    if (ta > tb) std::swap(ta, tb);
+                    s0 = std::max(s0, ta), s1 = std::min(s1, tb);
+                };
+                clip(ray.x0, ray.ux, 0.0, g.width - 1.0);
+                clip(ray.y0, ray.uy, 0.0, g.height - 1.0);
+                if (!(s1 >= s0)) continue;
+                const double s = march(g, pyr, ray, s0, s1, nudge);
+                if (s < 0) continue;
+                px_out.x = float(ray.x0 + s * ray.ux), px_out.y = float(ray.y0 + s * ray.uy);
+                const double distance = s / hl;
+                px_out.transmittance =
+                    options_.haze_distance_m > 0 ? float(std::exp(-distance / options_.haze_distance_m)) : 1.0f;
+            }
+    });
+}
+
+std::vector<glm::vec3> PerspectiveView::view_directions() const {
+    const terrain::HeightGrid& g = grid_;
+    const int cam_row = std::clamp(int(std::lround(cam_.y)), 0, g.height - 1);
+    const double dx = g.dx_m[std::size_t(cam_row)], dy = g.dy_m[std::size_t(cam_row)];
+    const double curv = visibility::curvature_factor(options_.curvature);
+    std::vector<glm::vec3> v(std::size_t(g.width) * g.height);
+    for (int r = 0; r < g.height; ++r)
+        for (int c = 0; c < g.width; ++c) {
+            const double e = (cam_.x - c) * dx, n = (r - cam_.y) * dy;
+            const float z = g.at(c, r);
+            const double up = cam_.z - (std::isnan(z) ? 0.0 : double(z)) + (e * e + n * n) * curv;
+            const double len = std::sqrt(e * e + n * n + up * up);
+            v[g.index(c, r)] = len > 0 ? glm::vec3(float(e / len), float(n / len), float(up / len)) : glm::vec3(0, 0, 1);
+        }
+    return v;
+}
+
+std::size_t PerspectiveView::hit_count() const {
+    return std::size_t(std::count_if(pixels_.begin(), pixels_.end(), [](const Pixel& p) { return p.x >= 0; }));
+}
+
+void PerspectiveView::compose(const glm::vec3* radiance, const SkyTable& sky, const glm::vec3& sun_dir,
+                              const glm::vec3& sun_radiance, double sun_cos_radius,
+                              std::vector<glm::vec3>& image) const {
+    image.resize(pixels_.size());
+    const terrain::HeightGrid& g = grid_;
+    parallel_rows(options_.height, options_.threads, options_.width * 30LL, [&](int j0, int j1) {
+        for (std::size_t k = std::size_t(j0) * options_.width; k < std::size_t(j1) * options_.width; ++k) {
+            const Pixel& p = pixels_[k];
+            if (p.x < 0) {
+                // Below the horizon a missing ray leaves the DEM: beyond it lies more land in
+                // the haze, which the sky just above the horizon stands for better than the
+                // model's dark ground.
+                glm::vec3 dir = p.dir;
+                if (dir.z < kHorizonLift) {
+                    const float hl = std::hypot(dir.x, dir.y);
+                    const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
+                    dir = hl > 0 ? glm::vec3(dir.x / hl * c_lift, dir.y / hl * c_lift, kHorizonLift) : glm::vec3(1, 0, 0);
+                }
+                glm::vec3 c = sky.lookup(dir);
+                if (glm::dot(p.dir, sun_dir) >= float(sun_cos_radius)) c += sun_radiance;
+                image[k] = c;
+                continue;
+            }
+            float fx = 0, fy = 0;
+            const int c0 = terrain::valid_bilinear_corner(p.x, g.width, fx);
+            const int r0 = terrain::valid_bilinear_corner(p.y, g.height, fy);
+            const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
+            auto at = [&](int c, int r) { return radiance[std::size_t(r) * g.width + c]; };
+            const glm::vec3 top = at(c0, r0) * (1 - fx) + at(c1, r0) * fx;
+            const glm::vec3 bottom = at(c0, r1) * (1 - fx) + at(c1, r1) * fx;
+            glm::vec3 c = top * (1 - fy) + bottom * fy;
+            if (p.transmittance < 1) {
+                // Air light: the sky just above the horizon in the ray's azimuth.
+                const float hl = std::hypot(p.dir.x, p.dir.y);
+                const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
+                const glm::vec3 horizon =
+                    hl > 0 ? glm::vec3(p.dir.x / hl * c_lift, p.dir.y / hl * c_lift, kHorizonLift) : glm::vec3(0, 0, 1);
+                c = c * p.transmittance + sky.lookup(horizon) * (1 - p.transmittance);
+            }
+            image[k] = c;
+        }
+    });
+}
+
+}  // namespace ts::render

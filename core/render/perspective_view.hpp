@@ -1,0 +1,85 @@
+#pragma once
+// A camera view of the shaded terrain: each pixel's ray is marched over the height field once
+// (the camera does not move while the light changes), then every frame only looks up the
+// per-texel radiance at the hit (bilinear) or the sky where the ray misses.
+//
+// Frame: the DEM's local metric grid around the camera (east/north metres from the per-row
+// spacing, heights above the DEM datum), with the Earth's curvature (and standard refraction,
+// R_eff = R / (1 - 0.13)) dropping terrain at horizontal distance s by s^2 / (2 R_eff).
+// Marching: a max pyramid over the bilinear patches between texel centres (level 0 = the
+// highest of each patch's 4 corners, then 2x2 maxima, terrain::downsample_2x2) lets a ray skip
+// any cell it passes above; inside a level-0 patch the crossing is bracketed by sub-steps
+// and refined by bisection.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/geo/georef.hpp"
+#include "core/render/sky_table.hpp"
+#include "core/terrain/height_grid.hpp"
+
+namespace ts::render {
+
+struct Camera {
+    double lon_deg = 0, lat_deg = 0;
+    double height_m = 0;     // above the DEM's vertical datum (the same heights as the DEM)
+    double heading_deg = 0;  // clockwise from north
+    double pitch_deg = -20;  // above the horizontal; negative looks down
+    double fov_deg = 60;     // horizontal field of view
+};
+// "lon,lat,height,heading,pitch,fov". Throws ts::InputError on a bad list or range.
+Camera parse_camera(std::string_view text);
+std::string format_camera(const Camera& c);
+
+// The default: from beyond the DEM's south-west corner, 40% of the DEM's diagonal back from
+// its centre and high enough to see over it, looking at the centre (heading ~45 deg, pitch
+// down to the centre). docs/rendering.md shows it.
+Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef);
+
+struct PerspectiveOptions {
+    int width = 960, height = 540;
+    // Aerial perspective: transmittance exp(-distance / haze_distance_m) towards the sky's
+    // horizon radiance in the ray's azimuth; 0 turns haze off.
+    double haze_distance_m = 250000.0;
+    bool curvature = true;
+    int threads = 0;
+};
+
+class PerspectiveView {
+public:
+    PerspectiveView(const terrain::HeightGrid& grid, const geo::Georef& georef, const Camera& camera,
+                    const PerspectiveOptions& options);
+
+    int width() const { return options_.width; }
+    int height() const { return options_.height; }
+    // Unit direction from each DEM texel towards the camera (for specular and water).
+    std::vector<glm::vec3> view_directions() const;
+    // Pixels whose ray hit the terrain.
+    std::size_t hit_count() const;
+    // Whether the camera starts below the terrain (every ray then hits at once).
+    bool camera_below_terrain() const { return below_terrain_; }
+
+    // Composes a frame: per-texel radiance (width*height of the grid) sampled at the hits, the
+    // sky (and the sun's disc) elsewhere. `image` is resized to width*height once.
+    void compose(const glm::vec3* texel_radiance, const SkyTable& sky, const glm::vec3& sun_dir,
+                 const glm::vec3& sun_radiance, double sun_cos_radius, std::vector<glm::vec3>& image) const;
+
+private:
+    struct Pixel {
+        float x = -1, y = -1;        // hit in texel-centre coordinates, x < 0 = miss
+        float transmittance = 1;     // haze
+        glm::vec3 dir{0, 0, 1};      // ray direction (ENU)
+    };
+    const terrain::HeightGrid& grid_;
+    PerspectiveOptions options_;
+    glm::dvec3 cam_{0.0};  // camera in (texel-centre col, texel-centre row, height m)
+    bool below_terrain_ = false;
+    std::vector<Pixel> pixels_;
+};
+
+}  // namespace ts::render

@@ -1,0 +1,160 @@
+// `terrashade render`, `relight` and `bench relight` end to end on a 100x100 crop of the shipped
+// Grenoble DEM: outputs exist with the right size and georeferencing, bad input exits 2 with
+// one line, and nothing is left behind when a command fails.
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
+// 0.2 x 0.2 degrees around Grenoble: 101 x 101 texels (--crop keeps both edge texels), the city, the Isere and two massifs.
+const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
+
+std::string ts_cmd(const std::string& args) {
+    return quote(terrashade()) + " " + args;
+}
+
+// Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23).
+std::pair<int, int> png_size(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    unsigned char b[24] = {};
+    in.read(reinterpret_cast<char*>(b), 24);
+    auto be = [&](int o) { return int(b[o]) << 24 | int(b[o + 1]) << 16 | int(b[o + 2]) << 8 | int(b[o + 3]); };
+    return {be(16), be(20)};
+}
+
+TEST(RenderCli, MapPngHasTheDemSize) {
+    const auto dir = temp_dir("render_map");
+    const auto out = dir / "map.png";
+    const Result r = run(ts_cmd("render " + quote(kDem) + kCrop + " --time 2025-06-21T10:00:00+02:00 --out " +
+                                quote(out.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("sun: azimuth"), std::string::npos);
+    ASSERT_TRUE(std::filesystem::exists(out));
+    EXPECT_EQ(png_size(out), std::make_pair(101, 101));
+}
+
+TEST(RenderCli, MapTifIsGeoreferencedAndSunVisibilityInRange) {
+    const auto dir = temp_dir("render_tif");
+    const auto out = dir / "map.tif", vis = dir / "sun.tif";
+    const Result r = run(ts_cmd("render " + quote(kDem) + kCrop +
+                                " --sun-azimuth 135 --sun-elevation 12 --sky overcast --exposure 13 --out " +
+                                quote(out.string()) + " --sun-visibility " + quote(vis.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Result info = run("gdalinfo -json " + quote(out.string()));
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    const auto j = nlohmann::json::parse(info.out);
+    EXPECT_EQ(j["size"][0], 101);
+    EXPECT_EQ(j["bands"].size(), 3u);
+    EXPECT_NE(j["coordinateSystem"]["wkt"].get<std::string>().find("WGS 84"), std::string::npos);
+    const Result stats = run("gdalinfo -json -stats " + quote(vis.string()));
+    ASSERT_EQ(stats.exit_code, 0) << stats.err;
+    const auto s = nlohmann::json::parse(stats.out)["bands"][0];
+    EXPECT_GE(s["minimum"].get<double>(), 0.0);
+    EXPECT_LE(s["maximum"].get<double>(), 1.0);
+    // A low sun over the Alps: some texels in shadow, some lit.
+    EXPECT_LT(s["minimum"].get<double>(), 0.01);
+    EXPECT_GT(s["maximum"].get<double>(), 0.99);
+}
+
+TEST(RenderCli, PerspectiveHasTheAskedSize) {
+    const auto dir = temp_dir("render_persp");
+    const auto out = dir / "view.png";
+    const Result r = run(ts_cmd("render " + quote(kDem) + kCrop +
+                                " --sun-azimuth 200 --sun-elevation 35 --view perspective --size 64x36 --out " +
+                                quote(out.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("camera:"), std::string::npos);
+    EXPECT_EQ(png_size(out), std::make_pair(64, 36));
+}
+
+TEST(RenderCli, ExrIsWritten) {
+    const auto dir = temp_dir("render_exr");
+    const auto out = dir / "map.exr";
+    const Result r = run(ts_cmd("render " + quote(kDem) + kCrop + " --sun-azimuth 180 --sun-elevation 40 --out " +
+                                quote(out.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    EXPECT_GT(std::filesystem::file_size(out), 1000u);
+}
+
+TEST(RenderCli, BadInputExitsTwoWithOneLine) {
+    const auto dir = temp_dir("render_bad");
+    const std::string out = " --out " + quote((dir / "x.png").string());
+    const std::string dem = quote(kDem) + kCrop;
+    for (const std::string& args : {
+             "render " + dem + out,                                                  // no sun
+             "render " + dem + " --time 2025-06-21T10:00:00Z --sun-azimuth 10 --sun-elevation 5" + out,
+             "render " + dem + " --sun-azimuth 10" + out,                           // half a sun
+             "render " + dem + " --time 2025-06-21T10:00:00" + out,                 // no zone
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --out " + quote((dir / "x.jpg").string()),
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --view perspective --camera 1,2,3" + out,
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --camera 5.7,45.2,3000,0,-10,50" + out,
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --size 10by10" + out,
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --sky foggy" + out,
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --exposure bright" + out,
+             "render " + dem + " --sun-azimuth 10 --sun-elevation 5 --materials /nonexistent/cover.tif" + out,
+             "render /nonexistent/dem.tif --sun-azimuth 10 --sun-elevation 5" + out,
+         }) {
+        const Result r = run(ts_cmd(args));
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+TEST(RelightCli, OneFramePerTimeAndSunDownWarns) {
+    const auto dir = temp_dir("relight");
+    // 02:00Z is before sunrise at Grenoble in June: a sky-only frame and a warning.
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop +
+                                " --times 2025-06-21T02:00:00Z/2025-06-21T12:00:00Z/PT5H --out " +
+                                quote((dir / "frames").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("below the horizon at 1 of 3"), std::string::npos) << r.err;
+    for (int k = 0; k < 3; ++k) {
+        const auto f = dir / "frames" / ("frame_000" + std::to_string(k) + ".png");
+        ASSERT_TRUE(std::filesystem::exists(f)) << f;
+        EXPECT_EQ(png_size(f), std::make_pair(101, 101));
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_0003.png"));
+}
+
+TEST(RelightCli, TimesFileAndErrors) {
+    const auto dir = temp_dir("relight_file");
+    const auto times = dir / "times.txt";
+    std::ofstream(times) << "# two instants\n2025-03-20T09:00:00Z\n\n2025-03-20T15:00:00+01:00\n";
+    Result r = run(ts_cmd("relight " + quote(kDem) + kCrop + " --times-file " + quote(times.string()) + " --out " +
+                          quote((dir / "a").string()) + " --format tif"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a" / "frame_0001.tif"));
+    std::ofstream(dir / "bad.txt") << "2025-03-20T09:00:00Z\nyesterday\n";
+    for (const std::string& args : {
+             "relight " + quote(kDem) + kCrop + " --times-file " + quote((dir / "bad.txt").string()),
+             "relight " + quote(kDem) + kCrop + " --times 2025-03-20T09:00:00Z/2025-03-19T09:00:00Z/PT1H",
+             "relight " + quote(kDem) + kCrop,
+         }) {
+        r = run(ts_cmd(args + " --out " + quote((dir / "b").string())));
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+    }
+}
+
+TEST(BenchRelightCli, PrintsTheRate) {
+    const Result r = run(ts_cmd("bench relight " + quote(kDem) + kCrop + " --frames 2"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("relight: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(" Mpx/s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("end-to-end with files"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace ts::cli_test

@@ -23,4 +23,13 @@ $ts visibility "$dem" --directions 32 --svf out/svf.png
 echo "== the sun over Grenoble at the June solstice, 12:00 CEST (solar noon is ~13:38 there)"
 $ts sun --time 2025-06-21T12:00:00+02:00 --lat 45.19 --lon 5.72 --height-m 212
 
+echo "== shaded renders: real sun (June solstice, 09:00 CEST), clear sky, sun shadows from exact horizons"
+$ts render "$dem" --time 2025-06-21T07:00:00Z --out out/render_map.png --sun-visibility out/sun_visibility.tif
+$ts render "$dem" --time 2025-06-21T07:00:00Z --out out/render_map.tif
+$ts render "$dem" --time 2025-06-21T07:00:00Z --view perspective --camera 5.62,45.33,3000,150,-8,62 --out out/render_perspective.png
+$ts render "$dem" --time 2025-06-21T07:00:00Z --sky overcast --out out/render_overcast.png
+
+echo "== relit sequence: visibility once, one frame every 3 hours of the solstice (UTC)"
+$ts relight "$dem" --times 2025-06-21T04:00:00Z/2025-06-21T19:00:00Z/PT3H --out out/relight
+
 echo "demo: outputs in out/: $(ls out | tr '\n' ' ')"

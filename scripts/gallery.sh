@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Renders docs/gallery/: the Gresivaudan valley (Grenoble, looking south-east from above the
+# Chartreuse) at dawn, noon and dusk of the June solstice, under an overcast sky and under an HDR
+# environment map, from data/grenoble_500px.tif. Each PNG is 640x360 (< 150 KB).
+# Usage: scripts/gallery.sh [path/to/terrashade]   (default: the release build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ts=${1:-build/release/app/terrashade}
+dem=data/grenoble_500px.tif
+out=docs/gallery
+mkdir -p "$out"
+# The same camera for every picture: lon,lat,height (m),heading,pitch,fov.
+view=(--view perspective --camera 5.62,45.33,3000,150,-8,62 --size 640x360)
+
+# Local time is UTC+2 in June: sunrise ~05:55, solar noon ~13:38, sunset ~21:20.
+$ts render "$dem" "${view[@]}" --time 2025-06-21T04:40:00Z --out "$out/dawn.png"
+$ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --out "$out/noon.png"
+$ts render "$dem" "${view[@]}" --time 2025-06-21T18:45:00Z --out "$out/dusk.png"
+$ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky overcast --out "$out/overcast.png"
+$ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky data/sunset_synthetic.hdr --out "$out/hdr.png"
+# The same noon as a map (the whole DEM, top-down), downsampled to stay small.
+$ts render "$dem" --time 2025-06-21T11:40:00Z --size 400x400 --out "$out/noon_map.png"
+ls -l "$out"

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "app/csv_number.hpp"
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
 #include "core/light/sky.hpp"
@@ -110,13 +111,6 @@ RelativeError relative_error(const std::vector<double>& got, const std::vector<d
     return r;
 }
 
-std::string fmt(double v) {
-    if (std::isnan(v)) return "";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-
 void print_row(const Row& r) {
     std::printf("%-34s %-8s %7.1f %6.1f %6d %9.4f %9.4f %9.4f %8.4f %9.5f %8.1f %8.1f %8.1f %7.1f\n", r.dem.c_str(),
                 r.label.c_str(), r.azimuth_deg, r.elevation_deg, r.samples, r.rel_rmse, r.rel_p99, r.rel_bias, r.iou,
@@ -132,11 +126,11 @@ std::string csv_text(const std::vector<Row>& rows) {
            "reference_sun_ms,reference_s\n";
     for (const Row& r : rows)
         out << r.dem << ',' << r.label << ',' << r.time << ',' << r.width << ',' << r.height << ',' << r.samples << ','
-            << fmt(r.azimuth_deg) << ',' << fmt(r.elevation_deg) << ',' << fmt(r.rel_rmse) << ',' << fmt(r.rel_p99)
-            << ',' << fmt(r.rel_bias) << ',' << fmt(r.sun_lit_rel_rmse) << ',' << fmt(r.shadow_rel_rmse) << ','
-            << fmt(r.iou) << ',' << fmt(r.mask_disagree) << ',' << fmt(r.sun_fraction_mae) << ',' << fmt(r.shadow_share)
-            << ',' << fmt(r.frame_ms) << ',' << fmt(r.sun_visibility_ms) << ',' << fmt(r.reference_sun_ms) << ','
-            << fmt(r.reference_s) << '\n';
+            << csv_number(r.azimuth_deg) << ',' << csv_number(r.elevation_deg) << ',' << csv_number(r.rel_rmse) << ',' << csv_number(r.rel_p99)
+            << ',' << csv_number(r.rel_bias) << ',' << csv_number(r.sun_lit_rel_rmse) << ',' << csv_number(r.shadow_rel_rmse) << ','
+            << csv_number(r.iou) << ',' << csv_number(r.mask_disagree) << ',' << csv_number(r.sun_fraction_mae) << ',' << csv_number(r.shadow_share)
+            << ',' << csv_number(r.frame_ms) << ',' << csv_number(r.sun_visibility_ms) << ',' << csv_number(r.reference_sun_ms) << ','
+            << csv_number(r.reference_s) << '\n';
     return out.str();
 }
 

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "app/csv_number.hpp"
 #include "app/command.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -186,13 +187,6 @@ void set_exact_variant(visibility::HorizonOptions& ho, const std::string& varian
     ho.exact_lines_per_texel = lines;
 }
 
-std::string fmt(double v) {
-    if (std::isnan(v)) return "";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-
 void print_row(const Row& r) {
     std::printf("%-28s %-14s %-9s %4d %9.1f %9.3f %9.3f %9.5f %9.5f %9.5f %9.5f %9.5f %9.5f\n", r.dem.c_str(),
                 r.method.c_str(), r.variant.c_str(), r.directions, r.time_ms, r.horizon_rmse_deg, r.horizon_p99_deg,
@@ -278,9 +272,9 @@ void write_csv(const BenchVisibilityOptions& o, const std::vector<Row>& rows) {
         for (const Row& r : rows)
             csv << r.dem << ',' << r.method << ',' << r.variant << ',' << r.width << ',' << r.height << ','
                 << r.directions << ',' << o.reference_directions << ',' << (o.no_curvature ? 0 : 1) << ','
-                << fmt(r.time_ms) << ',' << fmt(r.horizon_rmse_deg) << ',' << fmt(r.horizon_p99_deg) << ','
-                << fmt(r.svf_rmse) << ',' << fmt(r.svf_p99) << ',' << fmt(r.svf_rmse_constant) << ',' << fmt(r.sky_rmse)
-                << ',' << fmt(r.sky_p99) << ',' << fmt(r.saga_visible_rmse) << ',' << fmt(r.saga_svf_rmse) << '\n';
+                << csv_number(r.time_ms) << ',' << csv_number(r.horizon_rmse_deg) << ',' << csv_number(r.horizon_p99_deg) << ','
+                << csv_number(r.svf_rmse) << ',' << csv_number(r.svf_p99) << ',' << csv_number(r.svf_rmse_constant) << ',' << csv_number(r.sky_rmse)
+                << ',' << csv_number(r.sky_p99) << ',' << csv_number(r.saga_visible_rmse) << ',' << csv_number(r.saga_svf_rmse) << '\n';
         write_atomically(o.csv, [&](const std::filesystem::path& tmp) {
             std::ofstream out(tmp, std::ios::binary);
             out << csv.str();

@@ -55,6 +55,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->check(CLI::Range(0.0, 1e6));
     cmd.add_option("--exp-method", a.exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")
         ->capture_default_str();
+    cmd.add_flag("--no-band-correction", a.no_band_correction,
+                 "Keep the diffuse transfer as exponentiated (default: scaled per SH band so open ground gets the exact projected cosine; docs/rendering.md)");
     cmd.add_flag("--cpu", a.cpu, "Shade on the CPU (the only path so far; the Vulkan path will be the default)");
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")
         ->capture_default_str()
@@ -82,6 +84,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.directions = a.directions;
     o.renderer.curvature = !a.no_curvature;
     o.renderer.exp_method = sh::parse_exp_method(a.exp_method);
+    o.renderer.band_correction = !a.no_band_correction;
     o.renderer.threads = a.threads;
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     return o;

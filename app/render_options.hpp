@@ -26,6 +26,7 @@ struct RenderArgs {
     bool cpu = false;
     double haze_km = 250.0;
     std::string exp_method = "scaling_squaring";
+    bool no_band_correction = false;
     int threads = 0;
 };
 

@@ -56,7 +56,9 @@ RendererOptions small_options() {
 
 TEST(FrameRenderer, FlatPlaneUnderUniformSkyGivesAlbedoTimesL) {
     Terrain t(16, 16, 500.0f);
-    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
+    RendererOptions o = small_options();
+    o.band_correction = false;  // the raw log-SH pipeline; the corrected one is tested below
+    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, o);
     const SunState sun{180.0, 40.0};
     const UniformSky sky(2.0f, sun_direction(sun), 0.0f);
     std::vector<glm::vec3> out;
@@ -72,6 +74,30 @@ TEST(FrameRenderer, FlatPlaneUnderUniformSkyGivesAlbedoTimesL) {
     }
     // Every texel of an open plane sees the same sky: the result must not vary across it.
     EXPECT_NEAR(out[0].x, out[135].x, 1e-4f);
+}
+
+// With the band correction (the default) an open texel's transfer is the projected clamped
+// cosine, so a flat plane under any sky gets albedo * E / pi up to the visibility's lower-hemisphere
+// floor and the sky's SH quadrature: 1% here. A sky brighter at the zenith (L = a + b z,
+// E / pi = a + 2b/3) checks more than the DC band.
+class ZenithSky : public UniformSky {
+public:
+    ZenithSky(float a, float b, glm::dvec3 sun_dir) : UniformSky(0.0f, sun_dir, 0.0f), a_(a), b_(b) {}
+    light::Rgb radiance(const glm::dvec3& d) const override { return light::Rgb(d.z > 0 ? a_ + b_ * float(d.z) : 0.0f); }
+
+private:
+    float a_, b_;
+};
+
+TEST(FrameRenderer, BandCorrectionMakesAnOpenPlaneExact) {
+    Terrain t(16, 16, 500.0f);
+    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
+    const SunState sun{180.0, 40.0};
+    const ZenithSky sky(1.0f, 1.5f, sun_direction(sun));
+    std::vector<glm::vec3> out;
+    r.render(sky, sun, out);
+    const float expected = 0.3f * (1.0f + 2.0f * 1.5f / 3.0f);
+    for (const auto& c : out) EXPECT_NEAR(c.x, expected, expected * 0.01f);
 }
 
 TEST(FrameRenderer, SunOnAFlatPlaneIsLambertExactly) {

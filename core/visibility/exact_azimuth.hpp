@@ -69,6 +69,11 @@ private:
     static constexpr int kTile = 16;
     int tiles_x_ = 0;
     std::vector<float> block_top_;  // [tile row][tile col]; empty = use z_top_
+    // Prefix count of rows holding a void: the near field's vectorised path needs void-free rows.
+    std::vector<int> void_rows_before_;
+    bool voids_in_rows(int r_first, int r_last) const {
+        return void_rows_before_[std::size_t(r_last) + 1] != void_rows_before_[std::size_t(r_first)];
+    }
     float near_top(int col, int row) const {
         return block_top_.empty() ? z_top_ : block_top_[std::size_t(row / kTile) * tiles_x_ + col / kTile];
     }

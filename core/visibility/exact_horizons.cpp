@@ -11,10 +11,11 @@
 // are) towards phi's opposite, keeping the upper convex hull of the profile behind.
 //
 // Far field: a line sample's horizon is the tangent from it to the hull of the points at least
-// near_field_texels behind it (DelayedHull: amortised O(1) insertion, O(log h) query), and each
-// texel takes the tent-weighted mean of the far horizons of the line samples within one line
-// spacing of it (tangents are averaged: exact on a plane; second order in the lateral offset
-// elsewhere).
+// near_field_texels behind it (DelayedHull: amortised O(1) insertion; the query walks from the
+// previous tangent vertex), and each texel takes the tent-weighted mean of the far horizons
+// of the line samples within one line spacing of it (tangents are averaged: exact on a plane;
+// second order in the lateral offset elsewhere).
+//
 // Near field: a texel centre is a crease of the bilinear surface, so the slope of the first
 // texel or two changes abruptly with a lateral offset of a fraction of a texel; interpolating
 // it from lines beside the texel erred by degrees on real DEMs. So the first near_field_texels
@@ -42,13 +43,43 @@
 namespace ts::visibility {
 namespace {
 
-// One near-field step from a texel centre: offset, bilinear weights, 1/distance, curvature drop.
+// One near-field step from a texel centre: offset, bilinear fractions, 1/distance, curvature
+// drop. The slope of a step is float arithmetic, the same in the scalar and the vectorised
+// march (so a band-limited caller sees the same near field as the full one).
 struct NearStep {
     double dcol, drow;
     int col0, row0;
-    float w00, w10, w01, w11;
-    double inv_s, drop;
+    float fc, fr;
+    float inv_s, drop;
+    double inv_s_d, drop_d;  // the same in double, for the early exit
 };
+
+// The bilinear surface from a step's 4 corners, as surface_sampling.hpp's bilinear_valid
+// blends 4 valid corners (so flat ground stays exactly flat).
+inline float near_height(float z00, float z10, float z01, float z11, float fc, float fr) {
+    const float top = z00 + fc * (z10 - z00), bottom = z01 + fc * (z11 - z01);
+    return top + fr * (bottom - top);
+}
+
+inline float near_slope(float zs, float z0, const NearStep& st) {
+    return (zs - z0) * st.inv_s - st.drop;
+}
+
+// One near-field step for the receivers [begin, end) of a row: best = max(best, slope of the
+// step's bilinear sample). p0 points at the step's upper-left corner for receiver 0 of the row;
+// every corner exists and is valid (finish_rows checks). Compiled for AVX2 where the CPU has
+// it; the loop is the same float arithmetic either way.
+// clang-format off
+[[gnu::optimize("O3"), gnu::target_clones("avx2", "default")]]
+// clang-format on
+void near_step_row(const float* __restrict p0, int w, const float* __restrict z0, const NearStep& st, int begin, int end,
+                   float* __restrict best) {
+    const float* __restrict p1 = p0 + w;
+    for (int lc = begin; lc < end; ++lc) {
+        const float slope = near_slope(near_height(p0[lc], p0[lc + 1], p1[lc], p1[lc + 1], st.fc, st.fr), z0[lc], st);
+        best[lc] = slope > best[lc] ? slope : best[lc];
+    }
+}
 
 struct SweepContext {
     const terrain::HeightGrid& grid;
@@ -114,6 +145,22 @@ constexpr double kEdgeSlack = 1e-7;
 // two points a hair apart whose rounding noise reads as a near-vertical blocker.
 constexpr double kMinCrossing = 1e-3;
 
+// bilinear_valid at (col, row) inside the grid, with its common case (4 valid corners, not on
+// the last row or column) inline: the same arithmetic, so the same value.
+[[gnu::always_inline]] inline float surface_at(const terrain::HeightGrid& g, double col, double row) {
+    const int c0 = int(col), r0 = int(row);
+    if (c0 + 1 < g.width && r0 + 1 < g.height) {
+        const float* p = g.z.data() + std::size_t(r0) * g.width + c0;
+        const float z00 = p[0], z10 = p[1], z01 = p[g.width], z11 = p[g.width + 1];
+        if (!std::isnan(z00) && !std::isnan(z10) && !std::isnan(z01) && !std::isnan(z11)) {
+            const float fc = float(col - c0), fr = float(row - r0);
+            const float top = z00 + fc * (z10 - z00), bottom = z01 + fc * (z11 - z01);
+            return top + fr * (bottom - top);
+        }
+    }
+    return bilinear_valid(g.z.data(), g.width, g.height, col, row);
+}
+
 // Blocker-only points of the bilinear surface between two consecutive line samples a = (col,
 // row) and b, at distances s and s + ds: where the segment crosses a texel row or column the
 // surface has a height of its own, and inside a cell the surface along the segment is a
@@ -139,8 +186,7 @@ void add_segment_blockers(DelayedHull& hull, const terrain::HeightGrid& g, doubl
         const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
         for (double f : {mid, cuts[i + 1]}) {
             if (f >= 1.0) break;  // the end point is the next line sample itself
-            const float z =
-                bilinear_valid(g.z.data(), g.width, g.height, col_a + f * (col_b - col_a), row_a + f * (row_b - row_a));
+            const float z = surface_at(g, col_a + f * (col_b - col_a), row_a + f * (row_b - row_a));
             if (!std::isnan(z)) hull.add(s + f * ds, double(z) - curvature * (s + f * ds) * (s + f * ds));
         }
     }
@@ -149,11 +195,11 @@ void add_segment_blockers(DelayedHull& hull, const terrain::HeightGrid& g, doubl
 // Adds a line sample's horizon to the texels it lies between. `across` is the fractional
 // texel coordinate across the sweep (row for column sweeps, col for row sweeps).
 inline void splat(FarFieldSums& acc, const SweepContext& cx, bool across_is_row, int along, double across, float slope,
-                  double spacing) {
+                  double inv_spacing) {
     if (std::isnan(slope)) return;
     const int t0 = int(std::floor(across));
     for (int t = t0; t <= t0 + 1; ++t) {
-        const double w = 1.0 - std::abs(across - t) / spacing;  // tent over the local line spacing
+        const double w = 1.0 - std::abs(across - t) * inv_spacing;  // tent over the local line spacing
         if (w <= 0) continue;
         const int col = across_is_row ? along : t;
         const int row = across_is_row ? t : along;
@@ -178,6 +224,7 @@ void sweep_columns(const SweepContext& cx, double phi, long n_begin, long n_end,
     // Stop past the window: nothing left to receive.
     const int c_stop = cs > 0 ? first_col(cx) - 1 : last_col(cx) + 1;
     const double gmax = cx.metrics.g_max();
+    const double abs_cs_over_h = std::abs(cs) / h;  // 1 / line spacing across rows is this * rho
     for (long n = n_begin; n < n_end; ++n) {
         acc.hull.clear();
         double s = 0, prev_row = -1;
@@ -202,7 +249,7 @@ void sweep_columns(const SweepContext& cx, double phi, long n_begin, long n_end,
             const float z = r0 + 1 < g.height ? lerp_valid(g.at(c, r0), g.at(c, r0 + 1), fr) : g.at(c, r0);
             if (std::isnan(z)) continue;  // inside a void: neither blocks nor receives
             const float slope = far_horizon_at(acc.hull, s, z, cx.curvature);
-            splat(acc, cx, true, c, row, slope, h / std::abs(cs) / cx.metrics.rho(row));
+            splat(acc, cx, true, c, row, slope, abs_cs_over_h * cx.metrics.rho(row));
         }
     }
 }
@@ -239,7 +286,7 @@ void sweep_rows(const SweepContext& cx, double phi, long n_begin, long n_end, Fa
             const float z = c0 + 1 < g.width ? lerp_valid(g.at(c0, r), g.at(c0 + 1, r), fc) : g.at(c0, r);
             if (std::isnan(z)) continue;
             const float slope = far_horizon_at(acc.hull, s, z, cx.curvature);
-            splat(acc, cx, false, r, col, slope, 1.0 / cx.lines_per_texel);
+            splat(acc, cx, false, r, col, slope, double(cx.lines_per_texel));
         }
     }
 }
@@ -253,6 +300,12 @@ ExactAzimuthSweep::ExactAzimuthSweep(const terrain::HeightGrid& grid, const Hori
       curvature_(curvature_factor(options.curvature)),
       lines_per_texel_(std::max(1, options.exact_lines_per_texel)),
       z_top_(highest_height(grid)) {
+    void_rows_before_.assign(std::size_t(grid.height) + 1, 0);
+    for (int r = 0; r < grid.height; ++r) {
+        bool has_void = false;
+        for (int c = 0; c < grid.width; ++c) has_void |= std::isnan(grid.at(c, r));
+        void_rows_before_[std::size_t(r) + 1] = void_rows_before_[std::size_t(r)] + (has_void ? 1 : 0);
+    }
     // The near field in metres: near_field_texels of the grid's smallest spacing.
     double unit = std::numeric_limits<double>::infinity();
     for (int r = 0; r < grid.height; ++r) unit = std::min({unit, metrics_.dx(r), metrics_.dy(r)});
@@ -319,7 +372,39 @@ void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* w
     const double cs = std::cos(phi), sn = std::sin(phi);
     const double near_m = near_m_;
     std::vector<NearStep> near_steps;
+    std::vector<float> row_best(std::size_t(std::max(0, win.width)));
     const double wmax = grid.width - 1, hmax = grid.height - 1;
+    const float* z = grid.z.data();
+    const int w = grid.width;
+    // Without a band every step counts, so interior rows take the vectorised march below.
+    const bool whole_band =
+        band_lo == -std::numeric_limits<double>::infinity() && band_hi == std::numeric_limits<double>::infinity();
+
+    // One receiver, stepping as the reference does, with the exact early exits.
+    auto march_texel = [&](int lr, int lc, double best) {
+        const int row = win.row0 + lr, col = win.col0 + lc;
+        const float z0 = grid.at(col, row);
+        const float z_top = near_top(col, row);
+        for (const NearStep& st : near_steps) {
+            const double c = col + st.dcol, r = row + st.drow;
+            if (best >= band_hi) break;  // above the band whatever follows
+            if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
+            // Exact early exit: even the highest point in reach cannot raise the horizon
+            // (into the band).
+            if ((double(z_top) - z0) * st.inv_s_d - st.drop_d <= std::max(best, band_lo)) break;
+            const int c0 = col + st.col0, r0 = row + st.row0;
+            float zs = kNoHeight;
+            if (c0 >= 0 && r0 >= 0 && c0 + 1 < w && r0 + 1 < grid.height) {
+                const float* p = z + std::size_t(r0) * w + c0;
+                zs = near_height(p[0], p[1], p[w], p[w + 1], st.fc, st.fr);
+            }
+            if (std::isnan(zs))  // a void corner or the grid's last row/column
+                zs = bilinear_valid(z, w, grid.height, std::clamp(c, 0.0, wmax), std::clamp(r, 0.0, hmax));
+            if (!std::isnan(zs)) best = std::max(best, double(near_slope(zs, z0, st)));
+        }
+        return best;
+    };
+
     for (int lr = lr_begin; lr < lr_end; ++lr) {
         const int row = win.row0 + lr;
         // Near-field steps as the reference takes them (1/4 texel); over a few texels the
@@ -330,43 +415,51 @@ void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* w
         const double dc = cs * ds / dx, dr = -sn * ds / dy;
         const int steps = near_m > 0 ? int(near_m / ds + 1e-9) : 0;
         near_steps.resize(std::size_t(steps));
+        int c_lo = 0, c_hi = 0, r_lo = 0, r_hi = 0;  // extreme integer offsets of the steps
         for (int k = 1; k <= steps; ++k) {
             NearStep& st = near_steps[std::size_t(k - 1)];
             st.dcol = k * dc;
             st.drow = k * dr;
             st.col0 = int(std::floor(st.dcol));
             st.row0 = int(std::floor(st.drow));
-            const float fc = float(st.dcol - st.col0), fr = float(st.drow - st.row0);
-            st.w00 = (1 - fc) * (1 - fr), st.w10 = fc * (1 - fr), st.w01 = (1 - fc) * fr, st.w11 = fc * fr;
-            st.inv_s = 1.0 / (k * ds);
-            st.drop = curvature_ * k * ds;
+            st.fc = float(st.dcol - st.col0), st.fr = float(st.drow - st.row0);
+            st.inv_s_d = 1.0 / (k * ds);
+            st.drop_d = curvature_ * k * ds;
+            st.inv_s = float(st.inv_s_d), st.drop = float(st.drop_d);
+            c_lo = std::min(c_lo, st.col0), c_hi = std::max(c_hi, st.col0);
+            r_lo = std::min(r_lo, st.row0), r_hi = std::max(r_hi, st.row0);
         }
-        const float* z = grid.z.data();
-        const int w = grid.width;
-        for (int lc = 0; lc < win.width; ++lc) {
-            const std::size_t i = std::size_t(lr) * win.width + lc;
-            const int col = win.col0 + lc;
-            const float z0 = grid.at(col, row);
-            if (std::isnan(z0)) continue;  // void receiver: NaN from the dispatcher
-            const float z_top = near_top(col, row);
-            double best = weight[i] > 0 ? double(sum[i] / weight[i]) : ProfileHull::kNone;
-            for (const NearStep& st : near_steps) {
-                const double c = col + st.dcol, r = row + st.drow;
-                if (best >= band_hi) break;  // above the band whatever follows
-                if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
-                // Exact early exit: even the highest point in reach cannot raise the horizon
-                // (into the band).
-                if ((double(z_top) - z0) * st.inv_s - st.drop <= std::max(best, band_lo)) break;
-                const int c0 = col + st.col0, r0 = row + st.row0;
-                float zs = kNoHeight;
-                if (c0 >= 0 && r0 >= 0 && c0 + 1 < w && r0 + 1 < grid.height) {
-                    const float* p = z + std::size_t(r0) * w + c0;
-                    zs = st.w00 * p[0] + st.w10 * p[1] + st.w01 * p[w] + st.w11 * p[w + 1];
-                }
-                if (std::isnan(zs))  // a void corner or the grid's last row/column
-                    zs = bilinear_valid(z, w, grid.height, std::clamp(c, 0.0, wmax), std::clamp(r, 0.0, hmax));
-                if (!std::isnan(zs)) best = std::max(best, (double(zs) - z0) * st.inv_s - st.drop);
+        const std::size_t i_row = std::size_t(lr) * win.width;
+        // Vectorised interior: texels whose every step reads 4 existing corners of void-free
+        // rows. All steps are taken (the early exit only skips steps that cannot raise the
+        // maximum, so the result is the same), as one SIMD loop over the row per step.
+        int v_begin = 0, v_end = 0;
+        if (whole_band && steps > 0 && row + r_lo >= 0 && row + r_hi + 1 < grid.height &&
+            !voids_in_rows(row + r_lo, row + r_hi + 1)) {
+            v_begin = std::clamp(-c_lo - win.col0, 0, win.width);
+            v_end = std::clamp(w - 1 - c_hi - win.col0, v_begin, win.width);
+        }
+        if (v_end > v_begin) {
+            float* __restrict best = row_best.data();
+            const float* __restrict s_row = sum + i_row;
+            const float* __restrict w_row = weight + i_row;
+            const float* __restrict z0 = z + std::size_t(row) * w + win.col0;
+            for (int lc = v_begin; lc < v_end; ++lc)
+                best[lc] = w_row[lc] > 0 ? s_row[lc] / w_row[lc] : -std::numeric_limits<float>::infinity();
+            for (const NearStep& st : near_steps)
+                near_step_row(z + std::size_t(row + st.row0) * w + win.col0 + st.col0, w, z0, st, v_begin, v_end, best);
+            for (int lc = v_begin; lc < v_end; ++lc) {
+                const float b = best[lc];
+                plane[i_row + lc] = b == -std::numeric_limits<float>::infinity() ? 0.0f : float(fast_atan(double(b)));
             }
+        }
+        for (int lc = 0; lc < win.width; ++lc) {
+            if (lc == v_begin && v_end > v_begin) lc = v_end;
+            if (lc >= win.width) break;
+            const std::size_t i = i_row + lc;
+            if (std::isnan(grid.at(win.col0 + lc, row))) continue;  // void receiver: NaN from the dispatcher
+            const double far = weight[i] > 0 ? double(sum[i] / weight[i]) : ProfileHull::kNone;
+            const double best = march_texel(lr, lc, far);
             plane[i] = best == ProfileHull::kNone ? 0.0f : float(fast_atan(best));
         }
     }

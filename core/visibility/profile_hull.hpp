@@ -14,7 +14,10 @@ namespace ts::visibility {
 
 class ProfileHull {
 public:
-    void clear() { n_ = 0; }
+    void clear() {
+        n_ = 0;
+        hint_ = 0;
+    }
     bool empty() const { return n_ == 0; }
 
     // Adds point (s, u) (s larger than every earlier point's) and returns the largest slope
@@ -35,21 +38,25 @@ public:
     }
 
     // Largest slope (u_i - u) / (s - s_i) from a point (s, u) beyond every hull point, without
-    // adding it: binary search for the tangent vertex (the slopes are unimodal along an upper
-    // convex chain). -infinity on an empty hull.
-    double max_slope_from(double s, double u) const {
+    // adding it: the tangent vertex, where the slopes (unimodal along an upper convex chain) stop
+    // rising. Consecutive queries along a sweep line mostly keep their tangent vertex or move it
+    // by one or two, so the search walks from the previous answer instead of bisecting: the
+    // same vertex, in a step or two of predictable branches instead of ~log2(h) unpredictable
+    // ones. -infinity on an empty hull.
+    double max_slope_from(double s, double u) {
         if (n_ == 0) return kNone;
-        std::size_t lo = 0, hi = n_ - 1;
-        while (lo < hi) {
-            const std::size_t mid = (lo + hi) / 2;
-            const Point& a = pts_[mid];
-            const Point& b = pts_[mid + 1];
-            if ((b.u - u) * (s - a.s) >= (a.u - u) * (s - b.s))
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        return (pts_[lo].u - u) / (s - pts_[lo].s);
+        // Whether the slope to vertex k + 1 is at least the slope to vertex k.
+        auto rises = [&](std::size_t k) {
+            const Point& a = pts_[k];
+            const Point& b = pts_[k + 1];
+            return (b.u - u) * (s - a.s) >= (a.u - u) * (s - b.s);
+        };
+        const std::size_t n = n_;
+        std::size_t i = std::min(hint_, n - 1);
+        while (i + 1 < n && rises(i)) ++i;
+        while (i > 0 && !rises(i - 1)) --i;
+        hint_ = i;
+        return (pts_[i].u - u) / (s - pts_[i].s);
     }
 
     static constexpr double kNone = -std::numeric_limits<double>::infinity();
@@ -61,14 +68,17 @@ private:
     // Pop vertices that the new point hides: the last vertex B leaves the upper hull if the
     // one before it, A, is seen at least as high from (s, u).
     void pop_hidden(double s, double u) {
-        while (n_ >= 2) {
-            const Point& a = pts_[n_ - 2];
-            const Point& b = pts_[n_ - 1];
+        std::size_t n = n_;  // a local count: the member would be stored back on every pop
+        const Point* p = pts_.data();
+        while (n >= 2) {
+            const Point& a = p[n - 2];
+            const Point& b = p[n - 1];
             if ((a.u - u) * (s - b.s) >= (b.u - u) * (s - a.s))
-                --n_;
+                --n;
             else
                 break;
         }
+        n_ = n;
     }
     void push(double s, double u) {
         if (n_ == pts_.size()) pts_.resize(2 * n_ + 64);  // grows to the longest line, then never
@@ -76,6 +86,7 @@ private:
     }
     std::vector<Point> pts_;
     std::size_t n_ = 0;
+    std::size_t hint_ = 0;  // the last query's tangent vertex
 };
 
 // The hull of the points at least `delay` behind the query point: the far field of a line,

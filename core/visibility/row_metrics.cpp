@@ -25,15 +25,6 @@ RowMetrics::RowMetrics(const terrain::HeightGrid& grid) : dx_(grid.dx_m), dy_(gr
     for (std::size_t r = 1; r < dx_.size(); ++r) min_rho_ = std::min(min_rho_, dy_[r] / dx_[r]);
 }
 
-double RowMetrics::lerp_rows(const std::vector<double>& v, double row) {
-    if (row <= 0) return v.front();
-    const double last = double(v.size() - 1);
-    if (row >= last) return v.back();
-    const auto r0 = std::size_t(row);
-    const double f = row - double(r0);
-    return v[r0] + f * (v[r0 + 1] - v[r0]);
-}
-
 double RowMetrics::row_of_g(double value) const {
     const int last = int(g_.size()) - 1;
     if (last == 0 || value <= 0) return 0.0;

@@ -5,6 +5,7 @@
 // With rho(r) = dy(r) / dx(r) and G(r) = integral_0^r rho, a constant-azimuth line satisfies
 // col * sin(phi) + G(row) * cos(phi) = const: in (col, G) coordinates it is straight. On a
 // projected grid G is linear and the lines are the usual straight grid lines.
+#include <cstddef>
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"
@@ -34,7 +35,15 @@ public:
     double row_of_g(double value) const;
 
 private:
-    static double lerp_rows(const std::vector<double>& v, double row);
+    // Inline: the sweep calls it for every line sample.
+    static double lerp_rows(const std::vector<double>& v, double row) {
+        if (row <= 0) return v.front();
+        const double last = double(v.size() - 1);
+        if (row >= last) return v.back();
+        const auto r0 = std::size_t(row);
+        const double f = row - double(r0);
+        return v[r0] + f * (v[r0 + 1] - v[r0]);
+    }
     std::vector<double> dx_, dy_, g_;
     double mean_rho_ = 1.0, min_rho_ = 1.0;
 };

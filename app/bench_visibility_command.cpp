@@ -51,6 +51,7 @@ struct BenchVisibilityOptions {
     int full_directions = 32;
     bool full = false;
     bool whole = false;  // --whole: the whole DEM on the GPU, the CPU and SAGA, stage by stage
+    std::string whole_method = "exact";  // --whole-method: exact or pyramid (both run on the GPU)
     int repeats = 3;
     bool no_saga = false;
     std::optional<std::uint32_t> device;
@@ -337,9 +338,10 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
     ho.directions = D;
     ho.curvature = !o.no_curvature;
     ho.threads = o.threads;
-    std::printf("%s: %dx%d texels, D = %d, exact horizons -> svf, sky_visible, log-SH; median of %d runs "
+    ho.method = *visibility::parse_method(o.whole_method);
+    std::printf("%s: %dx%d texels, D = %d, %s horizons -> svf, sky_visible, log-SH; median of %d runs "
                 "(wall ms; the machine is shared, compare rows of one run)\n",
-                name.c_str(), dem.width, dem.height, D, o.repeats);
+                name.c_str(), dem.width, dem.height, D, o.whole_method.c_str(), o.repeats);
 
     // The reference: raymarch horizons of a centred window, blockers from the whole grid.
     const visibility::ReceiverWindow win = centred(dem.width, dem.height, o.window);
@@ -623,6 +625,9 @@ void add_bench_visibility_command(CLI::App& bench) {
                   "Instead of the window study: the whole DEM at --full-directions, GPU and CPU stage by stage "
                   "(median of --repeats), texel-azimuths per second, svf RMSE against the raymarch on the centred "
                   "--window, and saga_cmd ta_lighting 3 (defaults, same sectors) on a UTM copy made by gdalwarp");
+    cmd->add_option("--whole-method", o->whole_method, "--whole: the horizon method timed (exact or pyramid)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"exact", "pyramid"}));
     cmd->add_option("--repeats", o->repeats, "--whole: runs per path (median reported)")
         ->capture_default_str()
         ->check(CLI::Range(1, 20));

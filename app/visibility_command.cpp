@@ -55,7 +55,7 @@ struct VisibilityResults {
 };
 
 #ifdef TERRASHADE_HAS_GPU
-// The Vulkan path: exact horizons, log-SH and (linear wedges) svf/sky_visible on the device.
+// The Vulkan path: exact or pyramid horizons, log-SH and (linear wedges) svf/sky_visible on the device.
 // Returns nothing when Vulkan cannot run and no --device was asked for: the caller falls
 // back to the CPU after a one-line warning. With --device, the error stands (it names the
 // package to install).
@@ -76,7 +76,7 @@ std::optional<VisibilityResults> run_on_gpu(const VisibilityOptions& o, const te
     go.log_sh = want_sh;
     go.sky = want_sky;
     const auto t0 = std::chrono::steady_clock::now();
-    ProgressBar bar("horizons (exact, GPU)", std::uint64_t(grid.width) * std::uint64_t(grid.height) *
+    ProgressBar bar("horizons (" + o.method + ", GPU)", std::uint64_t(grid.width) * std::uint64_t(grid.height) *
                                                  std::uint64_t(o.horizon.directions), "rays");
     go.horizon.progress = &bar;
     gpu::visibility::Result r = gpu::visibility::compute(*context, grid, go);
@@ -137,9 +137,10 @@ void run_visibility(VisibilityOptions& o) {
     std::optional<VisibilityResults> results;
 #ifdef TERRASHADE_HAS_GPU
     if (!o.cpu) {
-        if (o.horizon.method != visibility::HorizonMethod::exact) {
-            if (o.device) throw InputError("--device: the GPU computes only --method exact; drop --device or use exact");
-            std::fprintf(stderr, "terrashade: note: --method %s runs on the CPU (the GPU has exact only)\n",
+        if (o.horizon.method == visibility::HorizonMethod::raymarch) {
+            if (o.device)
+                throw InputError("--device: the GPU computes --method exact and pyramid; drop --device or pick one");
+            std::fprintf(stderr, "terrashade: note: --method %s runs on the CPU (the GPU has exact and pyramid)\n",
                          o.method.c_str());
         } else {
             results = run_on_gpu(o, grid.view(), want_sh, want_sky);

@@ -9,21 +9,15 @@
 
 namespace ts::terrain {
 
+namespace shared {
+using std::isnan;
+#include "core/terrain/valid_bilinear_shared.h"
+}  // namespace shared
+
 // Corners z00 (col c, row r), z10 (c+1, r), z01 (c, r+1), z11 (c+1, r+1); fractions fc, fr in [0, 1].
+// The formula is valid_bilinear_shared.h, the text the GPU's pyramid march compiles too.
 inline float blend_valid_corners(float z00, float z10, float z01, float z11, float fc, float fr) {
-    if (!std::isnan(z00) && !std::isnan(z10) && !std::isnan(z01) && !std::isnan(z11)) {
-        const float top = z00 + fc * (z10 - z00), bottom = z01 + fc * (z11 - z01);
-        return top + fr * (bottom - top);
-    }
-    const float w00 = (1 - fc) * (1 - fr), w10 = fc * (1 - fr), w01 = (1 - fc) * fr, w11 = fc * fr;
-    float sum = 0, wsum = 0;
-    if (!std::isnan(z00)) sum += w00 * z00, wsum += w00;
-    if (!std::isnan(z10)) sum += w10 * z10, wsum += w10;
-    if (!std::isnan(z01)) sum += w01 * z01, wsum += w01;
-    if (!std::isnan(z11)) sum += w11 * z11, wsum += w11;
-    // A point exactly on a valid texel beside voids has weight only there; wsum == 0 means
-    // every corner with weight is a void: no surface.
-    return wsum > 1e-6f ? sum / wsum : std::numeric_limits<float>::quiet_NaN();
+    return shared::ts_blend_valid_corners(z00, z10, z01, z11, fc, fr);
 }
 
 // The lower-left corner index and fraction for a coordinate x in [0, n-1] on an axis of n

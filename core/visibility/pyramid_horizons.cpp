@@ -5,7 +5,8 @@
 // straight grid line with the receiver row's spacing (on a geographic grid the drift from a
 // true constant-azimuth line over the walk is far below this method's own error).
 // The levels are core/terrain's HeightPyramid (voids skipped in the means), read with the
-// same void-skipping bilinear surface as the other methods (sample_level0_valid).
+// same void-skipping bilinear surface as the other methods (sample_level0_valid). The sample list
+// and per-sample formulas are shared with the GPU (pyramid_schedule.hpp, pyramid_shared.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,32 +18,12 @@
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/pyramid_schedule.hpp"
+#include "core/visibility/pyramid_shared.hpp"
 #include "core/visibility/receiver_setup.hpp"
 #include "core/visibility/row_metrics.hpp"
 
 namespace ts::visibility {
-
-namespace {
-
-struct Sample {
-    double tau;  // distance in texels
-    int level;
-};
-
-std::vector<Sample> schedule_samples(int samples_per_octave, int levels, double max_tau) {
-    std::vector<Sample> out;
-    const double ratio = std::exp2(1.0 / samples_per_octave);
-    for (int k = 0;; ++k) {
-        const double tau = std::exp2(double(k) / samples_per_octave);
-        if (tau > max_tau) break;
-        const double gap = tau * (ratio - 1.0);
-        const int level = std::clamp(int(std::floor(std::log2(std::max(gap, 1.0)))), 0, levels - 1);
-        out.push_back({tau, level});
-    }
-    return out;
-}
-
-}  // namespace
 
 HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
     const PyramidSchedule* schedule = find_pyramid_schedule(options.pyramid_schedule);
@@ -55,9 +36,8 @@ HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOption
     HorizonSet out = zero_horizons(win, options.directions);
     const double curvature = curvature_factor(options.curvature);
     const float z_top = highest_height(grid);
-    const double max_tau = 2.0 * std::hypot(double(grid.width), double(grid.height));
-    const std::vector<Sample> samples =
-        schedule_samples(schedule->samples_per_octave, pyramid.level_count(), max_tau);
+    const std::vector<PyramidSample> samples = pyramid_samples(
+        schedule->samples_per_octave, pyramid.level_count(), pyramid_max_tau(grid.width, grid.height));
     const double wmax = grid.width - 1, hmax = grid.height - 1;
 
     parallel_for(win.height, thread_count(options.threads), [&](int lr, int) {
@@ -71,15 +51,15 @@ HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOption
                 const double phi = azimuth_rad(d, options.directions);
                 const double step_c = std::cos(phi) * unit / dx, step_r = -std::sin(phi) * unit / dy;
                 double best = -std::numeric_limits<double>::infinity();
-                for (const Sample& smp : samples) {
+                for (const PyramidSample& smp : samples) {
                     const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
                     if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7)
                         break;  // edge rows survive rounding
                     const double s = smp.tau * unit;
-                    if ((double(z_top) - z0) / s - curvature * s <= best) break;
+                    if (shared::ts_pyramid_slope(z_top, z0, s, curvature) <= best) break;
                     const float z = pyramid.level(smp.level).sample_level0_valid(c, r);
                     if (std::isnan(z)) continue;
-                    best = std::max(best, (double(z) - z0) / s - curvature * s);
+                    best = std::max(best, shared::ts_pyramid_slope(z, z0, s, curvature));
                 }
                 out.plane(d)[std::size_t(lr) * win.width + lc] = horizon_angle(best);
             }

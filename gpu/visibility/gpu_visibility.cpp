@@ -18,6 +18,7 @@
 #include "core/visibility/row_metrics.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/kernel.hpp"
+#include "gpu/visibility/gpu_pyramid.hpp"
 
 namespace ts::gpu::visibility {
 namespace {
@@ -202,6 +203,7 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     const auto& ho = options.horizon;
     if (grid.width < 1 || grid.height < 1 || grid.z.size() != std::size_t(grid.width) * std::size_t(grid.height))
         throw InputError("height grid: empty or inconsistent size");
+    if (ho.method == vis::HorizonMethod::pyramid) return compute_pyramid(context, grid, options);  // gpu_pyramid.cpp
     if (ho.method != vis::HorizonMethod::exact)
         throw InputError("--method " + std::string(vis::method_name(ho.method)) +
                          ": only exact runs on the GPU so far (use --cpu)");

@@ -27,7 +27,7 @@ namespace ts::gpu::visibility {
 
 struct Options {
     // directions, curvature, exact_lines_per_texel, exact_near_field_texels, window and
-    // progress are honoured; method must be exact (the only one on the GPU so far).
+    // progress are honoured; method exact, or pyramid (handed to compute_pyramid, gpu_pyramid.hpp).
     ts::visibility::HorizonOptions horizon;
     float log_eps = ts::visibility::kDefaultVisibilityLogEps;
     bool log_sh = true;  // compute the 16 log-SH coefficients per texel

@@ -92,10 +92,28 @@ TEST_F(VisibilityGpuCli, DefaultRunsOnTheDeviceAndAgreesWithCpu) {
 }
 
 TEST_F(VisibilityGpuCli, MethodsTheGpuLacksRunOnTheCpuWithANote) {
-    const Result r = run(kWindow + " --directions 8 --method pyramid --svf " + (dir_ / "p.tif").string());
+    const Result r = run(kWindow + " --directions 8 --method raymarch --svf " + (dir_ / "p.tif").string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("--method pyramid runs on the CPU"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--method raymarch runs on the CPU"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("horizons on the CPU"), std::string::npos) << r.out;
+}
+
+// The pyramid method runs on the device by default and agrees with --cpu (tolerances of
+// tests/gpu/pyramid_agreement_test.cpp: svf 1e-4).
+TEST_F(VisibilityGpuCli, PyramidRunsOnTheDeviceAndAgreesWithCpu) {
+    const auto out = [&](const std::string& tag) { return (dir_ / (tag + "svf.tif")).string(); };
+    for (const std::string tag : {"gpu", "cpu"}) {
+        const Result r = run(kWindow + " --directions 8 --method pyramid --svf " + out(tag) +
+                             (tag == "cpu" ? " --cpu" : ""));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(r.out.find("horizons on the CPU") != std::string::npos, tag == "cpu") << r.out;
+        EXPECT_EQ(r.err.find("runs on the CPU"), std::string::npos) << r.err;
+    }
+    int bands_gpu = 0, bands_cpu = 0;
+    const auto g = read_all_bands(out("gpu"), bands_gpu), c = read_all_bands(out("cpu"), bands_cpu);
+    ASSERT_FALSE(g.empty());
+    ASSERT_EQ(g.size(), c.size());
+    EXPECT_LE(max_abs_diff(g, c), 1e-4);
 }
 
 TEST_F(VisibilityGpuCli, NoVulkanFallsBackToTheCpuUnlessADeviceWasAskedFor) {

@@ -1,10 +1,12 @@
 // `terrashade bench relight DEM`: how fast relighting is once the visibility is known.
 // Prints the one-time cost (horizons + log-SH, transfer vectors), the per-frame shading rate
 // (sky SH projection + sun visibility sweep + per-texel shading, no file written) as
-// `N Mpx/s`, the end-to-end rate with a PNG written per frame, and in the same run the
-// baseline: a classic hillshade (local shading, no shadows, no sky) of the same DEM.
+// `N Mpx/s`, the end-to-end rate with a PNG written per frame (on a writer thread, as `relight`
+// does, and one after the other for comparison), and in the same run the baseline: a classic
+// hillshade (local shading, no shadows, no sky) of the same DEM.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,7 +15,10 @@
 #include <string>
 
 #include "app/command.hpp"
+#include "app/render_device.hpp"
 #include "app/render_options.hpp"
+#include "core/render/background_writer.hpp"
+#include "core/render/render_backend.hpp"
 #include "core/shading/hillshade.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
@@ -26,6 +31,9 @@ struct BenchRelightArgs {
     RenderArgs render;
     int frames = 24;
     std::string out_dir;
+    int write_queue = 2;  // frames waiting for the writer thread
+    bool compare_cpu = false;  // --compare-cpu: also time the CPU path in the same run
+    bool compare_unfused = false;  // --compare-unfused: the shading stage against the CPU backend's
 };
 
 using Clock = std::chrono::steady_clock;
@@ -41,11 +49,78 @@ render::SunState sun_of_frame(int k, int n) {
     return {90.0 + 180.0 * u, 8.0 + 52.0 * std::sin(pi * u)};
 }
 
+// --compare-cpu: the one-time stages and the per-frame work of the CPU path (no backend: the
+// fused CPU shading) against this run's device path, frames interleaved so the machine's load
+// hits both alike.
+struct FrameSums {
+    double sky_s = 0, sun_s = 0, shade_s = 0, total_s = 0;
+    void add(render::Scene& scene, const render::SunState& sun, render::LinearImage& image) {
+        const auto t0 = Clock::now();
+        scene.render(sun, image);
+        total_s += seconds_since(t0);
+        const auto& t = scene.renderer().last_timings();
+        sky_s += t.sky_s, sun_s += t.sun_visibility_s, shade_s += t.shading_s;
+    }
+};
+
+void compare_with_cpu(const dem::Dem& dem, render::SceneOptions options, int frames, render::Scene& device_scene,
+                      double device_setup_s) {
+    options.renderer.backend = nullptr;
+    const auto t0 = Clock::now();
+    render::Scene scene(dem, options);
+    const double setup_s = seconds_since(t0);
+    render::LinearImage image;
+    scene.render(sun_of_frame(0, frames), image);  // warm-up, as for the device
+    FrameSums dev, cpu;
+    for (int k = 0; k < frames; ++k) {
+        dev.add(device_scene, sun_of_frame(k, frames), image);
+        cpu.add(scene, sun_of_frame(k, frames), image);
+    }
+    const double n = frames;
+    const auto& dr = device_scene.renderer();
+    const auto& cr = scene.renderer();
+    std::printf("cpu one-time: visibility %.3f s + transfer %.3f s (setup %.3f s)\n", cr.visibility_seconds(),
+                cr.transfer_seconds(), setup_s);
+    for (const auto& [name, f] : {std::pair{"device", dev}, std::pair{"cpu", cpu}})
+        std::printf("%s per frame (interleaved): sky SH + sky table %.2f ms, sun visibility sweep %.2f ms, shading "
+                    "%.2f ms, total %.2f ms; relight %.1f Mpx/s\n",
+                    name, f.sky_s / n * 1e3, f.sun_s / n * 1e3, f.shade_s / n * 1e3, f.total_s / n * 1e3,
+                    double(image.width) * image.height * n / f.total_s * 1e-6);
+    std::printf("device / cpu time: visibility %.2f, transfer %.2f, setup %.2f, shading per frame %.2f, frame %.2f\n",
+                dr.visibility_seconds() / cr.visibility_seconds(), dr.transfer_seconds() / cr.transfer_seconds(),
+                device_setup_s / setup_s, dev.shade_s / cpu.shade_s, dev.total_s / cpu.total_s);
+}
+
+// --compare-unfused: the shading stage of this run's renderer against the CPU RenderBackend's
+// (shade_transfer over the 16 fp32 planes of T_d, then the sun + albedo pass: the per-frame
+// shading before it was fused), frames interleaved so the machine's load hits both alike.
+void compare_unfused(const dem::Dem& dem, render::SceneOptions options, int frames, render::Scene& scene) {
+    const std::unique_ptr<render::RenderBackend> cpu = render::make_cpu_backend(options.renderer.threads);
+    options.renderer.backend = cpu.get();
+    render::Scene unfused(dem, options);
+    render::LinearImage image;
+    unfused.render(sun_of_frame(0, frames), image);  // warm-up
+    double s_this = 0, s_unfused = 0, min_this = 1e30, min_unfused = 1e30;
+    for (int k = 0; k < frames; ++k) {
+        scene.render(sun_of_frame(k, frames), image);
+        const double a = scene.renderer().last_timings().shading_s;
+        unfused.render(sun_of_frame(k, frames), image);
+        const double b = unfused.renderer().last_timings().shading_s;
+        s_this += a, s_unfused += b, min_this = std::min(min_this, a), min_unfused = std::min(min_unfused, b);
+    }
+    std::printf("shading stage, frames interleaved: this run's path %.2f ms (fastest %.2f), unfused CPU backend "
+                "(16 fp32 planes, then sun + albedo) %.2f ms (fastest %.2f): %.2fx (fastest %.2fx)\n",
+                s_this / frames * 1e3, min_this * 1e3, s_unfused / frames * 1e3, min_unfused * 1e3, s_unfused / s_this,
+                min_unfused / min_this);
+}
+
 void run_bench_relight(const BenchRelightArgs& a) {
     if (a.frames < 1) throw InputError("--frames must be >= 1");
-    const render::SceneOptions options = scene_options(a.render);
+    render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
     const dem::Dem dem = load_dem_input(a.render.dem);
+    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    device.apply(options);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 
     auto t0 = Clock::now();
@@ -70,14 +145,29 @@ void run_bench_relight(const BenchRelightArgs& a) {
         a.out_dir.empty() ? std::filesystem::temp_directory_path() / ("ts_bench_relight_" + std::to_string(::getpid()))
                           : std::filesystem::path(a.out_dir);
     std::filesystem::create_directories(dir);
+    auto frame_path = [&](int k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", k);
+        return (dir / name).string();
+    };
+    // As `relight` writes: frame k encoded on the writer thread while frame k+1 renders.
+    t0 = Clock::now();
+    {
+        render::BackgroundWriter writer(a.write_queue);
+        for (int k = 0; k < a.frames; ++k) {
+            scene.render(sun_of_frame(k, a.frames), image);
+            writer.write(frame_path(k), image, exposure, nullptr);
+        }
+        writer.finish();
+    }
+    const double files_s = seconds_since(t0);
+    // The same frames rendered and written one after the other (the overlap's baseline).
     t0 = Clock::now();
     for (int k = 0; k < a.frames; ++k) {
         scene.render(sun_of_frame(k, a.frames), image);
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d.png", k);
-        render::write_image((dir / name).string(), image, exposure, nullptr);
+        render::write_image(frame_path(k), image, exposure, nullptr);
     }
-    const double files_s = seconds_since(t0);
+    const double files_serial_s = seconds_since(t0);
     if (a.out_dir.empty()) std::filesystem::remove_all(dir);
 
     // Baseline in the same run: the classic hillshade, one light, no shadows, no sky.
@@ -106,11 +196,19 @@ void run_bench_relight(const BenchRelightArgs& a) {
                 sky_s / n * 1e3, sun_s / n * 1e3, shade_s / n * 1e3, frames_s / n * 1e3);
     std::printf("relight: %.1f Mpx/s (per-frame work after the visibility pass: sky SH, sun sweep, shading%s)\n",
                 pixels * n / frames_s * 1e-6, options.view == render::ViewKind::map ? "" : ", view composition");
-    std::printf("end-to-end with files: %.1f Mpx/s (%.2f ms per frame incl. tone mapping and PNG writing)\n",
-                pixels * n / files_s * 1e-6, files_s / n * 1e3);
+    std::printf("end-to-end with files: %.1f Mpx/s (%.2f ms per frame incl. tone mapping and PNG writing, on a "
+                "writer thread with a %d-frame queue); one after the other: %.1f Mpx/s (%.2f ms per frame)\n",
+                pixels * n / files_s * 1e-6, files_s / n * 1e3, a.write_queue, pixels * n / files_serial_s * 1e-6,
+                files_serial_s / n * 1e3);
     std::printf("baseline hillshade (local, no shadows, no sky): %.1f Mpx/s\n", double(texels) * n / hill_s * 1e-6);
     std::printf("with the one-time cost over %d frames: %.1f Mpx/s\n", a.frames,
                 pixels * n / (frames_s + setup_s) * 1e-6);
+    std::printf("backend: %s\n", device.name().c_str());
+    if (a.compare_unfused) compare_unfused(dem, options, a.frames, scene);
+    if (a.compare_cpu) {
+        if (device.backend()) compare_with_cpu(dem, options, a.frames, scene, setup_s);
+        else std::printf("--compare-cpu: the run above was the CPU path already\n");
+    }
 }
 
 }  // namespace
@@ -124,6 +222,14 @@ void add_bench_relight_command(CLI::App& bench) {
     cmd->add_option("--frames", a->frames, "Frames to time (sun over a day's arc)")->capture_default_str()->check(
         CLI::Range(1, 100000));
     cmd->add_option("--keep", a->out_dir, "Keep the written frames in this directory (default: a temp dir, removed)");
+    cmd->add_option("--write-queue", a->write_queue, "Frames that may wait for the PNG writer thread")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    cmd->add_flag("--compare-unfused", a->compare_unfused,
+                  "Also time the shading stage against the CPU RenderBackend's unfused one (as before the fused "
+                  "CPU loop) in the same run, frames interleaved");
+    cmd->add_flag("--compare-cpu", a->compare_cpu,
+                  "Also time the CPU path (one-time stages and frames) in the same run and print device / cpu ratios");
     cmd->callback([a] { run_bench_relight(*a); });
 }
 

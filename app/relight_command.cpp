@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/render_device.hpp"
 #include "app/render_options.hpp"
+#include "core/render/background_writer.hpp"
 #include "core/light/time_interval.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/util/error.hpp"
@@ -26,6 +28,7 @@ struct RelightArgs {
     std::string times_file;
     std::string out_dir;
     std::string format = "png";
+    int write_queue = 2;  // frames that may wait for the writer thread (memory: 12 B/pixel each)
 };
 
 std::vector<light::UtcTime> read_times_file(const std::string& path) {
@@ -53,7 +56,7 @@ void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
     const std::vector<light::UtcTime> times =
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
-    const render::SceneOptions options = scene_options(a.render);
+    render::SceneOptions options = scene_options(a.render);
     render::Exposure exposure = exposure_of(a.render);
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
@@ -61,6 +64,9 @@ void run_relight(const RelightArgs& a) {
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    device.apply(options);
+    std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());
     const auto t0 = std::chrono::steady_clock::now();
     std::unique_ptr<render::Scene> scene;
     {
@@ -95,25 +101,31 @@ void run_relight(const RelightArgs& a) {
     }
     const auto t1 = std::chrono::steady_clock::now();
     double render_s = 0;
+    int width = 0, height = 0;
     {
+        // Frame k is tone-mapped, encoded and renamed into place on the writer's thread while
+        // frame k+1 renders (encoding a PNG takes longer than relighting it).
+        render::BackgroundWriter writer(a.write_queue);
         ProgressBar bar("relight", times.size(), "frames");
         for (std::size_t k = 0; k < times.size(); ++k) {
             const auto tf = std::chrono::steady_clock::now();
             scene->render(suns[k], image);
             render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - tf).count();
+            width = image.width, height = image.height;
             char name[64];
             std::snprintf(name, sizeof name, "frame_%04zu.%s", k, a.format.c_str());
-            render::write_image((std::filesystem::path(a.out_dir) / name).string(), image, exposure,
-                                map ? &dem.georef : nullptr);
+            writer.write((std::filesystem::path(a.out_dir) / name).string(), image, exposure,
+                         map ? &dem.georef : nullptr);
             bar.advance();
         }
+        writer.finish();
     }
     const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    const double px = double(image.width) * image.height * double(times.size());
+    const double px = double(width) * height * double(times.size());
     std::printf("relit %zu frames (%dx%d) into %s: visibility + transfer once %.3f s; frames %.3f s rendering "
                 "(%.1f Mpx/s), %.3f s with files written (%.1f Mpx/s)\n",
-                times.size(), image.width, image.height, a.out_dir.c_str(), setup_s, render_s, px / render_s * 1e-6,
-                total_s, px / total_s * 1e-6);
+                times.size(), width, height, a.out_dir.c_str(), setup_s, render_s, px / render_s * 1e-6, total_s,
+                px / total_s * 1e-6);
 }
 
 }  // namespace
@@ -131,6 +143,10 @@ void add_relight_command(CLI::App& root) {
     cmd->add_option("--format", a->format, "Frame format: png, tif (8-bit sRGB, georeferenced for maps) or exr (linear)")
         ->capture_default_str()
         ->check(CLI::IsMember({"png", "tif", "exr"}));
+    cmd->add_option("--write-queue", a->write_queue,
+                    "Frames that may wait for the writer thread (it encodes frame k while frame k+1 renders)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
     cmd->callback([a] { run_relight(*a); });
 }
 

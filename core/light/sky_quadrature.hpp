@@ -9,6 +9,7 @@
 #include <cmath>
 #include <glm/vec3.hpp>
 #include <numbers>
+#include <vector>
 
 #include "core/sh/gauss_legendre.hpp"
 
@@ -24,6 +25,14 @@ struct HemisphereRule {
 template <class F>
 void for_each_sky_node(const HemisphereRule& rule, bool lower, F&& f) {
     const double dphi = 2.0 * std::numbers::pi / rule.n_phi;
+    // The azimuths are the same on every ring: their cos/sin once, not once per node.
+    std::vector<double> cos_phi(std::size_t(std::max(0, rule.n_phi))), sin_phi(cos_phi.size());
+    for (int j = 0; j < rule.n_phi; ++j) {
+        // Half-step offset: no node exactly on an axis, where models are often special-cased.
+        const double phi = (j + 0.5) * dphi;
+        cos_phi[std::size_t(j)] = std::cos(phi);
+        sin_phi[std::size_t(j)] = std::sin(phi);
+    }
     for (int half = 0; half < (lower ? 2 : 1); ++half) {
         const sh::GaussLegendre gl =
             half == 0 ? sh::gauss_legendre(rule.n_z, 0.0, 1.0) : sh::gauss_legendre(rule.n_z, -1.0, 0.0);
@@ -31,11 +40,8 @@ void for_each_sky_node(const HemisphereRule& rule, bool lower, F&& f) {
             const double z = gl.nodes[k];
             const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
             const double w = gl.weights[k] * dphi;
-            for (int j = 0; j < rule.n_phi; ++j) {
-                // Half-step offset: no node exactly on an axis, where models are often special-cased.
-                const double phi = (j + 0.5) * dphi;
-                f(glm::dvec3(r * std::cos(phi), r * std::sin(phi), z), w);
-            }
+            for (int j = 0; j < rule.n_phi; ++j)
+                f(glm::dvec3(r * cos_phi[std::size_t(j)], r * sin_phi[std::size_t(j)], z), w);
         }
     }
 }

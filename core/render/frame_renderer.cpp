@@ -7,10 +7,12 @@
 
 #include "core/geo/azimuth.hpp"
 #include "core/material/fresnel.hpp"
+#include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/sh/log_brdf.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/sun_visibility.hpp"
 
 namespace ts::render {
@@ -104,9 +106,17 @@ FrameRenderer::FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster mat
     ho.curvature = options_.curvature;
     ho.threads = options_.threads;
     ho.progress = options_.progress;
-    const visibility::HorizonSet horizons = visibility::compute_horizons(grid_, ho);
-    const std::vector<float> log_sh = visibility::log_sh_raster(horizons, options_.visibility_log_eps, options_.threads);
+    RenderBackend* backend = options_.backend;
+    std::vector<float> log_sh;
+    const visibility::HorizonSet horizons =
+        backend ? backend->horizons_and_log_sh(grid_, ho, options_.visibility_log_eps, log_sh)
+                : visibility::compute_horizons(grid_, ho);
+    if (!backend) log_sh = visibility::log_sh_raster(horizons, options_.visibility_log_eps, options_.threads);
     visibility_s_ = seconds_since(t0);
+    auto transfer = [&](const TransferInputs& in, float* out) {
+        if (backend) backend->transfer_vectors(in, out);
+        else transfer_vectors(in, out);
+    };
 
     t0 = Clock::now();
     auto view_at = [&](std::size_t t) { return view.per_texel.empty() ? view.uniform : view.per_texel[t]; };
@@ -127,9 +137,28 @@ FrameRenderer::FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster mat
         in.uniform_lobe = true;
         in.method = options_.exp_method;
         in.threads = options_.threads;
-        t_diffuse_.resize(16 * texels_);
-        transfer_vectors(in, t_diffuse_.data());
-        if (options_.band_correction) correct_diffuse_bands(lobe, in, t_diffuse_);
+        std::vector<float> t_diffuse(16 * texels_);
+        transfer(in, t_diffuse.data());
+        if (options_.band_correction) correct_diffuse_bands(lobe, in, t_diffuse);
+        if (backend) {
+            diffuse_field_ = backend->keep_transfer(t_diffuse.data(), texels_);
+            diffuse_rgb_.resize(texels_);
+        } else {
+            // Water texels get albedo 1 here: their fused result is then the body's irradiance / pi
+            // (sky + sun), which the water pass weights by (1 - F) kWaterAlbedo.
+            std::vector<float> albedo[3] = {materials_.albedo_r, materials_.albedo_g, materials_.albedo_b};
+            for (std::size_t t = 0; t < texels_; ++t)
+                if (materials_.water[t]) albedo[0][t] = albedo[1][t] = albedo[2][t] = 1.0f;
+            DiffuseShading::Inputs di;
+            di.texels = texels_;
+            di.transfer = t_diffuse.data();
+            // Band correction scales band 3 by 0: only bands 0..2 (9 coefficients) carry light.
+            di.coefficients = options_.band_correction ? 9 : 16;
+            di.normal[0] = normals_.x.data(), di.normal[1] = normals_.y.data(), di.normal[2] = normals_.z.data();
+            for (int c = 0; c < 3; ++c) di.albedo[c] = albedo[c].data();
+            di.precision = options_.shading_precision;
+            diffuse_ = std::make_unique<DiffuseShading>(di);
+        }
     }
 
     // Specular: a Phong lobe about each texel's mirror direction, only where ks > 0.
@@ -138,14 +167,14 @@ FrameRenderer::FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster mat
     if (!spec_index_.empty()) {
         const std::size_t n = spec_index_.size();
         std::vector<float> log_v(16 * n), axis(3 * n), lobes(4 * n);
-        spec_rx_.resize(n), spec_ry_.resize(n), spec_rz_.resize(n);
+        spec_.resize(n);
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t t = spec_index_[k];
             for (int i = 0; i < 16; ++i) log_v[std::size_t(i) * n + k] = log_sh[std::size_t(i) * texels_ + t];
             const glm::vec3 nrm{normals_.x[t], normals_.y[t], normals_.z[t]};
             const glm::vec3 r = normalized(mirror(nrm, view_at(t)));
             axis[3 * k] = r.x, axis[3 * k + 1] = r.y, axis[3 * k + 2] = r.z;
-            spec_rx_[k] = r.x, spec_ry_[k] = r.y, spec_rz_[k] = r.z;
+            spec_[k] = {nrm, r, materials_.ks[t], materials_.alpha[t]};
             const sh::ZhVec zh = table.phong(materials_.alpha[t]);
             for (int i = 0; i < 4; ++i) lobes[4 * k + std::size_t(i)] = float(zh[std::size_t(i)]);
         }
@@ -157,7 +186,7 @@ FrameRenderer::FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster mat
         in.method = options_.exp_method;
         in.threads = options_.threads;
         t_spec_.resize(16 * n);
-        transfer_vectors(in, t_spec_.data());
+        transfer(in, t_spec_.data());
         spec_rgb_.resize(n);
     }
 
@@ -172,13 +201,24 @@ FrameRenderer::FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster mat
         water_vis_.push_back(horizon_visibility(horizons, t, r));
     }
     transfer_s_ = seconds_since(t0);
-    diffuse_rgb_.resize(texels_);
     sun_vis_.assign(texels_, 0.0f);
 }
+
+FrameRenderer::~FrameRenderer() = default;
 
 void FrameRenderer::compute_sun_visibility(const SunState& sun, bool sun_up) {
     if (!sun_up) {
         std::fill(sun_vis_.begin(), sun_vis_.end(), 0.0f);
+        return;
+    }
+    if (options_.sun_method == visibility::SunMethod::sweep) {
+        if (!sun_sweep_) {
+            visibility::SunSweepOptions so;
+            so.curvature = options_.curvature;
+            so.threads = options_.threads;
+            sun_sweep_ = std::make_unique<visibility::SunShadowSweep>(grid_, so);
+        }
+        sun_sweep_->compute(sun.azimuth_deg, sun.elevation_deg, sun_vis_);
         return;
     }
     visibility::SunVisibilityOptions so;
@@ -213,39 +253,45 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     timings_.sun_visibility_s = seconds_since(t0);
 
     t0 = Clock::now();
-    shade_transfer(t_diffuse_.data(), texels_, sky_sh, diffuse_rgb_.data(), options_.threads);
     if (!spec_index_.empty()) shade_transfer(t_spec_.data(), spec_index_.size(), sky_sh, spec_rgb_.data(), options_.threads);
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));
     const glm::vec3 e_diffuse = sun_up ? e_sun * kInvPi : glm::vec3(0.0f);
-    // Diffuse sky + sun for every texel: the SoA loop that dominates a frame.
-    parallel_rows(height_, options_.threads, width_ * 16LL, [&](int r0, int r1) {
-        const std::size_t b = std::size_t(r0) * width_, e = std::size_t(r1) * width_;
-        const float* nx = normals_.x.data();
-        const float* ny = normals_.y.data();
-        const float* nz = normals_.z.data();
-        const float* ar = materials_.albedo_r.data();
-        const float* ag = materials_.albedo_g.data();
-        const float* ab = materials_.albedo_b.data();
-        const float* vis = sun_vis_.data();
-        const glm::vec3* d = diffuse_rgb_.data();
-        glm::vec3* o = out.data();
-        for (std::size_t t = b; t < e; ++t) {
-            const float cos_s = std::max(0.0f, nx[t] * s.x + ny[t] * s.y + nz[t] * s.z);
-            const float v = vis[t];
-            const float sun_w = (v == v ? v : 0.0f) * cos_s;  // NaN (void) -> no sun
-            o[t].x = ar[t] * (d[t].x + sun_w * e_diffuse.x);
-            o[t].y = ag[t] * (d[t].y + sun_w * e_diffuse.y);
-            o[t].z = ab[t] * (d[t].z + sun_w * e_diffuse.z);
-        }
-    });
+    // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
+    // the backend's <T_d, L> then a second SoA loop otherwise.
+    if (diffuse_) {
+        diffuse_->shade(sky_sh, sun_vis_.data(), s, e_diffuse, out.data(), options_.threads);
+    } else {
+        diffuse_field_->shade(sky_sh, diffuse_rgb_.data());
+        parallel_rows(height_, options_.threads, width_ * 16LL, [&](int r0, int r1) {
+            const std::size_t b = std::size_t(r0) * width_, e = std::size_t(r1) * width_;
+            const float* nx = normals_.x.data();
+            const float* ny = normals_.y.data();
+            const float* nz = normals_.z.data();
+            const float* ar = materials_.albedo_r.data();
+            const float* ag = materials_.albedo_g.data();
+            const float* ab = materials_.albedo_b.data();
+            const float* vis = sun_vis_.data();
+            const glm::vec3* d = diffuse_rgb_.data();
+            glm::vec3* o = out.data();
+            for (std::size_t t = b; t < e; ++t) {
+                const float cos_s = std::max(0.0f, nx[t] * s.x + ny[t] * s.y + nz[t] * s.z);
+                const float v = vis[t];
+                const float sun_w = (v == v ? v : 0.0f) * cos_s;  // NaN (void) -> no sun
+                o[t].x = ar[t] * (d[t].x + sun_w * e_diffuse.x);
+                o[t].y = ag[t] * (d[t].y + sun_w * e_diffuse.y);
+                o[t].z = ab[t] * (d[t].z + sun_w * e_diffuse.z);
+            }
+        });
+    }
     // Phong sheen on the few texels that have one.
     for (std::size_t k = 0; k < spec_index_.size(); ++k) {
         const std::size_t t = spec_index_[k];
-        const float ks = materials_.ks[t], alpha = materials_.alpha[t];
+        const SpecTexel& st = spec_[k];
+        const float ks = st.ks, alpha = st.alpha;
         glm::vec3 add = ks * spec_rgb_[k];
-        const float cos_s = normals_.x[t] * s.x + normals_.y[t] * s.y + normals_.z[t] * s.z;
-        const float r_s = spec_rx_[k] * s.x + spec_ry_[k] * s.y + spec_rz_[k] * s.z;
+        const float cos_s = st.normal.x * s.x + st.normal.y * s.y + st.normal.z * s.z;
+        const float r_s = st.mirror.x * s.x + st.mirror.y * s.y + st.mirror.z * s.z;
         const float v = sun_vis_[t];
         if (sun_up && cos_s > 0 && r_s > 0 && v > 0)
             add += (v * ks * (alpha + 1) * 0.5f * kInvPi * std::pow(r_s, alpha)) * e_sun;
@@ -262,7 +308,9 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
         const float v = sun_vis_[t] == sun_vis_[t] ? sun_vis_[t] : 0.0f;
         if (sun_up && glm::dot(r, s) >= cos_disc) reflected += v * e_sun / solid_angle;
         const float cos_s = std::max(0.0f, s.z);
-        out[t] = f * reflected + (1 - f) * kWaterAlbedo * (diffuse_rgb_[t] + v * cos_s * e_diffuse);
+        // The body's irradiance / pi: the fused pass left it in out[t] (albedo 1 for water).
+        const glm::vec3 body = diffuse_ ? out[t] : diffuse_rgb_[t] + v * cos_s * e_diffuse;
+        out[t] = f * reflected + (1 - f) * kWaterAlbedo * body;
     }
     timings_.shading_s = seconds_since(t0);
 }

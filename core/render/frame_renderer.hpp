@@ -15,24 +15,33 @@
 // and r = 2 (n.v) n - v. The BRDFs are session 2's (docs/rendering.md).
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/light/sky.hpp"
+#include "core/render/diffuse_shading.hpp"
 #include "core/render/material.hpp"
 #include "core/render/sky_table.hpp"
 #include "core/render/terrain_normals.hpp"
 #include "core/sh/exp_method.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/visibility/horizon_sh.hpp"
+#include "core/visibility/sun_visibility.hpp"
 
 namespace ts {
 class ProgressBar;
 }
+namespace ts::visibility {
+class SunShadowSweep;
+}
 
 namespace ts::render {
+
+class RenderBackend;
+class ShadeField;
 
 struct RendererOptions {
     int directions = 32;           // horizon azimuths D for the visibility
@@ -50,6 +59,19 @@ struct RendererOptions {
     // 6.7 deg: radiance rel. RMSE 10.3% -> 4.9% against the reference; docs/accuracy.md).
     // One-time cost: one exponentiation and a scaling pass.
     bool band_correction = true;
+    // Where the one-time stages (horizons + log-SH, transfer vectors) and the per-frame sky
+    // transfer run (core/render/render_backend.hpp; must outlive the renderer). nullptr: here on
+    // the CPU, with the per-frame diffuse pass fused and compact (DiffuseShading); a backend
+    // (make_cpu_backend, the Vulkan one) shades <T_d, L> itself and the sun and albedo follow in
+    // a second pass.
+    RenderBackend* backend = nullptr;
+    // CPU path (backend == nullptr): how the per-frame copy of T_d, albedo and normal is stored.
+    // half (default): fp16 (normal 16-bit fixed point), 30 B/texel read per frame, radiance
+    // within 1e-3 of single; single: fp32, 60 B/texel, float rounding (core/render/diffuse_shading.hpp).
+    DiffuseShading::Precision shading_precision = DiffuseShading::Precision::half;
+    // Per-frame sun visibility: the sweep (core/visibility/sun_sweep.hpp, built on the first frame
+    // and kept) or the exact path (the reference; `--sun-shadows exact`).
+    visibility::SunMethod sun_method = visibility::SunMethod::sweep;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
 };
@@ -75,6 +97,7 @@ public:
     // `grid` must outlive the renderer (its heights are swept for the sun every frame).
     FrameRenderer(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
                   const ViewDirections& view, const RendererOptions& options = {});
+    ~FrameRenderer();
 
     std::size_t texels() const { return texels_; }
     int width() const { return width_; }
@@ -108,19 +131,28 @@ private:
     NormalField normals_;
     double visibility_s_ = 0, transfer_s_ = 0;
 
-    std::vector<float> t_diffuse_;  // [16][texels]
-    // Specular texels (ks > 0, not water): indices, their transfer [16][n], mirror directions.
+    // Diffuse transfer T_d, kept in one of two forms: the fused compact copy (CPU path) or the
+    // backend's ShadeField (then diffuse_rgb_ receives <T_d, L> each frame).
+    std::unique_ptr<DiffuseShading> diffuse_;
+    std::unique_ptr<ShadeField> diffuse_field_;
+    // Specular texels (ks > 0, not water): indices, their transfer [16][n], and what the per-frame
+    // sun term reads, copied together (the texels are scattered: one stream, not four gathers).
+    struct SpecTexel {
+        glm::vec3 normal, mirror;
+        float ks, alpha;
+    };
     std::vector<std::uint32_t> spec_index_;
     std::vector<float> t_spec_;
-    std::vector<float> spec_rx_, spec_ry_, spec_rz_;
+    std::vector<SpecTexel> spec_;
     // Water texels: indices, mirror direction, Fresnel reflectance, visibility of r.
     std::vector<std::uint32_t> water_index_;
     std::vector<glm::vec3> water_r_;
     std::vector<float> water_fresnel_, water_vis_;
 
     // Per-frame scratch, allocated once.
-    std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;
+    std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
     std::vector<float> sun_vis_;
+    std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;  // RendererOptions::sun_method sweep
     SkyTable sky_table_;
     FrameTimings timings_;
 };

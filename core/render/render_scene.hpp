@@ -60,6 +60,8 @@ public:
     FrameRenderer& renderer() { return *renderer_; }
     const terrain::HeightGrid& grid() const { return *grid_; }
     const Camera* camera() const { return camera_ ? &*camera_ : nullptr; }
+    // The per-texel radiance of the last frame of a perspective view or a resampled map (a map on
+    // the DEM grid is rendered straight into the image: there it is the image's rgb).
     const std::vector<glm::vec3>& texel_radiance() const { return texel_radiance_; }
     const SceneOptions& options() const { return options_; }
 

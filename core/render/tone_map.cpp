@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <limits>
 
 #include <glm/vec3.hpp>
 
@@ -57,20 +59,67 @@ float srgb_eotf(float v) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
+std::uint8_t srgb8_code(float exposed) {
+    return std::uint8_t(std::lround(255.0f * srgb_oetf(filmic(exposed))));
+}
+
+namespace {
+float float_of(std::uint32_t bits) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+std::uint32_t bits_of(float f) {
+    std::uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+}
+}  // namespace
+
+Srgb8Encoder::Srgb8Encoder() {
+    // Positive floats order like their bit patterns: bisect on the bits for the smallest x with
+    // code >= k, k = 1..255.
+    if (srgb8_code(std::nextafter(kLow, 0.0f)) != 0 || srgb8_code(kHigh) != 255) return;
+    std::vector<float> up(256);  // up[k]: smallest x with code >= k
+    for (int k = 1; k <= 255; ++k) {
+        std::uint32_t lo = bits_of(kLow) - 1, hi = bits_of(kHigh);  // code(lo) < k <= code(hi)
+        while (hi - lo > 1) {
+            const std::uint32_t mid = lo + (hi - lo) / 2;
+            (srgb8_code(float_of(mid)) >= k ? hi : lo) = mid;
+        }
+        up[std::size_t(k)] = float_of(hi);
+    }
+    code_.resize(kSteps);
+    step_.resize(kSteps);
+    int k = 1;  // next code change not yet passed
+    for (std::size_t i = 0; i < kSteps; ++i) {
+        const float start = float_of(std::uint32_t((kFirst + i) << kShift));
+        const float end = float_of(std::uint32_t((kFirst + i + 1) << kShift));
+        while (k <= 255 && up[std::size_t(k)] <= start) ++k;
+        code_[i] = std::uint8_t(k - 1);
+        step_[i] = std::numeric_limits<float>::infinity();
+        if (k <= 255 && up[std::size_t(k)] < end) {
+            step_[i] = up[std::size_t(k)];
+            if (k + 1 <= 255 && up[std::size_t(k + 1)] < end) return;  // two changes in one step
+        }
+    }
+    tabulated_ = true;
+}
+
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,
                                             std::array<std::uint8_t, 3> nan_colour) {
-    // The curve is smooth and the output has 256 levels: a table over the exposed value in
-    // log steps would do, but 3 pow() per pixel on <= a few Mpx costs milliseconds.
     std::vector<std::uint8_t> out(count * 3);
     const float s = float(scale);
+    // Small pictures: the encoder's table would cost more than it saves.
+    const bool table = count >= 16384;
+    const Srgb8Encoder encoder = table ? Srgb8Encoder() : Srgb8Encoder(Srgb8Encoder::direct);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec3 c = rgb[i];
         if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
             out[3 * i] = nan_colour[0], out[3 * i + 1] = nan_colour[1], out[3 * i + 2] = nan_colour[2];
             continue;
         }
-        for (int k = 0; k < 3; ++k)
-            out[3 * i + std::size_t(k)] = std::uint8_t(std::lround(255.0f * srgb_oetf(filmic(s * c[k]))));
+        for (int k = 0; k < 3; ++k) out[3 * i + std::size_t(k)] = encoder(s * c[k]);
     }
     return out;
 }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,47 @@ float filmic(float x);
 float srgb_oetf(float linear);
 // Its inverse (8-bit orthophotos -> linear albedo).
 float srgb_eotf(float encoded);
+
+// The 8-bit code of one exposed channel value: lround(255 srgb_oetf(filmic(x))).
+std::uint8_t srgb8_code(float exposed);
+
+// srgb8_code without a pow per call. The code is monotone in x, so a table over [2^-14, 8) in
+// steps of 1/512 octave (a step moves the code by at most ~0.4) holds the code at each step's
+// start and the one x inside the step where the code goes up, found by bisection on
+// srgb8_code itself. It equals srgb8_code except at isolated floats where srgb8_code's own float
+// rounding steps back by one code (filmic and pow are not monotone to the last ulp right at a
+// code boundary); there it gives the monotone neighbours' code (tests/render/tone_map_test.cpp).
+// Building it costs ~8000 srgb8_code calls (~0.2 ms); a lookup is a few instructions (a
+// 500x500 frame: ~8 ms -> ~1 ms).
+class Srgb8Encoder {
+public:
+    Srgb8Encoder();
+    // No table: every call evaluates srgb8_code (for a handful of pixels).
+    enum Direct { direct };
+    explicit Srgb8Encoder(Direct) {}
+    std::uint8_t operator()(float exposed) const {
+        if (!tabulated_) return srgb8_code(exposed);
+        if (!(exposed >= kLow)) return exposed == exposed ? 0 : srgb8_code(exposed);
+        if (exposed >= kHigh) return 255;
+        std::uint32_t bits;
+        std::memcpy(&bits, &exposed, sizeof bits);
+        const std::size_t i = (bits >> kShift) - kFirst;
+        return std::uint8_t(code_[i] + (exposed >= step_[i] ? 1 : 0));
+    }
+    // False if the curve ever changed so that a step holds two code changes (or the ends are
+    // not 0 and 255): then every call evaluates srgb8_code.
+    bool tabulated() const { return tabulated_; }
+
+private:
+    static constexpr float kLow = 0x1p-14f, kHigh = 8.0f;
+    static constexpr int kStepBits = 9;                 // steps per octave = 2^kStepBits
+    static constexpr int kShift = 23 - kStepBits;
+    static constexpr std::uint32_t kFirst = (127u - 14u) << kStepBits;
+    static constexpr std::size_t kSteps = std::size_t(3 + 14) << kStepBits;
+    bool tabulated_ = false;
+    std::vector<std::uint8_t> code_;
+    std::vector<float> step_;
+};
 
 // rgb (linear, count pixels) -> 8-bit sRGB RGB interleaved. NaN pixels become `nan_colour`.
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,

@@ -106,6 +106,32 @@ TEST(SkySh, AgreesWithABruteForceGridOnRealSkies) {
     }
 }
 
+// project_sky_sh sums each ring of equal z by azimuthal Fourier terms; it must equal the direct
+// sum over the same nodes, sum_j w_j L(d_j) Y(d_j), within rounding (1e-6 of the DC term: the
+// output is float).
+TEST(SkySh, RingSumsEqualTheDirectSumOverTheSameNodes) {
+    const glm::dvec3 sun =
+        geo::enu_direction(geo::azimuth_cw_from_north_to_phi(200.0), 12.0 * std::numbers::pi / 180.0);
+    const PreethamSky clear(2.5, 0.3, sun);
+    const auto lumpy = function_sky([](const glm::dvec3& d) {
+        const double v = 1.0 + 0.5 * d.x - 0.3 * d.y * d.y * d.x + 0.2 * std::sin(5.0 * d.y) + (d.z < 0 ? 0.4 : 0.0);
+        return Rgb(float(v), float(2.0 * v), float(0.5 + d.z * d.z));
+    });
+    for (const Sky* sky : {static_cast<const Sky*>(&clear), static_cast<const Sky*>(&lumpy)})
+        for (const HemisphereRule rule : {HemisphereRule{32, 128}, HemisphereRule{7, 9}}) {
+            std::array<glm::dvec3, sh::kCount> direct{};
+            for_each_sky_node(rule, true, [&](const glm::dvec3& d, double w) {
+                const sh::ShVec y = sh::eval(d);
+                for (int i = 0; i < sh::kCount; ++i) direct[std::size_t(i)] += glm::dvec3(sky->radiance(d)) * w * y[std::size_t(i)];
+            });
+            const SkySh rings = project_sky_sh(*sky, rule);
+            for (int i = 0; i < sh::kCount; ++i)
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(rings[std::size_t(i)][c], direct[std::size_t(i)][c], 1e-6 * std::abs(direct[0][c]))
+                        << sky->describe() << " rule " << rule.n_z << "x" << rule.n_phi << " i " << i << " c " << c;
+        }
+}
+
 TEST(SkySh, OvercastHasTheClosedFormCoefficients) {
     // L = L_z (1 + 2 z)/3 on z > 0 and G on z < 0: DC = 2 pi Y00 (L_z (1 + 1)/3 ... ) in closed form:
     // integral over the upper hemisphere of (1 + 2 z)/3 = (2 pi + 2 pi)/3 = 4 pi / 3.

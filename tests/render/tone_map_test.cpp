@@ -1,4 +1,7 @@
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -57,6 +60,89 @@ TEST(ToneMap, EightBitOutputAndNan) {
     EXPECT_EQ(b[3], 255);
     EXPECT_EQ(b[6], 1);
     EXPECT_EQ(b[8], 3);
+}
+
+// The table encoder must give srgb8_code's byte for every float, except where srgb8_code's own
+// float evaluation is not monotone (an isolated float one code below or above its neighbours, at
+// a code boundary): there it may differ by one, and only there. Checked at every step's ends,
+// around every code change (all floats within +-32 ulps) and on a million log-uniform values.
+TEST(ToneMap, TableEncoderEqualsTheCurveForEveryFloatTried) {
+    const Srgb8Encoder enc;
+    ASSERT_TRUE(enc.tabulated());
+    auto bits_of = [](float f) {
+        std::uint32_t b;
+        std::memcpy(&b, &f, sizeof b);
+        return b;
+    };
+    auto float_of = [](std::uint32_t b) {
+        float f;
+        std::memcpy(&f, &b, sizeof f);
+        return f;
+    };
+    // Does the curve step back anywhere within +-256 ulps of x (x > 0)?
+    auto curve_not_monotone_near = [&](float x) {
+        const std::uint32_t b = bits_of(x);
+        int prev = srgb8_code(float_of(b - 256));
+        for (std::uint32_t c = b - 255; c <= b + 256; ++c) {
+            const int code = srgb8_code(float_of(c));
+            if (code < prev) return true;
+            prev = code;
+        }
+        return false;
+    };
+    long checked = 0, blips = 0, mismatches = 0;
+    auto check = [&](float x) {
+        ++checked;
+        const int table = enc(x), curve = srgb8_code(x);
+        if (table == curve) return;
+        if (x > 0 && std::abs(table - curve) == 1 && curve_not_monotone_near(x)) {
+            ++blips;
+            return;
+        }
+        if (++mismatches < 10) ADD_FAILURE() << "x = " << x << ": table " << table << ", curve " << curve;
+    };
+    // Every 1/512-octave step's first and last float over [2^-16, 16).
+    for (std::uint32_t b = bits_of(0x1p-16f); b < bits_of(16.0f); b += 1u << 14) {
+        check(float_of(b));
+        check(float_of(b - 1));
+    }
+    // Around each code change, found by a scan in steps of 1/4096 octave.
+    for (std::uint32_t b = bits_of(0x1p-15f); b < bits_of(8.5f); b += 1u << 11)
+        if (srgb8_code(float_of(b)) != srgb8_code(float_of(b + (1u << 11))))
+            for (std::uint32_t c = b; c <= b + (1u << 11); c += 1u << 5)
+                if (srgb8_code(float_of(c)) != srgb8_code(float_of(c + (1u << 5))))
+                    for (std::uint32_t d = c; d <= c + (1u << 5); ++d) check(float_of(d));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> log2x(-20.0f, 6.0f);
+    for (int i = 0; i < 1000000; ++i) check(std::exp2(log2x(rng)));
+    for (float x : {-1.0f, -0.0f, 0.0f, 1e-30f, 7.0f, 8.0f, 100.0f, 1e15f}) check(x);
+    // Beyond ~1e19 the curve's float evaluation overflows (inf / inf); the table saturates.
+    EXPECT_EQ(enc(1e30f), 255);
+    EXPECT_EQ(mismatches, 0) << "of " << checked;
+    // The blips are rare: a few hundred floats among those around the ~255 code changes.
+    EXPECT_LT(blips, checked / 1000) << "of " << checked;
+    // And the table itself is monotone.
+    std::uint8_t prev = 0;
+    for (std::uint32_t b = bits_of(0x1p-15f); b < bits_of(9.0f); b += 97) {
+        const std::uint8_t code = enc(float_of(b));
+        ASSERT_GE(code, prev) << float_of(b);
+        prev = code;
+    }
+}
+
+TEST(ToneMap, LargeImagesUseTheTable) {
+    std::vector<glm::vec3> px(20000);  // above the size where the table is built
+    std::mt19937 rng(3);
+    std::lognormal_distribution<float> radiance(0.0f, 1.5f);
+    for (auto& c : px) c = glm::vec3(radiance(rng), radiance(rng), radiance(rng));
+    px[17] = glm::vec3(NAN);
+    const double scale = 0.3;
+    const auto b = tone_map_to_srgb8(px.data(), px.size(), scale, {9, 8, 7});
+    const Srgb8Encoder encoder;    for (std::size_t i = 0; i < px.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint8_t want = i == 17 ? std::uint8_t(9 - k) : encoder(float(scale) * px[i][k]);
+            ASSERT_EQ(b[3 * i + std::size_t(k)], want) << i << " " << k;
+        }
 }
 
 }  // namespace

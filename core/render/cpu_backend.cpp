@@ -1,0 +1,64 @@
+// The CPU RenderBackend: each stage is the core/ function it names, unchanged, so it is the
+// reference the Vulkan backend is tested against and a way to run FrameRenderer's backend path
+// (unfused per-frame shading over the full [16][texels] T) on the CPU.
+#include <stdexcept>
+#include <vector>
+
+#include "core/render/render_backend.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/horizon_sh.hpp"
+
+namespace ts::render {
+namespace {
+
+class CpuShadeField final : public ShadeField {
+public:
+    CpuShadeField(const float* transfer, std::size_t texels, int threads)
+        : transfer_(transfer, transfer + 16 * texels), texels_(texels), threads_(threads) {}
+    std::size_t texels() const override { return texels_; }
+    void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) override {
+        shade_transfer(transfer_.data(), texels_, light_sh, rgb_out, threads_);
+    }
+
+private:
+    std::vector<float> transfer_;
+    std::size_t texels_;
+    int threads_;
+};
+
+class CpuBackend final : public RenderBackend {
+public:
+    explicit CpuBackend(int threads) : threads_(threads) {}
+    std::string name() const override { return "cpu"; }
+
+    visibility::HorizonSet horizons_and_log_sh(const terrain::HeightGrid& grid, const visibility::HorizonOptions& options,
+                                               float log_eps, std::vector<float>& log_sh) override {
+        if (options.method != visibility::HorizonMethod::exact)
+            throw std::invalid_argument("RenderBackend::horizons_and_log_sh: exact horizons only");
+        visibility::HorizonOptions o = options;
+        o.threads = threads_;
+        visibility::HorizonSet set = visibility::compute_horizons(grid, o);
+        log_sh = visibility::log_sh_raster(set, log_eps, threads_);
+        return set;
+    }
+
+    void transfer_vectors(const TransferInputs& in, float* transfer_out) override {
+        TransferInputs with_threads = in;
+        with_threads.threads = threads_;
+        render::transfer_vectors(with_threads, transfer_out);
+    }
+
+    std::unique_ptr<ShadeField> keep_transfer(const float* transfer, std::size_t texels) override {
+        if (texels > 0 && !transfer) throw std::invalid_argument("RenderBackend::keep_transfer: null transfer");
+        return std::make_unique<CpuShadeField>(transfer, texels, threads_);
+    }
+
+private:
+    int threads_;
+};
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> make_cpu_backend(int threads) { return std::make_unique<CpuBackend>(threads); }
+
+}  // namespace ts::render

@@ -1,0 +1,261 @@
+#include "core/render/diffuse_shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#include <immintrin.h>
+#endif
+
+#include "core/util/parallel_for.hpp"
+
+namespace ts::render {
+namespace {
+
+// GCC/Clang vector extension, as in transfer.cpp: 8 lanes (one AVX register on the clone built
+// for it, two SSE registers otherwise).
+using Float8 = float __attribute__((vector_size(32)));
+
+#if defined(__FLT16_MAX__) && defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TS_DIFFUSE_HALF 1
+// fp16 storage; values are converted with the compiler's _Float16 (round to nearest even).
+using Half = _Float16;
+#endif
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// AVX2 + FMA clone of the fp32 kernels, picked at load time.
+#define TS_DIFFUSE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define TS_DIFFUSE_CLONES
+#endif
+
+constexpr int kLanes = 8;
+
+// Normals of the compact (fp16) layout: signed 16-bit fixed point, n * 32767. In [-1, 1] that
+// is within 1.5e-5 per component (fp16 would be 2.4e-4 near 1, which is where the sun term's
+// precision matters: n . s under a grazing sun).
+using NormalQ = std::int16_t;
+constexpr float kNormalScale = 32767.0f;
+using Short8 = std::int16_t __attribute__((vector_size(16)));
+
+// One record per 8 texels: everything the loop reads for them except the sun visibility.
+// (16-byte alignment keeps every layout's size a multiple of 16 without padding: half K = 9 is
+// 240 bytes; the loads are unaligned anyway.)
+template <class S, int K>
+struct alignas(16) Block {
+    using Normal = std::conditional_t<std::is_same_v<S, float>, float, NormalQ>;
+    S t[K][kLanes];
+    S albedo[3][kLanes];
+    Normal normal[3][kLanes];
+};
+
+// How 8 stored values become 8 floats (through a reference: returning a 32-byte vector by
+// value has a different ABI with and without AVX, which GCC warns about).
+struct LoadSingle {
+    [[gnu::always_inline]] static void load(Float8& v, const float (&a)[kLanes]) { std::memcpy(&v, a, sizeof v); }
+    [[gnu::always_inline]] static void load(Float8& v, const NormalQ (&a)[kLanes]) {
+        Short8 q;
+        std::memcpy(&q, a, sizeof q);
+        v = __builtin_convertvector(q, Float8) * (1.0f / kNormalScale);
+    }
+};
+#ifdef TS_DIFFUSE_HALF
+// Portable: one conversion per value (GCC 12 does not vectorise _Float16 -> float without
+// AVX512-FP16, so this is the slow fallback for CPUs without F16C).
+struct LoadHalfScalar {
+    [[gnu::always_inline]] static void load(Float8& v, const Half (&a)[kLanes]) {
+        for (int k = 0; k < kLanes; ++k) v[k] = float(a[k]);
+    }
+};
+// F16C: 8 values in one vcvtph2ps.
+struct LoadHalfF16c {
+    [[gnu::target("avx2,fma,f16c")]] static void load(Float8& v, const Half (&a)[kLanes]) {
+        v = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(a)));
+    }
+};
+#endif
+
+// The frame's light, one scalar per coefficient and channel, and the sun.
+struct FrameConstants {
+    float r[16], g[16], b[16];
+    float s[3], e[3];
+};
+
+template <class Load, class S, int K>
+[[gnu::always_inline]] inline void shade_blocks(const Block<S, K>* blocks, std::size_t b0, std::size_t b1,
+                                                std::size_t texels, const float* vis, const FrameConstants& c,
+                                                glm::vec3* out) {
+    const Float8 zero{};
+    for (std::size_t b = b0; b < b1; ++b) {
+        const Block<S, K>& blk = blocks[b];
+        Float8 r = zero, g = zero, bl = zero;
+        Float8 x, y, z;
+        for (int i = 0; i < K; ++i) {
+            Load::load(x, blk.t[i]);
+            r += x * c.r[i];
+            g += x * c.g[i];
+            bl += x * c.b[i];
+        }
+        LoadSingle::load(x, blk.normal[0]);
+        LoadSingle::load(y, blk.normal[1]);
+        LoadSingle::load(z, blk.normal[2]);
+        Float8 cos_s = x * c.s[0] + y * c.s[1] + z * c.s[2];
+        cos_s = cos_s > zero ? cos_s : zero;
+        const std::size_t t = b * kLanes;
+        const std::size_t n = std::min<std::size_t>(kLanes, texels - t);
+        Float8 v = zero;
+        if (n == kLanes) std::memcpy(&v, vis + t, sizeof v);
+        else
+            for (std::size_t k = 0; k < n; ++k) v[k] = vis[t + k];
+        v = v == v ? v : zero;  // NaN (void) -> no sun
+        const Float8 w = v * cos_s;
+        Load::load(x, blk.albedo[0]);
+        Load::load(y, blk.albedo[1]);
+        Load::load(z, blk.albedo[2]);
+        const Float8 o_r = x * (r + w * c.e[0]);
+        const Float8 o_g = y * (g + w * c.e[1]);
+        const Float8 o_b = z * (bl + w * c.e[2]);
+        for (std::size_t k = 0; k < n; ++k) out[t + k] = glm::vec3(o_r[k], o_g[k], o_b[k]);
+    }
+}
+
+// One function per layout and instruction set (target_clones and C++ overloads or templates
+// do not mix well in GCC 12, hence the names).
+TS_DIFFUSE_CLONES void shade_single9(const Block<float, 9>* p, std::size_t b0, std::size_t b1, std::size_t n,
+                                     const float* vis, const FrameConstants& c, glm::vec3* out) {
+    shade_blocks<LoadSingle>(p, b0, b1, n, vis, c, out);
+}
+TS_DIFFUSE_CLONES void shade_single16(const Block<float, 16>* p, std::size_t b0, std::size_t b1, std::size_t n,
+                                      const float* vis, const FrameConstants& c, glm::vec3* out) {
+    shade_blocks<LoadSingle>(p, b0, b1, n, vis, c, out);
+}
+#ifdef TS_DIFFUSE_HALF
+[[gnu::target("avx2,fma,f16c")]] void shade_half9_f16c(const Block<Half, 9>* p, std::size_t b0, std::size_t b1,
+                                                        std::size_t n, const float* vis, const FrameConstants& c,
+                                                        glm::vec3* out) {
+    shade_blocks<LoadHalfF16c>(p, b0, b1, n, vis, c, out);
+}
+[[gnu::target("avx2,fma,f16c")]] void shade_half16_f16c(const Block<Half, 16>* p, std::size_t b0, std::size_t b1,
+                                                         std::size_t n, const float* vis, const FrameConstants& c,
+                                                         glm::vec3* out) {
+    shade_blocks<LoadHalfF16c>(p, b0, b1, n, vis, c, out);
+}
+void shade_half9_scalar(const Block<Half, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+                        const FrameConstants& c, glm::vec3* out) {
+    shade_blocks<LoadHalfScalar>(p, b0, b1, n, vis, c, out);
+}
+void shade_half16_scalar(const Block<Half, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+                         const FrameConstants& c, glm::vec3* out) {
+    shade_blocks<LoadHalfScalar>(p, b0, b1, n, vis, c, out);
+}
+bool has_f16c() {
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+}
+void kernel(const Block<Half, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+            const FrameConstants& c, glm::vec3* out) {
+    (has_f16c() ? shade_half9_f16c : shade_half9_scalar)(p, b0, b1, n, vis, c, out);
+}
+void kernel(const Block<Half, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+            const FrameConstants& c, glm::vec3* out) {
+    (has_f16c() ? shade_half16_f16c : shade_half16_scalar)(p, b0, b1, n, vis, c, out);
+}
+#endif
+void kernel(const Block<float, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+            const FrameConstants& c, glm::vec3* out) {
+    shade_single9(p, b0, b1, n, vis, c, out);
+}
+void kernel(const Block<float, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
+            const FrameConstants& c, glm::vec3* out) {
+    shade_single16(p, b0, b1, n, vis, c, out);
+}
+
+template <class S, int K>
+std::vector<Block<S, K>> pack(const DiffuseShading::Inputs& in) {
+    const std::size_t n = in.texels;
+    std::vector<Block<S, K>> blocks((n + kLanes - 1) / kLanes);  // value-initialised: padding lanes are 0
+    for (std::size_t t = 0; t < n; ++t) {
+        Block<S, K>& blk = blocks[t / kLanes];
+        const std::size_t l = t % kLanes;
+        for (int i = 0; i < K; ++i) blk.t[i][l] = S(in.transfer[std::size_t(i) * n + t]);
+        for (int c = 0; c < 3; ++c) {
+            blk.albedo[c][l] = S(in.albedo[c][t]);
+            if constexpr (std::is_same_v<typename Block<S, K>::Normal, float>) blk.normal[c][l] = in.normal[c][t];
+            else blk.normal[c][l] = NormalQ(std::lround(std::clamp(in.normal[c][t], -1.0f, 1.0f) * kNormalScale));
+        }
+    }
+    return blocks;
+}
+
+}  // namespace
+
+struct DiffuseShading::Storage {
+    std::size_t texels = 0;
+    std::variant<
+#ifdef TS_DIFFUSE_HALF
+        std::vector<Block<Half, 9>>, std::vector<Block<Half, 16>>,
+#endif
+        std::vector<Block<float, 9>>, std::vector<Block<float, 16>>>
+        blocks;
+};
+
+DiffuseShading::DiffuseShading(const Inputs& in) : storage_(std::make_unique<Storage>()) {
+    if (in.coefficients != 9 && in.coefficients != 16)
+        throw std::invalid_argument("DiffuseShading: 9 or 16 coefficients");
+    if (in.texels > 0 && (!in.transfer || !in.normal[0] || !in.normal[1] || !in.normal[2] || !in.albedo[0] ||
+                          !in.albedo[1] || !in.albedo[2]))
+        throw std::invalid_argument("DiffuseShading: null input array");
+    storage_->texels = in.texels;
+    const bool nine = in.coefficients == 9;
+#ifdef TS_DIFFUSE_HALF
+    if (in.precision == Precision::half) {
+        if (nine) storage_->blocks = pack<Half, 9>(in);
+        else storage_->blocks = pack<Half, 16>(in);
+        return;
+    }
+#endif
+    // Without a compiler fp16 type, Precision::half falls back to fp32 (same results, more bytes).
+    if (nine) storage_->blocks = pack<float, 9>(in);
+    else storage_->blocks = pack<float, 16>(in);
+}
+
+DiffuseShading::~DiffuseShading() = default;
+
+std::size_t DiffuseShading::texels() const { return storage_->texels; }
+
+std::size_t DiffuseShading::bytes() const {
+    return std::visit([](const auto& v) { return v.size() * sizeof(v[0]); }, storage_->blocks);
+}
+
+void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis,
+                           const glm::vec3& sun_dir, const glm::vec3& e_diffuse, glm::vec3* out, int threads) const {
+    const std::size_t texels = storage_->texels;
+    if (texels == 0) return;
+    if (!sun_vis || !out) throw std::invalid_argument("DiffuseShading::shade: null input or output array");
+    FrameConstants c;
+    for (int i = 0; i < 16; ++i) {
+        c.r[i] = light_sh[std::size_t(i)].r;
+        c.g[i] = light_sh[std::size_t(i)].g;
+        c.b[i] = light_sh[std::size_t(i)].b;
+    }
+    for (int k = 0; k < 3; ++k) c.s[k] = sun_dir[k], c.e[k] = e_diffuse[k];
+    std::visit(
+        [&](const auto& blocks) {
+            const std::size_t count = blocks.size();
+            // Rows of 64 blocks (512 texels) for parallel_rows' equal bands.
+            constexpr std::size_t kRow = 64;
+            const int rows = int((count + kRow - 1) / kRow);
+            parallel_rows(rows, threads, static_cast<long long>(kRow * kLanes * 16), [&](int r0, int r1) {
+                kernel(blocks.data(), std::size_t(r0) * kRow, std::min(count, std::size_t(r1) * kRow), texels,
+                       sun_vis, c, out);
+            });
+        },
+        storage_->blocks);
+}
+
+}  // namespace ts::render

@@ -20,6 +20,7 @@
 #include "app/dem_input.hpp"
 #include "core/render/terrain_normals.hpp"
 #include "core/render/transfer.hpp"
+#include "core/sh/exp_method.hpp"
 #include "core/sh/log_brdf.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
@@ -45,6 +46,7 @@ struct BenchTransferOptions {
     double phong_alpha = 20.0;
     bool cpu_only = false;
     std::optional<std::uint32_t> device;
+    std::string exp_method = "hybrid";  // hybrid or scaling_squaring (both run on the GPU)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -151,9 +153,11 @@ void run_bench_transfer(const BenchTransferOptions& o) {
     in.lobe_log_zh = lobe_zh.data();
     in.uniform_lobe = true;
     in.threads = o.threads;
+    in.method = sh::parse_exp_method(o.exp_method);
 
-    std::printf("bench transfer: %s, %d x %d = %.3f M texels, %s lobe, hybrid exponentiation, %d CPU thread%s\n",
-                dem.source.c_str(), grid.width, grid.height, double(texels) / 1e6, o.lobe.c_str(), threads,
+    std::printf("bench transfer: %s, %d x %d = %.3f M texels, %s lobe, %s exponentiation, %d CPU thread%s\n",
+                dem.source.c_str(), grid.width, grid.height, double(texels) / 1e6, o.lobe.c_str(),
+                o.exp_method.c_str(), threads,
                 threads == 1 ? "" : "s");
     std::printf("input: log-SH visibility (exact, %d directions, %s) in %.0f ms, not measured below\n\n",
                 o.directions, vis_where.c_str(), vis_ms);
@@ -261,6 +265,9 @@ void add_bench_transfer_command(CLI::App& bench) {
     cmd->add_option("--threads", o->threads, "CPU worker threads (0 = one per core)")->capture_default_str();
     cmd->add_flag("--cpu", o->cpu_only, "CPU path only");
     cmd->add_option("--device", o->device, "Vulkan device index (terrashade devices)");
+    cmd->add_option("--exp-method", o->exp_method, "SH exponentiation (both run on the GPU)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"hybrid", "scaling_squaring"}));
     cmd->callback([o] { run_bench_transfer(*o); });
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/render_device.hpp"
 #include "app/render_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -47,10 +48,12 @@ void run_render(const RenderCommandArgs& a) {
         if (!(p.size() > 4 && (p.ends_with(".tif") || p.ends_with(".tiff"))))
             throw input_error(p, "--sun-visibility writes a float32 GeoTIFF: use .tif");
     }
-    const render::SceneOptions options = scene_options(a.render);
+    render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    device.apply(options);
     std::unique_ptr<render::Scene> scene;
     {
         ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(a.render.directions), "rays");
@@ -74,9 +77,9 @@ void run_render(const RenderCommandArgs& a) {
                 time ? (" at " + light::format_utc_time(*time)).c_str() : "");
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
-    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s\n",
+    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
                 scene->renderer().visibility_seconds(), scene->renderer().transfer_seconds(), a.render.directions,
-                frame_s);
+                frame_s, device.name().c_str());
     if (!a.out.ends_with(".exr"))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
     std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);

@@ -10,6 +10,7 @@
 
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_shared.hpp"
+#include "core/sh/sh_exp_squaring_shared.hpp"
 #include "core/sh/sh_shared.hpp"
 #include "core/util/parallel_for.hpp"
 
@@ -108,6 +109,11 @@ void transfer_vectors(const TransferInputs& in, float* transfer_out) {
                 // The one definition the GPU runs too (core/sh/sh_exp_shared.h).
                 sh::exp_shared::ts_transfer_vector(v, lobe, exp_options.hybrid_threshold, exp_options.max_squarings,
                                                    t);
+            } else if (in.method == sh::ExpMethod::scaling_squaring) {
+                // Likewise core/sh/sh_exp_squaring_shared.h (render_transfer.comp runs it too).
+                sh::exp_shared::ts_transfer_vector_by(TS_TRANSFER_EXP_SCALING_SQUARING, v, lobe,
+                                                      exp_options.hybrid_threshold, exp_options.squaring_base_order,
+                                                      exp_options.squaring_threshold, exp_options.max_squarings, t);
             } else {
                 bool void_texel = false;
                 for (int i = 0; i < kCoeffs; ++i) {

@@ -10,6 +10,7 @@
 #include "core/sh/exp_method.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_shared.hpp"
+#include "core/sh/sh_exp_squaring_shared.hpp"
 #include "core/util/error.hpp"
 #include "gpu/batch.hpp"
 
@@ -25,6 +26,9 @@ struct TransferPush {
     std::uint32_t uniform_lobe;
     float threshold;
     std::int32_t max_squarings;
+    std::int32_t method;  // TS_TRANSFER_EXP_*
+    float squaring_threshold;
+    std::int32_t squaring_base_order;
 };
 struct ShadePush {
     std::uint32_t quads;
@@ -72,22 +76,50 @@ std::span<const std::byte> bytes_of(const T* data, std::size_t count) {
 
 }  // namespace
 
+bool runs_on_gpu(sh::ExpMethod method) {
+    return method == sh::ExpMethod::hybrid || method == sh::ExpMethod::scaling_squaring;
+}
+
+namespace {
+// A field without shared kernels builds both pipelines up front, so its first operation's
+// timings (bench transfer) hold no pipeline creation.
+std::shared_ptr<const TransferKernels> own_kernels(const Context& context) {
+    auto kernels = std::make_shared<const TransferKernels>(context);
+    kernels->transfer();
+    kernels->shade();
+    return kernels;
+}
+}  // namespace
+
 std::size_t max_band_texels(const Context& context) {
     const VkDeviceSize by_range = context.limits().maxStorageBufferRange / (kCoeffs * sizeof(float));
     const VkDeviceSize by_groups = VkDeviceSize(context.limits().maxComputeWorkGroupCount[0]) * kGroup;
     return std::size_t(std::max<VkDeviceSize>(kGroup, std::min(by_range, by_groups) / 4 * 4));
 }
 
-TransferField::TransferField(const Context& context, const ts::render::TransferInputs& in, std::size_t band_texels)
+const Kernel& TransferKernels::transfer() const {
+    if (!transfer_)
+        transfer_.emplace(context_, "render_transfer",
+                          KernelLayout{.storage_buffers = 5, .push_constant_bytes = sizeof(TransferPush)});
+    return *transfer_;
+}
+
+const Kernel& TransferKernels::shade() const {
+    if (!shade_)
+        shade_.emplace(context_, "render_shade",
+                       KernelLayout{.storage_buffers = 3, .push_constant_bytes = sizeof(ShadePush)});
+    return *shade_;
+}
+
+TransferField::TransferField(const Context& context, const ts::render::TransferInputs& in, std::size_t band_texels,
+                             std::shared_ptr<const TransferKernels> kernels)
     : context_(context),
-      transfer_kernel_(context, "render_transfer",
-                       {.storage_buffers = 5, .push_constant_bytes = sizeof(TransferPush)}),
-      shade_kernel_(context, "render_shade", {.storage_buffers = 3, .push_constant_bytes = sizeof(ShadePush)}),
+      kernels_(kernels ? std::move(kernels) : own_kernels(context)),
       texels_(in.texels),
       light_(context.create_buffer(kCoeffs * 4 * sizeof(float))) {
-    if (in.method != sh::ExpMethod::hybrid)
+    if (!runs_on_gpu(in.method))
         throw InputError("--exp-method " + std::string(sh::to_string(in.method)) +
-                         ": only hybrid runs on the GPU (use --cpu)");
+                         ": only hybrid and scaling_squaring run on the GPU (use --cpu)");
     if (texels_ == 0) return;
     if (!in.log_visibility || !in.lobe_axis || !in.lobe_log_zh)
         throw std::invalid_argument("gpu::render::TransferField: null input array");
@@ -123,14 +155,46 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
         }
         if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
         batch.mark("upload");
-        batch.dispatch(transfer_kernel_, {log_vis, axis, in.uniform_lobe ? uniform_zh : zh, b.transfer, linear_table},
+        batch.dispatch(kernels_->transfer(), {log_vis, axis, in.uniform_lobe ? uniform_zh : zh, b.transfer, linear_table},
                        TransferPush{std::uint32_t(n), std::uint32_t(padded(n)), in.uniform_lobe ? 1u : 0u,
-                                    exp_options.hybrid_threshold, exp_options.max_squarings},
+                                    exp_options.hybrid_threshold, exp_options.max_squarings,
+                                    in.method == sh::ExpMethod::hybrid ? TS_TRANSFER_EXP_HYBRID
+                                                                       : TS_TRANSFER_EXP_SCALING_SQUARING,
+                                    exp_options.squaring_threshold, exp_options.squaring_base_order},
                        groups_for(n, kGroup));
         batch.mark("transfer");
         batch.submit_and_wait();
         add_stage_times(stages_, batch);
         bands_.push_back(std::move(b));
+    }
+    wall_ms_ = ms_since(start);
+}
+
+TransferField::TransferField(const Context& context, const float* transfer, std::size_t texels,
+                             std::size_t band_texels, std::shared_ptr<const TransferKernels> kernels)
+    : context_(context),
+      kernels_(kernels ? std::move(kernels) : own_kernels(context)),
+      texels_(texels),
+      light_(context.create_buffer(kCoeffs * 4 * sizeof(float))) {
+    if (texels_ == 0) return;
+    if (!transfer) throw std::invalid_argument("gpu::render::TransferField: null transfer array");
+    std::size_t band = max_band_texels(context);
+    if (band_texels > 0) band = std::min(band, band_texels);
+    const auto start = std::chrono::steady_clock::now();
+    stages_.clear();
+    Batch batch(context);
+    for (std::size_t first = 0; first < texels_; first += band) {
+        const std::size_t n = std::min(band, texels_ - first);
+        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float)),
+               context.create_buffer(padded(n) * 3 * sizeof(float))};
+        if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
+        for (VkDeviceSize i = 0; i < kCoeffs; ++i)
+            batch.upload(b.transfer, bytes_of(transfer + i * texels_ + first, n), i * padded(n) * sizeof(float));
+        batch.mark("upload");
+        bands_.push_back(std::move(b));
+        // Staging memory is held until the submit: one band (<= 128 MiB) per submit.
+        batch.submit_and_wait();
+        add_stage_times(stages_, batch);
     }
     wall_ms_ = ms_since(start);
 }
@@ -166,7 +230,7 @@ void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* 
     batch.mark("light");
     for (std::size_t k = 0; k < bands_.size(); ++k) {
         const Band& b = bands_[k];
-        batch.dispatch(shade_kernel_, {b.transfer, light_, b.rgb}, shade_push(b.texels),
+        batch.dispatch(kernels_->shade(), {b.transfer, light_, b.rgb}, shade_push(b.texels),
                        groups_for(padded(b.texels) / 4, kGroup));
         batch.mark("shade");
         batch.download(b.rgb, std::span<glm::vec3>(rgb_out + b.first, b.texels));

@@ -2,7 +2,8 @@
 // The transfer stage on the GPU (core/render/transfer.hpp's two steps, same layouts):
 //   transfer vectors T = exp_SH(V_log + rotate(F_log, axis))   shader render_transfer.comp
 //   relight          rgb = sum_i T_i L_i                          shader render_shade.comp
-// The exponentiation is core/sh/sh_exp_shared.h, the same text the CPU path compiles.
+// The exponentiation is core/sh/sh_exp_shared.h (hybrid) or core/sh/sh_exp_squaring_shared.h
+// (scaling_squaring), the same text the CPU path compiles.
 //
 //   gpu::Context context;
 //   gpu::render::TransferField field(context, inputs);   // T computed, kept on the device
@@ -13,6 +14,8 @@
 // (maxStorageBufferRange: 128 MiB = 2.09 M texels of T on lavapipe) and its dispatch size.
 #include <array>
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,14 +33,33 @@ struct StageTime {
     double ms;  // device time, summed over bands (NaN without GPU timestamps)
 };
 
+// The stage's two pipelines, each built on first use and then shared by every TransferField
+// given this object (building one costs ~0.1-0.3 s on llvmpipe: a renderer makes three fields).
+class TransferKernels {
+public:
+    explicit TransferKernels(const Context& context) : context_(context) {}
+    const Kernel& transfer() const;  // render_transfer.comp
+    const Kernel& shade() const;     // render_shade.comp
+
+private:
+    const Context& context_;
+    mutable std::optional<Kernel> transfer_, shade_;
+};
+
 class TransferField {
 public:
-    // Computes every texel's transfer vector on the device. Only the hybrid exponentiation runs
-    // on the GPU (ts::InputError otherwise); inputs.threads is ignored. Stages: upload,
-    // transfer.
+    // Computes every texel's transfer vector on the device. The hybrid and scaling_squaring
+    // exponentiations run on the GPU (runs_on_gpu; ts::InputError otherwise) with sh::ExpOptions'
+    // defaults, as the CPU path; inputs.threads is ignored. Stages: upload, transfer.
     // band_texels > 0 caps the texels per band below the device's limit (tests check that bands
     // join seamlessly).
-    TransferField(const Context& context, const ts::render::TransferInputs& inputs, std::size_t band_texels = 0);
+    // kernels: shared pipelines (nullptr: the field builds its own).
+    TransferField(const Context& context, const ts::render::TransferInputs& inputs, std::size_t band_texels = 0,
+                  std::shared_ptr<const TransferKernels> kernels = nullptr);
+    // Keeps transfer vectors computed elsewhere ([16][texels], as transfer_vectors writes them)
+    // on the device for shade(). Stage: upload.
+    TransferField(const Context& context, const float* transfer, std::size_t texels, std::size_t band_texels = 0,
+                  std::shared_ptr<const TransferKernels> kernels = nullptr);
 
     std::size_t texels() const { return texels_; }
 
@@ -60,8 +82,7 @@ private:
     };
 
     const Context& context_;
-    Kernel transfer_kernel_;
-    Kernel shade_kernel_;
+    std::shared_ptr<const TransferKernels> kernels_;
     std::size_t texels_ = 0;
     std::vector<Band> bands_;
     Buffer light_;
@@ -75,6 +96,9 @@ std::vector<StageTime> transfer_vectors(const Context& context, const ts::render
                                         float* transfer_out);
 std::vector<StageTime> shade_transfer(const Context& context, const float* transfer, std::size_t texels,
                                       const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out);
+
+// The exponentiation methods TransferField runs on the device: hybrid and scaling_squaring.
+bool runs_on_gpu(sh::ExpMethod method);
 
 // Texels per band on this device: the storage-buffer range over the 64 bytes of T per texel,
 // and the largest one-dimensional dispatch.

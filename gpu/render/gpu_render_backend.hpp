@@ -1,0 +1,33 @@
+#pragma once
+// The Vulkan RenderBackend (core/render/render_backend.hpp): what FrameRenderer computes once
+// and shades per frame, on a gpu::Context.
+//   horizons + log-SH   gpu::visibility::compute (exact sweep, log-SH; no svf/sky)
+//   transfer vectors    gpu::render::TransferField (hybrid or scaling_squaring), T downloaded
+//   per-frame shading   T uploaded once and kept on the device; each frame one dispatch of
+//                       render_shade.comp and the radiance read back
+// Large grids run in bands (both stages band by the device's storage-buffer range), so the same
+// code serves lavapipe and a real GPU.
+//
+//   gpu::Context context;                                   // must outlive the backend, the
+//   auto backend = gpu::render::make_gpu_backend(context);  // renderer and its ShadeFields
+//   scene_options.renderer.backend = backend.get();
+#include <memory>
+
+#include "core/render/render_backend.hpp"
+#include "gpu/context.hpp"
+
+namespace ts::gpu::render {
+
+struct GpuBackendOptions {
+    // Upper bounds for tests (0 = the device's limits): texels per band of T, and rows of
+    // receivers per band of the visibility pass.
+    std::size_t max_band_texels = 0;
+    int max_band_rows = 0;
+};
+
+// Throws ts::InputError when a stage is asked for what the GPU does not run (a horizon method
+// other than exact, an exponentiation other than hybrid or scaling_squaring).
+std::unique_ptr<ts::render::RenderBackend> make_gpu_backend(const Context& context,
+                                                            const GpuBackendOptions& options = {});
+
+}  // namespace ts::gpu::render

@@ -27,5 +27,7 @@ void add_bench_relight_command(CLI::App& bench);
 void add_bench_render_command(CLI::App& bench);
 // `terrashade bench transfer` (app/bench_transfer_command.cpp): exp + relight, CPU vs GPU.
 void add_bench_transfer_command(CLI::App& bench);
+// `terrashade bench sun` (app/bench_sun_command.cpp): sun visibility, sweep vs exact.
+void add_bench_sun_command(CLI::App& bench);
 
 }  // namespace ts::app

@@ -4,6 +4,7 @@
 
 #include "core/sh/exp_method.hpp"
 #include "core/util/error.hpp"
+#include "core/visibility/sun_visibility.hpp"
 
 namespace ts::app {
 namespace {
@@ -57,7 +58,18 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
                  "Keep the diffuse transfer as exponentiated (default: scaled per SH band so open ground gets the exact projected cosine; docs/rendering.md)");
-    cmd.add_flag("--cpu", a.cpu, "Shade on the CPU (the only path so far; the Vulkan path will be the default)");
+    auto* cpu = cmd.add_flag("--cpu", a.cpu,
+                             "Compute visibility, transfer and shading on the CPU (the reference path) instead of the "
+                             "Vulkan device");
+    cmd.add_option("--device", a.device,
+                   "Vulkan device index as `terrashade devices` lists it (default: the best device; without --device "
+                   "a machine with no Vulkan falls back to the CPU with a warning)")
+        ->excludes(cpu);
+    cmd.add_option("--sun-shadows", a.sun_shadows,
+                   "Per-frame sun shadows: sweep (fast, shadow heights along the sweep lines) or exact (the "
+                   "reference horizon sweep in the sun's azimuth; docs/accuracy.md)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"sweep", "exact"}));
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 256));
@@ -86,6 +98,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.exp_method = sh::parse_exp_method(a.exp_method);
     o.renderer.band_correction = !a.no_band_correction;
     o.renderer.threads = a.threads;
+    o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     return o;
 }

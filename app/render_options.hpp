@@ -2,6 +2,7 @@
 // The options `render`, `relight` and `bench relight` share (app/render_command.cpp,
 // app/relight_command.cpp, app/bench_relight_command.cpp): the DEM, sky, view, materials,
 // exposure and quality knobs, and their conversion to a render::SceneOptions.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -23,10 +24,12 @@ struct RenderArgs {
     std::string albedo;
     int directions = 32;
     bool no_curvature = false;
-    bool cpu = false;
+    bool cpu = false;                     // --cpu: the CPU reference path (app/render_device.hpp)
+    std::optional<std::uint32_t> device;  // --device N: this Vulkan device (default: the best one)
     double haze_km = 250.0;
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
+    std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     int threads = 0;
 };
 

@@ -70,6 +70,16 @@ std::vector<float> horizon_in_azimuth(const terrain::HeightGrid& grid, double ph
 
 }  // namespace
 
+SunMethod parse_sun_method(const std::string& name) {
+    if (name == "sweep") return SunMethod::sweep;
+    if (name == "exact") return SunMethod::exact;
+    throw InputError("sun shadows: unknown method '" + name + "' (choose sweep or exact)");
+}
+
+std::string sun_method_name(SunMethod method) {
+    return method == SunMethod::exact ? "exact" : "sweep";
+}
+
 double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, double sun_radius_rad) {
     if (std::isnan(horizon_rad) || std::isnan(sun_elevation_rad)) return std::numeric_limits<double>::quiet_NaN();
     if (!(sun_radius_rad > 0)) return sun_elevation_rad > horizon_rad ? 1.0 : 0.0;  // a point sun

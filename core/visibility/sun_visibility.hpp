@@ -1,6 +1,7 @@
 #pragma once
 // The sun's visible fraction per texel (METHOD.md, "treat the sun apart"): the part of the sun's
 // disc above the exact horizon in the sun's azimuth, so sun shadows are crisp and right.
+#include <string>
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"
@@ -11,6 +12,14 @@ namespace ts::visibility {
 // Fraction (0..1) of a disc of angular radius r centred at elevation e that lies above a flat
 // horizon line at elevation h (all radians): the circular-segment area over the disc's area.
 double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, double sun_radius_rad);
+
+// How a renderer computes the sun's visible fraction each frame: `sweep` (SunShadowSweep,
+// sun_sweep.hpp: shadow heights along the sweep lines, built once per grid, ~5x faster) or
+// `exact` (sun_visibility below: the reference).
+enum class SunMethod { sweep, exact };
+// "sweep" | "exact"; anything else throws ts::InputError naming the choices.
+SunMethod parse_sun_method(const std::string& name);
+std::string sun_method_name(SunMethod method);
 
 struct SunVisibilityOptions {
     bool curvature = true;             // as HorizonOptions::curvature

@@ -1,0 +1,192 @@
+// `terrashade bench sun DEM...`: the per-frame sun visibility, the sweep (SunShadowSweep,
+// core/visibility/sun_sweep.hpp) against the exact path (sun_visibility), in the same run:
+// ms per frame of each and their ratio, and the sweep's error over a set of sun positions
+// from grazing to high: IoU of the shadow masks (fraction < 0.5) and mean |fraction difference|.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/command.hpp"
+#include "app/dem_input.hpp"
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/visibility/sun_sweep.hpp"
+#include "core/visibility/sun_visibility.hpp"
+#include "core/visibility/visibility_grid.hpp"
+
+namespace ts::app {
+namespace {
+
+struct BenchSunOptions {
+    std::vector<std::string> dems;
+    int frames = 5;
+    int threads = 2;
+    int max_size = 1000;
+    double near_field = visibility::SunSweepOptions{}.near_field_texels;
+    double near_fine = visibility::SunSweepOptions{}.near_field_fine_texels;
+    double near_step = visibility::SunSweepOptions{}.near_field_step_texels;
+    bool no_curvature = false;
+    std::vector<double> elevations = {2, 3, 5, 10, 20, 35, 60};
+    std::vector<double> azimuths = {0, 30, 45, 90, 135, 160, 180, 225, 270, 315};
+};
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// The central max_size x max_size texels of a grid (all of it if smaller), with its spacing.
+struct CroppedGrid {
+    std::vector<float> z;
+    terrain::HeightGrid grid;
+};
+CroppedGrid centre_crop(const terrain::HeightGrid& g, int max_size) {
+    CroppedGrid out;
+    const int w = std::min(g.width, max_size), h = std::min(g.height, max_size);
+    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
+    out.z.resize(std::size_t(w) * h);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) out.z[std::size_t(r) * w + c] = g.at(c0 + c, r0 + r);
+    out.grid.width = w;
+    out.grid.height = h;
+    out.grid.z = out.z;
+    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
+    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
+    return out;
+}
+
+struct Agreement {
+    double iou = 1, mae = 0;
+    long nan_mismatch = 0;
+    long shadow_exact = 0, shadow_sweep = 0;
+};
+
+// Shadow masks (fraction < 0.5) and fractions of the sweep against the exact path.
+Agreement compare(const std::vector<float>& exact, const std::vector<float>& sweep) {
+    long inter = 0, uni = 0, n = 0;
+    double abs_sum = 0;
+    Agreement a;
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+        const bool ne = std::isnan(exact[i]), ns = std::isnan(sweep[i]);
+        if (ne != ns) ++a.nan_mismatch;
+        if (ne || ns) continue;
+        const bool se = exact[i] < 0.5f, ss = sweep[i] < 0.5f;
+        inter += se && ss;
+        a.shadow_exact += se;
+        a.shadow_sweep += ss;
+        uni += se || ss;
+        abs_sum += std::abs(double(exact[i]) - sweep[i]);
+        ++n;
+    }
+    a.iou = uni > 0 ? double(inter) / double(uni) : 1.0;
+    a.mae = n > 0 ? abs_sum / double(n) : 0.0;
+    return a;
+}
+
+void run_dem(const BenchSunOptions& o, const std::string& path) {
+    DemInput in;
+    in.files = {path};
+    const dem::Dem dem = load_dem_input(in);
+    const visibility::VisibilityGrid vgrid(dem);
+    const CroppedGrid crop = centre_crop(vgrid.view(), o.max_size);
+    const terrain::HeightGrid& grid = crop.grid;
+
+    visibility::SunVisibilityOptions eo;
+    eo.curvature = !o.no_curvature;
+    eo.threads = o.threads;
+    visibility::SunSweepOptions so;
+    so.curvature = !o.no_curvature;
+    so.threads = o.threads;
+    so.near_field_texels = o.near_field;
+    so.near_field_fine_texels = o.near_fine;
+    so.near_field_step_texels = o.near_step;
+    auto t0 = Clock::now();
+    visibility::SunShadowSweep sweep(grid, so);
+    const double setup_ms = ms_since(t0);
+
+    double exact_ms = 0, sweep_ms = 0, iou_sum = 0, mae_sum = 0, iou_min = 2, mae_max = -1;
+    double worst_az = 0, worst_el = 0;
+    long worst_exact = 0, worst_sweep = 0;
+    long nan_mismatch = 0;
+    int positions = 0;
+    std::vector<float> fast;
+    sweep.compute(180.0, 30.0, fast);  // warm-up (first touch), not timed
+    std::printf("%s: %dx%d (of %dx%d), sweep setup %.2f ms, near field %.1f texels (1/4 steps to %.1f, then %.2f), %d threads\n",
+                std::filesystem::path(path).filename().string().c_str(), grid.width, grid.height, dem.width,
+                dem.height, setup_ms, o.near_field, o.near_fine, o.near_step, thread_count(o.threads));
+    std::printf("  %6s %10s %10s %7s %9s %9s %10s\n", "elev", "exact_ms", "sweep_ms", "ratio", "iou_min", "iou_mean",
+                "mae_mean");
+    for (double el : o.elevations) {
+        double e_ms = 0, s_ms = 0, imin = 2, isum = 0, msum = 0;
+        for (double az : o.azimuths) {
+            t0 = Clock::now();
+            const std::vector<float> exact = visibility::sun_visibility(grid, az, el, eo);
+            e_ms += ms_since(t0);
+            t0 = Clock::now();
+            for (int k = 0; k < o.frames; ++k) sweep.compute(az, el, fast);
+            s_ms += ms_since(t0) / o.frames;
+            const Agreement a = compare(exact, fast);
+            nan_mismatch += a.nan_mismatch;
+            if (a.iou < iou_min)
+                iou_min = a.iou, worst_az = az, worst_el = el, worst_exact = a.shadow_exact,
+                worst_sweep = a.shadow_sweep;
+            imin = std::min(imin, a.iou);
+            isum += a.iou;
+            msum += a.mae;
+            mae_max = std::max(mae_max, a.mae);
+        }
+        const double n = double(o.azimuths.size());
+        std::printf("  %6.1f %10.2f %10.3f %7.1f %9.4f %9.4f %10.5f\n", el, e_ms / n, s_ms / n, e_ms / s_ms, imin,
+                    isum / n, msum / n);
+        exact_ms += e_ms, sweep_ms += s_ms, iou_sum += isum, mae_sum += msum;
+        positions += int(o.azimuths.size());
+    }
+    std::printf("  all %d sun positions: exact %.2f ms, sweep %.3f ms per frame (%.1fx faster); shadow-mask IoU "
+                "mean %.4f, min %.4f (az %.1f, el %.1f: %ld shadowed texels exact, %ld sweep); mean |fraction diff| %.5f (worst position %.5f); "
+                "void mismatches %ld\n",
+                positions, exact_ms / positions, sweep_ms / positions, exact_ms / sweep_ms, iou_sum / positions,
+                iou_min, worst_az, worst_el, worst_exact, worst_sweep, mae_sum / positions, mae_max, nan_mismatch);
+}
+
+}  // namespace
+
+void add_bench_sun_command(CLI::App& bench) {
+    auto o = std::make_shared<BenchSunOptions>();
+    CLI::App* cmd = bench.add_subcommand(
+        "sun", "Per-frame sun visibility: the sweep against the exact path (ms per frame, shadow-mask IoU, mean "
+               "|fraction difference|) over sun positions from grazing to high");
+    cmd->add_option("DEM", o->dems, "DEM files, each measured on its own")->required();
+    cmd->add_option("--frames", o->frames, "Timed sweep frames per sun position (the exact path runs once)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--threads", o->threads, "Worker threads of both paths (0 = one per core)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 256));
+    cmd->add_option("--max-size", o->max_size, "Measure the central N x N texels of larger DEMs")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100000));
+    cmd->add_option("--near-field", o->near_field, "Sweep: texels marched exactly from each texel centre")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 16.0));
+    cmd->add_option("--near-fine", o->near_fine, "Sweep: texels of the near field marched in 1/4-texel steps")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 16.0));
+    cmd->add_option("--near-step", o->near_step, "Sweep: near-field step (texels) beyond the fine part")
+        ->capture_default_str()
+        ->check(CLI::Range(0.25, 4.0));
+    cmd->add_option("--elevations", o->elevations, "Sun elevations (degrees)")->capture_default_str();
+    cmd->add_option("--azimuths", o->azimuths, "Sun azimuths (degrees clockwise from north)")->capture_default_str();
+    cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth (both paths)");
+    cmd->callback([o] {
+        for (double e : o->elevations)
+            if (!(e >= -90 && e <= 90)) throw InputError("--elevations: each must be within [-90, 90] degrees");
+        for (const std::string& path : o->dems) run_dem(*o, path);
+    });
+}
+
+}  // namespace ts::app

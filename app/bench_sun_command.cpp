@@ -7,12 +7,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/csv_number.hpp"
 #include "app/dem_input.hpp"
+#include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/sun_sweep.hpp"
@@ -27,12 +30,19 @@ struct BenchSunOptions {
     int frames = 5;
     int threads = 2;
     int max_size = 1000;
-    double near_field = visibility::SunSweepOptions{}.near_field_texels;
+    std::vector<double> near_fields = {visibility::SunSweepOptions{}.near_field_texels};
     double near_fine = visibility::SunSweepOptions{}.near_field_fine_texels;
     double near_step = visibility::SunSweepOptions{}.near_field_step_texels;
     bool no_curvature = false;
     std::vector<double> elevations = {2, 3, 5, 10, 20, 35, 60};
     std::vector<double> azimuths = {0, 30, 45, 90, 135, 160, 180, 225, 270, 315};
+    std::string csv;
+};
+
+// One CSV row per DEM, near field and sun elevation (input of scripts/chart_sun.py).
+struct CsvRow {
+    std::string dem;
+    double near_field, elevation, exact_ms, sweep_ms, iou_min, iou_mean, mae_mean;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -88,7 +98,7 @@ Agreement compare(const std::vector<float>& exact, const std::vector<float>& swe
     return a;
 }
 
-void run_dem(const BenchSunOptions& o, const std::string& path) {
+void run_dem(const BenchSunOptions& o, const std::string& path, double near_field, std::vector<CsvRow>& rows) {
     DemInput in;
     in.files = {path};
     const dem::Dem dem = load_dem_input(in);
@@ -102,7 +112,7 @@ void run_dem(const BenchSunOptions& o, const std::string& path) {
     visibility::SunSweepOptions so;
     so.curvature = !o.no_curvature;
     so.threads = o.threads;
-    so.near_field_texels = o.near_field;
+    so.near_field_texels = near_field;
     so.near_field_fine_texels = o.near_fine;
     so.near_field_step_texels = o.near_step;
     auto t0 = Clock::now();
@@ -118,7 +128,7 @@ void run_dem(const BenchSunOptions& o, const std::string& path) {
     sweep.compute(180.0, 30.0, fast);  // warm-up (first touch), not timed
     std::printf("%s: %dx%d (of %dx%d), sweep setup %.2f ms, near field %.1f texels (1/4 steps to %.1f, then %.2f), %d threads\n",
                 std::filesystem::path(path).filename().string().c_str(), grid.width, grid.height, dem.width,
-                dem.height, setup_ms, o.near_field, o.near_fine, o.near_step, thread_count(o.threads));
+                dem.height, setup_ms, near_field, o.near_fine, o.near_step, thread_count(o.threads));
     std::printf("  %6s %10s %10s %7s %9s %9s %10s\n", "elev", "exact_ms", "sweep_ms", "ratio", "iou_min", "iou_mean",
                 "mae_mean");
     for (double el : o.elevations) {
@@ -141,6 +151,8 @@ void run_dem(const BenchSunOptions& o, const std::string& path) {
             mae_max = std::max(mae_max, a.mae);
         }
         const double n = double(o.azimuths.size());
+        rows.push_back({std::filesystem::path(path).filename().string(), near_field, el, e_ms / n, s_ms / n, imin,
+                        isum / n, msum / n});
         std::printf("  %6.1f %10.2f %10.3f %7.1f %9.4f %9.4f %10.5f\n", el, e_ms / n, s_ms / n, e_ms / s_ms, imin,
                     isum / n, msum / n);
         exact_ms += e_ms, sweep_ms += s_ms, iou_sum += isum, mae_sum += msum;
@@ -170,7 +182,9 @@ void add_bench_sun_command(CLI::App& bench) {
     cmd->add_option("--max-size", o->max_size, "Measure the central N x N texels of larger DEMs")
         ->capture_default_str()
         ->check(CLI::Range(1, 100000));
-    cmd->add_option("--near-field", o->near_field, "Sweep: texels marched exactly from each texel centre")
+    cmd->add_option("--near-field", o->near_fields,
+                    "Sweep: texels marched exactly from each texel centre (a comma list measures each)")
+        ->delimiter(',')
         ->capture_default_str()
         ->check(CLI::Range(0.0, 16.0));
     cmd->add_option("--near-fine", o->near_fine, "Sweep: texels of the near field marched in 1/4-texel steps")
@@ -182,10 +196,23 @@ void add_bench_sun_command(CLI::App& bench) {
     cmd->add_option("--elevations", o->elevations, "Sun elevations (degrees)")->capture_default_str();
     cmd->add_option("--azimuths", o->azimuths, "Sun azimuths (degrees clockwise from north)")->capture_default_str();
     cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth (both paths)");
+    cmd->add_option("--csv", o->csv, "Write one row per DEM, near field and elevation as CSV (scripts/chart_sun.py)");
     cmd->callback([o] {
         for (double e : o->elevations)
             if (!(e >= -90 && e <= 90)) throw InputError("--elevations: each must be within [-90, 90] degrees");
-        for (const std::string& path : o->dems) run_dem(*o, path);
+        std::vector<CsvRow> rows;
+        for (const std::string& path : o->dems)
+            for (double near_field : o->near_fields) run_dem(*o, path, near_field, rows);
+        if (o->csv.empty()) return;
+        write_atomically(o->csv, [&](const std::filesystem::path& tmp) {
+            std::ofstream out(tmp);
+            out << "dem,near_field,elevation_deg,exact_ms,sweep_ms,iou_min,iou_mean,fraction_mae_mean\n";
+            for (const CsvRow& r : rows)
+                out << r.dem << ',' << csv_number(r.near_field) << ',' << csv_number(r.elevation) << ','
+                    << csv_number(r.exact_ms) << ',' << csv_number(r.sweep_ms) << ',' << csv_number(r.iou_min) << ','
+                    << csv_number(r.iou_mean) << ',' << csv_number(r.mae_mean) << '\n';
+            if (!out.flush()) throw InputError(o->csv + ": cannot write");
+        });
     });
 }
 

@@ -4,14 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <string>
 
-#include "core/sh/sh_shared.hpp"
-#include "core/sh/slice_projector.hpp"
 #include "core/util/error.hpp"
-#include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -19,6 +15,7 @@
 #include "core/visibility/row_metrics.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/kernel.hpp"
+#include "gpu/visibility/horizon_products.hpp"
 
 namespace ts::gpu::visibility {
 namespace {
@@ -44,19 +41,9 @@ struct HorizonPush {
     std::int32_t col0, row0, band_w, band_h, sample_count;
     float curvature, z_top;
 };
-struct LogShPush {  // vis_log_sh.comp
-    std::uint32_t texels;
-    std::int32_t directions;
-    float log_eps;
-};
-struct SkyPush {  // vis_sky.comp
-    std::uint32_t texels;
-    std::int32_t directions;
-};
 
 constexpr int kMaxHeightParts = 4;             // bindings 0..3 of vis_pyramid_levels.glsl
 constexpr std::uint32_t kTile = 8;             // local size of both pyramid shaders (8 x 8)
-constexpr std::uint32_t kTexelGroup = 64;      // vis_log_sh, vis_sky
 constexpr std::uint32_t kStorageBuffers = 7;   // the pyramid's bindings 0..6
 // log-SH loops ~17 times per direction and llvmpipe ends an invocation's loops after 65535
 // iterations in all (as gpu_visibility.cpp).
@@ -153,14 +140,6 @@ DevicePyramid record_pyramid(const Context& context, Batch& batch, const terrain
     return d;
 }
 
-void add_stage_times(std::vector<StageTime>& total, const Batch& batch) {
-    for (const auto& [label, ms] : batch.stage_times()) {
-        auto it = std::find_if(total.begin(), total.end(), [&](const StageTime& s) { return s.label == label; });
-        if (it == total.end()) total.push_back({label, ms});
-        else it->ms += ms;
-    }
-}
-
 void check_grid(const terrain::HeightGrid& grid) {
     if (grid.width < 1 || grid.height < 1 || grid.z.size() != std::size_t(grid.width) * std::size_t(grid.height))
         throw InputError("height grid: empty or inconsistent size");
@@ -221,15 +200,6 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
         dirs[std::size_t(d) * 2] = float(std::cos(phi));
         dirs[std::size_t(d) * 2 + 1] = float(-std::sin(phi));
     }
-    // ts_slice_azimuth_weight of every slice and coefficient, for vis_log_sh (as gpu_visibility.cpp).
-    std::vector<float> slice_weights(std::size_t(directions) * 16);
-    for (int d = 0; d < directions; ++d)
-        for (int i = 0; i < 16; ++i) {
-            const int l = int(std::sqrt(double(i)));
-            slice_weights[std::size_t(d) * 16 + std::size_t(i)] = float(sh::shared::ts_slice_azimuth_weight(
-                i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * 3.14159265358979323846 / directions));
-        }
-
     // Bands of receiver rows: the horizons (and log-SH) of a band within one storage buffer.
     const VkDeviceSize per_row = VkDeviceSize(win.width) * sizeof(float) * VkDeviceSize(std::max(directions, 16));
     int band_rows = int(std::min<VkDeviceSize>(VkDeviceSize(win.height), std::max<VkDeviceSize>(1, range / per_row)));
@@ -241,27 +211,14 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
                         .push_constant_bytes = sizeof(HorizonPush),
                         .specialization = {std::uint32_t(layout.parts), std::uint32_t(layout.rows_per_part),
                                            layout.packed ? 1u : 0u}});
-    const Kernel log_sh(context, "vis_log_sh", {.storage_buffers = 3, .push_constant_bytes = sizeof(LogShPush)});
-    const Kernel sky(context, "vis_sky", {.storage_buffers = 3, .push_constant_bytes = sizeof(SkyPush)});
-
-    Result result;
-    result.horizons.width = win.width;
-    result.horizons.height = win.height;
-    result.horizons.directions = directions;
-    const std::size_t texels = result.horizons.texels();
-    result.horizons.angle.assign(texels * std::size_t(directions), 0.0f);
-    if (options.log_sh) result.log_sh.assign(texels * 16, 0.0f);
-    if (options.sky) {
-        result.svf.assign(texels, 0.0f);
-        result.sky_visible.assign(texels, 0.0f);
-    }
 
     const auto wall_start = std::chrono::steady_clock::now();
     Batch batch(context);
+    Result result;
+    HorizonProducts products(context, batch, options, win.width, win.height, result);
     const Buffer sample_buffer = batch.upload_new(std::span<const SampleEntry>(samples));
     const Buffer row_buffer = batch.upload_new(std::span<const RowStep>(rows));
     const Buffer dir_buffer = batch.upload_new(std::span<const float>(dirs));
-    const Buffer weight_buffer = batch.upload_new(std::span<const float>(slice_weights));
     batch.mark("upload");
     const DevicePyramid pyramid = record_pyramid(context, batch, grid, layout, level);
     batch.mark("pyramid");
@@ -286,53 +243,7 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
                        groups);
         batch.mark("horizons");
 
-        std::vector<float> band_horizons(band_texels * std::size_t(directions));
-        std::vector<float> band_sh, band_svf, band_sky;
-        std::unique_ptr<Buffer> sh_buffer, svf_buffer, sky_buffer;
-        if (options.log_sh) {
-            sh_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * 16 * sizeof(float)));
-            batch.dispatch(log_sh, {horizons, *sh_buffer, weight_buffer},
-                           LogShPush{std::uint32_t(band_texels), directions, options.log_eps},
-                           groups_for(band_texels, kTexelGroup));
-            batch.mark("log_sh");
-        }
-        if (options.sky) {
-            svf_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
-            sky_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
-            batch.dispatch(sky, {horizons, *svf_buffer, *sky_buffer}, SkyPush{std::uint32_t(band_texels), directions},
-                           groups_for(band_texels, kTexelGroup));
-            batch.mark("sky");
-        }
-        batch.download(horizons, std::span<float>(band_horizons));
-        if (sh_buffer) {
-            band_sh.resize(band_texels * 16);
-            batch.download(*sh_buffer, std::span<float>(band_sh));
-        }
-        if (svf_buffer) {
-            band_svf.resize(band_texels);
-            band_sky.resize(band_texels);
-            batch.download(*svf_buffer, std::span<float>(band_svf));
-            batch.download(*sky_buffer, std::span<float>(band_sky));
-        }
-        batch.mark("download");
-        batch.submit_and_wait();
-        add_stage_times(result.stages, batch);
-        ++result.bands;
-
-        // The band's rows into the window-wide layouts ([plane][texel]).
-        const std::size_t offset = std::size_t(band_row0) * std::size_t(win.width);
-        auto place = [&](const std::vector<float>& from, std::vector<float>& to, int planes) {
-            for (int i = 0; i < planes; ++i)
-                std::memcpy(to.data() + std::size_t(i) * texels + offset, from.data() + std::size_t(i) * band_texels,
-                            band_texels * sizeof(float));
-        };
-        place(band_horizons, result.horizons.angle, directions);
-        if (options.log_sh) place(band_sh, result.log_sh, 16);
-        if (options.sky) {
-            place(band_svf, result.svf, 1);
-            place(band_sky, result.sky_visible, 1);
-        }
-        if (ho.progress) ho.progress->advance(band_texels * std::size_t(directions));
+        products.finish_band(batch, horizons, band_row0, band_texels, result);
     }
     result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
     return result;

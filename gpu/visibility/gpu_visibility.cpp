@@ -4,14 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <string>
 
-#include "core/sh/sh_shared.hpp"
-#include "core/sh/slice_projector.hpp"
 #include "core/util/error.hpp"
-#include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -19,6 +15,7 @@
 #include "gpu/batch.hpp"
 #include "gpu/kernel.hpp"
 #include "gpu/visibility/gpu_pyramid.hpp"
+#include "gpu/visibility/horizon_products.hpp"
 
 namespace ts::gpu::visibility {
 namespace {
@@ -62,18 +59,8 @@ struct FinishPush {
     float cs, sn, h, curvature, z_top, row_spacing;
     std::int32_t tiles_x;
 };
-struct LogShPush {
-    std::uint32_t texels;
-    std::int32_t directions;
-    float log_eps;
-};
-struct SkyPush {
-    std::uint32_t texels;
-    std::int32_t directions;
-};
 
 constexpr std::uint32_t kLineGroup = 64;  // local_size_x of vis_exact_sweep.comp
-constexpr std::uint32_t kTexelGroup = 64;  // vis_log_sh, vis_sky
 constexpr std::uint32_t kTileW = 8, kTileH = 8;  // vis_exact_finish is 8 x 8
 constexpr VkDeviceSize kHullBudget = VkDeviceSize(64) << 20;  // scratch for the lines' hulls
 
@@ -166,7 +153,7 @@ struct HeightParts {
 };
 
 struct Kernels {
-    Kernel sweep, finish, log_sh, sky;
+    Kernel sweep, finish;
     Kernels(const Context& c, const HeightParts& hp)
         : sweep(c, "vis_exact_sweep",
                 {.storage_buffers = 6 + kMaxHeightParts - 1,
@@ -175,18 +162,8 @@ struct Kernels {
           finish(c, "vis_exact_finish",
                  {.storage_buffers = 4 + kMaxHeightParts - 1 + 1,
                   .push_constant_bytes = sizeof(FinishPush),
-                  .specialization = {std::uint32_t(hp.parts), std::uint32_t(hp.rows_per_part)}}),
-          log_sh(c, "vis_log_sh", {.storage_buffers = 3, .push_constant_bytes = sizeof(LogShPush)}),
-          sky(c, "vis_sky", {.storage_buffers = 3, .push_constant_bytes = sizeof(SkyPush)}) {}
+                  .specialization = {std::uint32_t(hp.parts), std::uint32_t(hp.rows_per_part)}}) {}
 };
-
-void add_stage_times(std::vector<StageTime>& total, const Batch& batch) {
-    for (const auto& [label, ms] : batch.stage_times()) {
-        auto it = std::find_if(total.begin(), total.end(), [&](const StageTime& s) { return s.label == label; });
-        if (it == total.end()) total.push_back({label, ms});
-        else it->ms += ms;
-    }
-}
 
 // Bytes of the far-field buffer a band needs (the largest azimuth's lines x window positions).
 VkDeviceSize far_bytes(const std::vector<SweepPlan>& plans, const vis::ReceiverWindow& band) {
@@ -296,30 +273,11 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     const VkDeviceSize hull_budget = std::min(kHullBudget, range);
     const long chunk_cap = long(std::max<VkDeviceSize>(kLineGroup, hull_budget / hull_line_bytes / kLineGroup * kLineGroup));
 
-    Result result;
-    result.horizons.width = win.width;
-    result.horizons.height = win.height;
-    result.horizons.directions = directions;
-    const std::size_t texels = result.horizons.texels();
-    result.horizons.angle.assign(texels * std::size_t(directions), 0.0f);
-    if (options.log_sh) result.log_sh.assign(texels * 16, 0.0f);
-    if (options.sky) {
-        result.svf.assign(texels, 0.0f);
-        result.sky_visible.assign(texels, 0.0f);
-    }
-
-    // ts_slice_azimuth_weight of every slice and coefficient (the shared formula, in double).
-    std::vector<float> slice_weights(std::size_t(directions) * 16);
-    for (int d = 0; d < directions; ++d)
-        for (int i = 0; i < 16; ++i) {
-            const int l = int(std::sqrt(double(i)));
-            slice_weights[std::size_t(d) * 16 + std::size_t(i)] = float(sh::shared::ts_slice_azimuth_weight(
-                i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * 3.14159265358979323846 / directions));
-        }
-
     const Kernels kernels(context, hp);
     const auto wall_start = std::chrono::steady_clock::now();
     Batch batch(context);
+    Result result;
+    HorizonProducts products(context, batch, options, win.width, win.height, result);
     std::vector<Buffer> height_parts;
     for (int i = 0; i < hp.parts; ++i) {
         const std::size_t first = std::size_t(i) * std::size_t(hp.rows_per_part) * std::size_t(grid.width);
@@ -332,7 +290,6 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     // Parts 1..3 as the shaders bind them (part 0 again where a part does not exist).
     auto part = [&](int i) -> const Buffer& { return i < hp.parts ? height_parts[std::size_t(i)] : heights; };
     const Buffer row_buffer = batch.upload_new(std::span<const RowInfo>(rows));
-    const Buffer weight_buffer = batch.upload_new(std::span<const float>(slice_weights));
     const Buffer top_buffer = batch.upload_new(std::span<const float>(block_top));
     batch.mark("upload");
     batch.submit_and_wait();
@@ -425,53 +382,7 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
             }
         }
 
-        std::vector<float> band_horizons(band_texels * std::size_t(directions));
-        std::vector<float> band_sh, band_svf, band_sky;
-        std::unique_ptr<Buffer> sh_buffer, svf_buffer, sky_buffer;
-        if (options.log_sh) {
-            sh_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * 16 * sizeof(float)));
-            batch.dispatch(kernels.log_sh, {horizons, *sh_buffer, weight_buffer},
-                           LogShPush{std::uint32_t(band_texels), directions, options.log_eps},
-                           groups_for(band_texels, kTexelGroup));
-            batch.mark("log_sh");
-        }
-        if (options.sky) {
-            svf_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
-            sky_buffer = std::make_unique<Buffer>(context.create_buffer(band_texels * sizeof(float)));
-            batch.dispatch(kernels.sky, {horizons, *svf_buffer, *sky_buffer},
-                           SkyPush{std::uint32_t(band_texels), directions}, groups_for(band_texels, kTexelGroup));
-            batch.mark("sky");
-        }
-        batch.download(horizons, std::span<float>(band_horizons));
-        if (sh_buffer) {
-            band_sh.resize(band_texels * 16);
-            batch.download(*sh_buffer, std::span<float>(band_sh));
-        }
-        if (svf_buffer) {
-            band_svf.resize(band_texels);
-            band_sky.resize(band_texels);
-            batch.download(*svf_buffer, std::span<float>(band_svf));
-            batch.download(*sky_buffer, std::span<float>(band_sky));
-        }
-        batch.mark("download");
-        batch.submit_and_wait();
-        add_stage_times(result.stages, batch);
-        ++result.bands;
-
-        // The band's rows into the window-wide layouts.
-        const std::size_t offset = std::size_t(band_row0) * std::size_t(win.width);
-        auto place = [&](const std::vector<float>& from, std::vector<float>& to, int planes) {
-            for (int i = 0; i < planes; ++i)
-                std::memcpy(to.data() + std::size_t(i) * texels + offset, from.data() + std::size_t(i) * band_texels,
-                            band_texels * sizeof(float));
-        };
-        place(band_horizons, result.horizons.angle, directions);
-        if (options.log_sh) place(band_sh, result.log_sh, 16);
-        if (options.sky) {
-            place(band_svf, result.svf, 1);
-            place(band_sky, result.sky_visible, 1);
-        }
-        if (ho.progress) ho.progress->advance(band_texels * std::size_t(directions));
+        products.finish_band(batch, horizons, band_row0, band_texels, result);
     }
     result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
     return result;

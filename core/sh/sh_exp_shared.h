@@ -81,6 +81,36 @@ TS_INLINE float ts_sh_norm(TS_IN_ARRAY(float, v, 16)) {
     return sqrt(s);
 }
 
+// The scaling step of both squaring methods: the fewest halvings k of m that bring it to at most
+// `threshold` (at most max_squarings); scale[0] = 2^-k. Halving is exact in float, so C++ and
+// GLSL find the same k for the same m.
+TS_INLINE int ts_sh_halvings(float m, float threshold, int max_squarings, TS_OUT_ARRAY(float, scale, 1)) {
+    int k = 0;
+    scale[0] = 1.0f;
+    while (m * scale[0] > threshold && k < max_squarings) {
+        scale[0] *= 0.5f;
+        ++k;
+    }
+    return k;
+}
+
+// The squaring step of both methods: g <- g^(2^k) by k SH squarings, each renormalised, with the
+// log of the dropped norms in log_scale[0] (so no intermediate overflows). False when a norm is
+// zero or infinite (the caller then gives zeros).
+TS_INLINE bool ts_sh_square_k_times(TS_INOUT_ARRAY(float, g, 16), int k, TS_OUT_ARRAY(float, log_scale, 1)) {
+    log_scale[0] = 0.0f;
+    for (int s = 0; s < k; ++s) {
+        float h[16];
+        ts_sh_square(g, h);
+        float n = ts_sh_norm(h);
+        if (!(n > 0.0f) || isinf(n)) return false;
+        float inv = 1.0f / n;
+        for (int i = 0; i < 16; ++i) g[i] = h[i] * inv;
+        log_scale[0] = 2.0f * log_scale[0] + log(n);
+    }
+    return true;
+}
+
 // exp of the log-SH vector f (16 coefficients) by the hybrid method:
 //  - DC isolation: exp(f) = exp(f_0 / sqrt(4 pi)) * exp(f_hat), f_hat = f without its DC;
 //  - scaling: k = the fewest halvings that bring m = |f_hat| to at most `threshold` (at most
@@ -96,29 +126,16 @@ TS_INLINE void ts_sh_exp_hybrid(TS_IN_ARRAY(float, f, 16), float threshold, int 
     float m2 = 0.0f;
     for (int i = 1; i < 16; ++i) m2 += f[i] * f[i];
     float m = sqrt(m2);
-    // Halving is exact in float, so C++ and GLSL find the same k for the same m.
-    int k = 0;
-    float scale = 1.0f;
-    while (m * scale > threshold && k < max_squarings) {
-        scale *= 0.5f;
-        ++k;
-    }
+    float scale[1];
+    int k = ts_sh_halvings(m, threshold, max_squarings, scale);
     float ab[2];
-    ts_optimal_linear_coeffs(m * scale, ab);
+    ts_optimal_linear_coeffs(m * scale[0], ab);
     float g[16];
     g[0] = ab[0] * TS_SQRT_4PI_F;
-    for (int i = 1; i < 16; ++i) g[i] = ab[1] * f[i] * scale;
-    float log_scale = 0.0f;
-    for (int s = 0; s < k; ++s) {
-        float h[16];
-        ts_sh_square(g, h);
-        float n = ts_sh_norm(h);
-        if (!(n > 0.0f) || isinf(n)) return;  // zeros
-        float inv = 1.0f / n;
-        for (int i = 0; i < 16; ++i) g[i] = h[i] * inv;
-        log_scale = 2.0f * log_scale + log(n);
-    }
-    float e = exp(min(log_scale + f[0] / TS_SQRT_4PI_F, TS_EXP_MAX_LOG_SCALE));
+    for (int i = 1; i < 16; ++i) g[i] = ab[1] * f[i] * scale[0];
+    float log_scale[1];
+    if (!ts_sh_square_k_times(g, k, log_scale)) return;  // zeros
+    float e = exp(min(log_scale[0] + f[0] / TS_SQRT_4PI_F, TS_EXP_MAX_LOG_SCALE));
     for (int i = 0; i < 16; ++i) result[i] = e * g[i];
     if (!ts_sh_all_finite(result))
         for (int i = 0; i < 16; ++i) result[i] = 0.0f;

@@ -56,28 +56,15 @@ TS_INLINE void ts_sh_exp_scaling_squaring(TS_IN_ARRAY(float, f, 16), int base_or
     for (int i = 0; i < 16; ++i) result[i] = 0.0f;
     if (!ts_sh_all_finite(f)) return;
     float m = ts_sh_norm(f);
-    // Halving is exact in float, so C++ and GLSL find the same k for the same m.
-    int k = 0;
-    float scale = 1.0f;
-    while (m * scale > threshold && k < max_squarings) {
-        scale *= 0.5f;
-        ++k;
-    }
+    float scale[1];
+    int k = ts_sh_halvings(m, threshold, max_squarings, scale);
     float scaled[16];
-    for (int i = 0; i < 16; ++i) scaled[i] = f[i] * scale;
+    for (int i = 0; i < 16; ++i) scaled[i] = f[i] * scale[0];
     float g[16];
     ts_sh_taylor(scaled, base_order, g);
-    float log_scale = 0.0f;
-    for (int s = 0; s < k; ++s) {
-        float h[16];
-        ts_sh_square(g, h);
-        float n = ts_sh_norm(h);
-        if (!(n > 0.0f) || isinf(n)) return;  // zeros
-        float inv = 1.0f / n;
-        for (int i = 0; i < 16; ++i) g[i] = h[i] * inv;
-        log_scale = 2.0f * log_scale + log(n);
-    }
-    float e = exp(min(log_scale, TS_EXP_MAX_LOG_SCALE));
+    float log_scale[1];
+    if (!ts_sh_square_k_times(g, k, log_scale)) return;  // zeros
+    float e = exp(min(log_scale[0], TS_EXP_MAX_LOG_SCALE));
     for (int i = 0; i < 16; ++i) result[i] = e * g[i];
     if (!ts_sh_all_finite(result))
         for (int i = 0; i < 16; ++i) result[i] = 0.0f;

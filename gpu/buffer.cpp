@@ -45,6 +45,7 @@ Buffer::Buffer(const Device& device, VkDeviceSize bytes, MemoryKind kind, VkBuff
     allocate.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
     allocate.allocationSize = requirements.size;
     allocate.memoryTypeIndex = type;
+    memory_properties_ = device.memory_properties().memoryTypes[type].propertyFlags;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     check(vkAllocateMemory(device.get(), &allocate, nullptr, &memory), "vkAllocateMemory");
     memory_ = {device.get(), memory, vkFreeMemory};
@@ -63,7 +64,8 @@ Buffer::Buffer(Buffer&& other) noexcept
       buffer_(std::move(other.buffer_)),
       size_(std::exchange(other.size_, 0)),
       kind_(other.kind_),
-      mapped_(std::exchange(other.mapped_, nullptr)) {}
+      mapped_(std::exchange(other.mapped_, nullptr)),
+      memory_properties_(std::exchange(other.memory_properties_, 0)) {}
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
     if (this != &other) {
@@ -72,6 +74,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         size_ = std::exchange(other.size_, 0);
         kind_ = other.kind_;
         mapped_ = std::exchange(other.mapped_, nullptr);
+        memory_properties_ = std::exchange(other.memory_properties_, 0);
     }
     return *this;
 }

@@ -30,6 +30,9 @@ public:
     MemoryKind kind() const { return kind_; }
     // The mapped bytes of a host_visible buffer (coherent: no flush needed); nullptr otherwise.
     std::byte* mapped() const { return mapped_; }
+    // The property flags of the memory type the buffer lives in (e.g. whether host_visible
+    // memory is also device-local and cached, so kernels may write results straight into it).
+    VkMemoryPropertyFlags memory_properties() const { return memory_properties_; }
 
 private:
     // Declared before buffer_ so the buffer goes first and the memory after it.
@@ -38,6 +41,7 @@ private:
     VkDeviceSize size_ = 0;
     MemoryKind kind_ = MemoryKind::device_local;
     std::byte* mapped_ = nullptr;
+    VkMemoryPropertyFlags memory_properties_ = 0;
 };
 
 // The index of a memory type allowed by type_bits with all `required` flags, preferring one

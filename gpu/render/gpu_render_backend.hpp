@@ -3,8 +3,9 @@
 // and shades per frame, on a gpu::Context.
 //   horizons + log-SH   gpu::visibility::compute (exact sweep, log-SH; no svf/sky)
 //   transfer vectors    gpu::render::TransferField (hybrid or scaling_squaring), T downloaded
-//   per-frame shading   T uploaded once and kept on the device; each frame one dispatch of
-//                       render_shade.comp and the radiance read back
+//   per-frame shading   T uploaded once and kept on the device; render_shade.comp's dispatches
+//                       recorded once (gpu/render/shade_recording.hpp) and re-submitted each
+//                       frame with the new light, the radiance read back
 // Large grids run in bands (both stages band by the device's storage-buffer range), so the same
 // code serves lavapipe and a real GPU.
 //

@@ -13,6 +13,7 @@
 #include "core/sh/sh_exp_squaring_shared.hpp"
 #include "core/util/error.hpp"
 #include "gpu/batch.hpp"
+#include "gpu/render/shade_recording.hpp"
 
 namespace ts::gpu::render {
 namespace {
@@ -30,15 +31,11 @@ struct TransferPush {
     float squaring_threshold;
     std::int32_t squaring_base_order;
 };
-struct ShadePush {
-    std::uint32_t quads;
-    std::uint32_t plane_quads;
-};
 
 // T's planes on the device are padded to whole quads of texels (render_shade.comp shades four
 // texels per invocation with vec4 loads).
 std::size_t padded(std::size_t texels) {
-    return (texels + 3) / 4 * 4;
+    return padded_to_quads(texels);
 }
 
 // The lighting SH as render_shade.comp reads it: one (r, g, b, 0) per coefficient.
@@ -53,7 +50,7 @@ ShadePush shade_push(std::size_t texels) {
     return {std::uint32_t(padded(texels) / 4), std::uint32_t(padded(texels) / 4)};
 }
 
-constexpr std::uint32_t kGroup = 64;  // local_size_x of both shaders
+constexpr std::uint32_t kGroup = 64;  // render_transfer.comp's local_size_x
 // Bands per submit: each adds two timestamp marks, at most Batch::kMaxMarks per submit.
 constexpr std::size_t kBandsPerSubmit = 16;
 
@@ -115,8 +112,7 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
                              std::shared_ptr<const TransferKernels> kernels)
     : context_(context),
       kernels_(kernels ? std::move(kernels) : own_kernels(context)),
-      texels_(in.texels),
-      light_(context.create_buffer(kCoeffs * 4 * sizeof(float))) {
+      texels_(in.texels) {
     if (!runs_on_gpu(in.method))
         throw InputError("--exp-method " + std::string(sh::to_string(in.method)) +
                          ": only hybrid and scaling_squaring run on the GPU (use --cpu)");
@@ -140,8 +136,7 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
     }
     for (std::size_t first = 0; first < texels_; first += band) {
         const std::size_t n = std::min(band, texels_ - first);
-        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float)),
-               context.create_buffer(padded(n) * 3 * sizeof(float))};
+        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float))};
         // The band's inputs live until this band's submit.
         const Buffer log_vis = context.create_buffer(n * kCoeffs * sizeof(float));
         const Buffer axis = context.create_buffer(n * 3 * sizeof(float));
@@ -174,8 +169,7 @@ TransferField::TransferField(const Context& context, const float* transfer, std:
                              std::size_t band_texels, std::shared_ptr<const TransferKernels> kernels)
     : context_(context),
       kernels_(kernels ? std::move(kernels) : own_kernels(context)),
-      texels_(texels),
-      light_(context.create_buffer(kCoeffs * 4 * sizeof(float))) {
+      texels_(texels) {
     if (texels_ == 0) return;
     if (!transfer) throw std::invalid_argument("gpu::render::TransferField: null transfer array");
     std::size_t band = max_band_texels(context);
@@ -185,8 +179,7 @@ TransferField::TransferField(const Context& context, const float* transfer, std:
     Batch batch(context);
     for (std::size_t first = 0; first < texels_; first += band) {
         const std::size_t n = std::min(band, texels_ - first);
-        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float)),
-               context.create_buffer(padded(n) * 3 * sizeof(float))};
+        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float))};
         if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
             batch.upload(b.transfer, bytes_of(transfer + i * texels_ + first, n), i * padded(n) * sizeof(float));
@@ -220,28 +213,21 @@ void TransferField::download(float* transfer_out) {
     wall_ms_ = ms_since(start);
 }
 
+TransferField::~TransferField() = default;
+TransferField::TransferField(TransferField&&) noexcept = default;
+
 void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) {
     stages_.clear();
     if (texels_ == 0) return;
     const auto start = std::chrono::steady_clock::now();
-    const auto light = light_vec4(light_sh);
-    Batch batch(context_);
-    batch.upload(light_, std::span<const float>(light.data(), light.size()));
-    batch.mark("light");
-    for (std::size_t k = 0; k < bands_.size(); ++k) {
-        const Band& b = bands_[k];
-        batch.dispatch(kernels_->shade(), {b.transfer, light_, b.rgb}, shade_push(b.texels),
-                       groups_for(padded(b.texels) / 4, kGroup));
-        batch.mark("shade");
-        batch.download(b.rgb, std::span<glm::vec3>(rgb_out + b.first, b.texels));
-        batch.mark("download");
-        if ((k + 1) % kBandsPerSubmit == 0) {
-            batch.submit_and_wait();
-            add_stage_times(stages_, batch);
-        }
+    if (!recording_) {
+        std::vector<ShadeRecording::BandInput> inputs;
+        for (const Band& b : bands_) inputs.push_back({b.first, b.texels, &b.transfer});
+        recording_ = std::make_unique<ShadeRecording>(context_, kernels_->shade(), inputs);
     }
-    batch.submit_and_wait();
-    add_stage_times(stages_, batch);
+    const auto light = light_vec4(light_sh);
+    recording_->run(std::span<const float, kCoeffs * 4>(light), rgb_out);
+    stages_ = recording_->stages();
     wall_ms_ = ms_since(start);
 }
 
@@ -271,7 +257,7 @@ std::vector<StageTime> shade_transfer(const Context& context, const float* trans
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
             batch.upload(t, bytes_of(transfer + i * texels + first, n), i * padded(n) * sizeof(float));
         batch.mark("upload");
-        batch.dispatch(kernel, {t, light_buffer, rgb}, shade_push(n), groups_for(padded(n) / 4, kGroup));
+        batch.dispatch(kernel, {t, light_buffer, rgb}, shade_push(n), groups_for(padded(n) / 4, kShadeGroup));
         batch.mark("shade");
         batch.download(rgb, std::span<glm::vec3>(rgb_out + first, n));
         batch.mark("download");

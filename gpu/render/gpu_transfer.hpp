@@ -7,7 +7,7 @@
 //
 //   gpu::Context context;
 //   gpu::render::TransferField field(context, inputs);   // T computed, kept on the device
-//   field.shade(light_sh, rgb);                            // per frame: one dispatch, rgb back
+//   field.shade(light_sh, rgb);                            // per frame: one submit, rgb back
 //   field.download(transfer);                              // T as [16][texels] if wanted
 //
 // Texels are processed in bands small enough for the device's storage-buffer range
@@ -27,6 +27,8 @@
 #include "gpu/kernel.hpp"
 
 namespace ts::gpu::render {
+
+class ShadeRecording;
 
 struct StageTime {
     std::string label;
@@ -60,12 +62,18 @@ public:
     // on the device for shade(). Stage: upload.
     TransferField(const Context& context, const float* transfer, std::size_t texels, std::size_t band_texels = 0,
                   std::shared_ptr<const TransferKernels> kernels = nullptr);
+    ~TransferField();
+    TransferField(TransferField&&) noexcept;
+    TransferField& operator=(TransferField&&) = delete;
 
     std::size_t texels() const { return texels_; }
 
     // T as [16][texels] (transfer.hpp's layout). Stage: download.
     void download(float* transfer_out);
-    // rgb_out[t] = sum_i T[i][t] * light[i]. Stages: light, shade, download.
+    // rgb_out[t] = sum_i T[i][t] * light[i]. The first call records the commands of every band
+    // (gpu/render/shade_recording.hpp); each call then re-submits them with the new light.
+    // Stages: shade, and download where the radiance goes through a staging copy (a discrete
+    // GPU; lavapipe's kernels write host memory directly).
     void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out);
 
     // Per-stage device times and the wall-clock time of the last operation (the constructor,
@@ -77,17 +85,18 @@ public:
 private:
     struct Band {
         std::size_t first = 0, texels = 0;
-        Buffer transfer;  // [16][band texels]
-        Buffer rgb;       // [band texels][3]
+        Buffer transfer;  // [16][padded band texels]
     };
 
     const Context& context_;
     std::shared_ptr<const TransferKernels> kernels_;
     std::size_t texels_ = 0;
     std::vector<Band> bands_;
-    Buffer light_;
     std::vector<StageTime> stages_;
     double wall_ms_ = 0;
+    // The recorded per-frame relight, made by the first shade(); it refers to bands_' buffers
+    // and kernels_' pipeline, so it is declared after them (and destroyed before them).
+    std::unique_ptr<ShadeRecording> recording_;
 };
 
 // One-shot mirrors of ts::render::transfer_vectors and shade_transfer (the second uploads T);

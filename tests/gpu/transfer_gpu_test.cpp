@@ -2,6 +2,7 @@
 // real log-SH visibility of shared DEM crops, with the validation layer on.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -17,7 +18,9 @@
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#include "gpu/batch.hpp"
 #include "gpu/render/gpu_transfer.hpp"
+#include "gpu/render/shade_recording.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -237,6 +240,65 @@ TEST_F(GpuTransferTest, BandsJoinIntoTheWholeResultAndVoidsStayNan) {
             ASSERT_EQ(rgb_one[t][c], rgb_bands[t][c]) << t;
             ASSERT_EQ(rgb_one[t][c], rgb_shot[t][c]) << t;
         }
+}
+
+// Equal as bits (NaN radiance of a void included): the recorded relight runs the one-shot
+// path's kernel on the same inputs.
+void expect_same_bits(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b, const char* what) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t t = 0; t < a.size(); ++t)
+        ASSERT_EQ(std::memcmp(&a[t], &b[t], sizeof(glm::vec3)), 0) << what << " texel " << t;
+}
+
+// The per-frame relight is recorded once and re-submitted: frames with changing light, over
+// several bands (the last short and padded), on the direct path lavapipe takes and on the
+// staging path of a discrete GPU, each give the one-shot shade_transfer's radiance.
+TEST_F(GpuTransferTest, RecordedRelightRepeatsTheOneShotResultFrameAfterFrame) {
+    Scene s = scene_of("N00E010.hgt", 45);  // 2025 texels
+    s.log_vis[3 * s.texels + 11] = std::numeric_limits<float>::quiet_NaN();
+    std::vector<float> t(16 * s.texels);
+    gr::transfer_vectors(*context_, diffuse_inputs(s), t.data());
+    std::array<glm::vec3, 16> dim = sky_light();
+    for (glm::vec3& c : dim) c *= -0.5f;
+    const std::array<glm::vec3, 16> lights[] = {sky_light(), dim, sky_light()};
+
+    gr::TransferField field(*context_, t.data(), s.texels, 700);  // bands of 700, 700, 625
+    ASSERT_EQ(field.bands(), 3);
+    // The staging path on the same bands of T, uploaded here.
+    const gr::TransferKernels kernels(*context_);
+    std::vector<Buffer> planes;
+    std::vector<gr::ShadeRecording::BandInput> inputs;
+    Batch batch(*context_);
+    for (std::size_t first = 0; first < s.texels; first += 700) {
+        const std::size_t n = std::min<std::size_t>(700, s.texels - first), stride = gr::padded_to_quads(n);
+        planes.push_back(context_->create_buffer(16 * stride * sizeof(float)));
+        batch.fill(planes.back());
+        for (std::size_t i = 0; i < 16; ++i)
+            batch.upload(planes.back(), std::span<const float>(t.data() + i * s.texels + first, n),
+                         i * stride * sizeof(float));
+        inputs.push_back({first, n, nullptr});
+    }
+    batch.submit_and_wait();
+    for (std::size_t k = 0; k < inputs.size(); ++k) inputs[k].transfer = &planes[k];
+    gr::ShadeRecording staging(*context_, kernels.shade(), inputs, gr::ShadeRecording::Readback::staging);
+    EXPECT_FALSE(staging.reads_directly());
+
+    for (const auto& light : lights) {
+        std::vector<glm::vec3> shot(s.texels), recorded(s.texels), staged(s.texels);
+        gr::shade_transfer(*context_, t.data(), s.texels, light, shot.data());
+        field.shade(light, recorded.data());
+        std::array<float, 64> l4{};
+        for (std::size_t i = 0; i < 16; ++i)
+            for (int c = 0; c < 3; ++c) l4[4 * i + std::size_t(c)] = light[i][c];
+        staging.run(l4, staged.data());
+        EXPECT_TRUE(std::isnan(shot[11].x));
+        EXPECT_FALSE(std::isnan(shot[12].x));
+        expect_same_bits(shot, recorded, "recorded");
+        expect_same_bits(shot, staged, "staged");
+        bool has_shade_stage = false;
+        for (const auto& st : field.stages()) has_shade_stage = has_shade_stage || st.label == "shade";
+        EXPECT_TRUE(has_shade_stage);
+    }
 }
 
 TEST_F(GpuTransferTest, UniformLobeEqualsThePerTexelLobe) {

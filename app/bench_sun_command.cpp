@@ -15,6 +15,7 @@
 #include "app/command.hpp"
 #include "app/csv_number.hpp"
 #include "app/dem_input.hpp"
+#include "core/terrain/grid_crop.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
@@ -50,26 +51,6 @@ double ms_since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// The central max_size x max_size texels of a grid (all of it if smaller), with its spacing.
-struct CroppedGrid {
-    std::vector<float> z;
-    terrain::HeightGrid grid;
-};
-CroppedGrid centre_crop(const terrain::HeightGrid& g, int max_size) {
-    CroppedGrid out;
-    const int w = std::min(g.width, max_size), h = std::min(g.height, max_size);
-    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
-    out.z.resize(std::size_t(w) * h);
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) out.z[std::size_t(r) * w + c] = g.at(c0 + c, r0 + r);
-    out.grid.width = w;
-    out.grid.height = h;
-    out.grid.z = out.z;
-    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
-    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
-    return out;
-}
-
 struct Agreement {
     double iou = 1, mae = 0;
     long nan_mismatch = 0;
@@ -103,7 +84,7 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
     in.files = {path};
     const dem::Dem dem = load_dem_input(in);
     const visibility::VisibilityGrid vgrid(dem);
-    const CroppedGrid crop = centre_crop(vgrid.view(), o.max_size);
+    const terrain::GridCrop crop = terrain::centre_crop(vgrid.view(), o.max_size, o.max_size);
     const terrain::HeightGrid& grid = crop.grid;
 
     visibility::SunVisibilityOptions eo;

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/terrain/grid_crop.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/terrain/height_pyramid.hpp"
 #include "core/util/error.hpp"
@@ -47,30 +48,12 @@ constexpr double kFlipFraction = 1e-5;
 constexpr double kSvfTol = 1e-4;  // svf and sky_visible (the aim), texels without a flip
 constexpr double kShTol = 1e-4;   // log-SH coefficients, texels without a flip
 
-struct GridCrop {
-    std::vector<float> z;
-    terrain::HeightGrid grid;
-};
-
-GridCrop crop(const terrain::HeightGrid& g, int w_wanted, int h_wanted) {
-    const int w = std::min(w_wanted, g.width), h = std::min(h_wanted, g.height);
-    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
-    GridCrop out;
-    out.z.resize(std::size_t(w) * std::size_t(h));
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) out.z[std::size_t(r) * w + c] = g.at(c0 + c, r0 + r);
-    out.grid.width = w;
-    out.grid.height = h;
-    out.grid.z = out.z;
-    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
-    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
-    return out;
-}
+using terrain::GridCrop;
 
 GridCrop crop_of_file(const std::filesystem::path& file, int w, int h) {
     const dem::Dem dem = dem::read_dem(file);
     const vis::VisibilityGrid full(dem);
-    return crop(full.view(), w, h);
+    return terrain::centre_crop(full.view(), w, h);
 }
 std::filesystem::path dem_file(const char* name) { return std::filesystem::path(TS_SHARED_DATA) / "dem" / name; }
 

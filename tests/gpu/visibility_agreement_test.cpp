@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/terrain/grid_crop.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
@@ -26,31 +27,12 @@ namespace {
 
 namespace vis = ts::visibility;
 
-// A centred window of a height grid as a grid of its own (heights copied, its rows' spacing).
-struct GridCrop {
-    std::vector<float> z;
-    terrain::HeightGrid grid;
-};
-
-GridCrop crop(const terrain::HeightGrid& g, int size) {
-    const int w = std::min(size, g.width), h = std::min(size, g.height);
-    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
-    GridCrop out;
-    out.z.resize(std::size_t(w) * std::size_t(h));
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) out.z[std::size_t(r) * w + c] = g.at(c0 + c, r0 + r);
-    out.grid.width = w;
-    out.grid.height = h;
-    out.grid.z = out.z;
-    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
-    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
-    return out;
-}
+using terrain::GridCrop;
 
 GridCrop crop_of_file(const char* name, int size) {
     const dem::Dem dem = dem::read_dem(std::filesystem::path(TS_SHARED_DATA) / "dem" / name);
     const vis::VisibilityGrid full(dem);
-    return crop(full.view(), size);
+    return terrain::centre_crop(full.view(), size, size);
 }
 
 // Tolerances (the figures measured on lavapipe are in the first test's output).
@@ -181,7 +163,7 @@ TEST_F(GpuVisibilityTest, ExactHorizonsSvfAndShMatchTheCpuOnEverySharedDem) {
         SCOPED_TRACE(file.filename().string());
         const dem::Dem dem = dem::read_dem(file);
         const vis::VisibilityGrid full(dem);
-        const GridCrop c = crop(full.view(), 200);
+        const GridCrop c = terrain::centre_crop(full.view(), 200, 200);
         vis::HorizonOptions options;
         options.directions = 32;
         const CpuRun cpu = run_cpu(c.grid, options);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/dem/read_dem.hpp"
+#include "core/terrain/grid_crop.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/sun_visibility.hpp"
 #include "core/visibility/visibility_grid.hpp"
@@ -57,24 +58,6 @@ Agreement compare(const std::vector<float>& exact, const std::vector<float>& swe
 }
 
 // The central n x n texels of a grid, with its per-row spacing.
-struct Crop {
-    std::vector<float> z;
-    ts::terrain::HeightGrid grid;
-};
-Crop centre_crop(const ts::terrain::HeightGrid& g, int n) {
-    Crop out;
-    const int w = std::min(g.width, n), h = std::min(g.height, n);
-    const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) out.z.push_back(g.at(c0 + c, r0 + r));
-    out.grid.width = w;
-    out.grid.height = h;
-    out.grid.z = out.z;
-    out.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
-    out.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
-    return out;
-}
-
 struct SunPosition {
     double azimuth_deg, elevation_deg;
 };
@@ -122,7 +105,7 @@ TEST(SunSweep, AgreesWithExactOnRealDems) {
     for (const std::string name : {"copernicus_N45E005_grenoble_500px.tif", "srtm3_N39E040_1000px.tif", "N00E010.hgt"}) {
         const ts::dem::Dem dem = ts::dem::read_dem(dem_path(name));
         const VisibilityGrid vgrid(dem);
-        const Crop crop = centre_crop(vgrid.view(), 160);
+        const ts::terrain::GridCrop crop = ts::terrain::centre_crop(vgrid.view(), 160, 160);
         expect_agreement(crop.grid, name, 0.99, 0.005);
     }
 }

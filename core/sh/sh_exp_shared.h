@@ -141,21 +141,27 @@ TS_INLINE void ts_sh_exp_hybrid(TS_IN_ARRAY(float, f, 16), float threshold, int 
         for (int i = 0; i < 16; ++i) result[i] = 0.0f;
 }
 
-// The transfer vector of one texel: T = exp(V_log + F_log), with F_log the lobe's log-SH.
-// Any NaN in V_log or F_log (a void texel) gives T = NaN in every coefficient.
-TS_INLINE void ts_transfer_vector(TS_IN_ARRAY(float, v_log, 16), TS_IN_ARRAY(float, lobe_log, 16), float threshold,
-                                  int max_squarings, TS_OUT_ARRAY(float, t, 16)) {
-    float f[16];
+// The exponent of a texel's transfer vector, f = V_log + F_log. False for a void texel (any NaN
+// in V_log or F_log), whose T is then NaN in every coefficient (set here); true otherwise (t is
+// left to the exponentiation).
+TS_INLINE bool ts_transfer_exponent(TS_IN_ARRAY(float, v_log, 16), TS_IN_ARRAY(float, lobe_log, 16),
+                                    TS_OUT_ARRAY(float, f, 16), TS_INOUT_ARRAY(float, t, 16)) {
     bool void_texel = false;
     for (int i = 0; i < 16; ++i) {
         f[i] = v_log[i] + lobe_log[i];
         if (isnan(f[i])) void_texel = true;
     }
-    if (void_texel) {
+    if (void_texel)
         for (int i = 0; i < 16; ++i) t[i] = TS_QUIET_NAN_F;
-        return;
-    }
-    ts_sh_exp_hybrid(f, threshold, max_squarings, t);
+    return !void_texel;
+}
+
+// The transfer vector of one texel: T = exp(V_log + F_log), with F_log the lobe's log-SH.
+// Any NaN in V_log or F_log (a void texel) gives T = NaN in every coefficient.
+TS_INLINE void ts_transfer_vector(TS_IN_ARRAY(float, v_log, 16), TS_IN_ARRAY(float, lobe_log, 16), float threshold,
+                                  int max_squarings, TS_INOUT_ARRAY(float, t, 16)) {
+    float f[16];
+    if (ts_transfer_exponent(v_log, lobe_log, f, t)) ts_sh_exp_hybrid(f, threshold, max_squarings, t);
 }
 
 #endif  // TS_SH_EXP_SHARED_H

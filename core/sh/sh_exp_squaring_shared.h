@@ -82,16 +82,8 @@ TS_INLINE void ts_transfer_vector_by(int method, TS_IN_ARRAY(float, v_log, 16), 
         return;
     }
     float f[16];
-    bool void_texel = false;
-    for (int i = 0; i < 16; ++i) {
-        f[i] = v_log[i] + lobe_log[i];
-        if (isnan(f[i])) void_texel = true;
-    }
-    if (void_texel) {
-        for (int i = 0; i < 16; ++i) t[i] = TS_QUIET_NAN_F;
-        return;
-    }
-    ts_sh_exp_scaling_squaring(f, squaring_base_order, squaring_threshold, max_squarings, t);
+    if (ts_transfer_exponent(v_log, lobe_log, f, t))
+        ts_sh_exp_scaling_squaring(f, squaring_base_order, squaring_threshold, max_squarings, t);
 }
 
 #endif  // TS_SH_EXP_SQUARING_SHARED_H

@@ -22,6 +22,7 @@
 #include "core/sh/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_squaring_shared.hpp"
+#include "core/terrain/grid_crop.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "gpu/render/gpu_render_backend.hpp"
@@ -56,31 +57,13 @@ constexpr double kShadeTol = 1e-5;
 constexpr double kFrameTol = 1e-4;
 constexpr double kFrameVsFusedTol = 2e-3;
 
-struct Crop {
-    dem::Dem dem;
-    std::vector<float> z;
-    terrain::HeightGrid grid;
-};
-
 // A centred 96 x 96 window of the Grenoble DEM (Alps: deep horizons) as a grid of its own.
-const Crop& grenoble_crop() {
-    static const Crop crop = [] {
-        Crop c;
-        c.dem = dem::read_dem(std::filesystem::path(TS_SHARED_DATA) / "dem" / "copernicus_N45E005_grenoble_500px.tif");
-        const vis::VisibilityGrid full(c.dem);
-        const terrain::HeightGrid& g = full.view();
-        const int size = 96;
-        const int w = std::min(size, g.width), h = std::min(size, g.height);
-        const int c0 = (g.width - w) / 2, r0 = (g.height - h) / 2;
-        c.z.resize(std::size_t(w) * std::size_t(h));
-        for (int r = 0; r < h; ++r)
-            for (int col = 0; col < w; ++col) c.z[std::size_t(r) * std::size_t(w) + std::size_t(col)] = g.at(c0 + col, r0 + r);
-        c.grid.width = w;
-        c.grid.height = h;
-        c.grid.z = c.z;
-        c.grid.dx_m.assign(g.dx_m.begin() + r0, g.dx_m.begin() + r0 + h);
-        c.grid.dy_m.assign(g.dy_m.begin() + r0, g.dy_m.begin() + r0 + h);
-        return c;
+const terrain::GridCrop& grenoble_crop() {
+    static const terrain::GridCrop crop = [] {
+        const dem::Dem dem =
+            dem::read_dem(std::filesystem::path(TS_SHARED_DATA) / "dem" / "copernicus_N45E005_grenoble_500px.tif");
+        const vis::VisibilityGrid full(dem);
+        return terrain::centre_crop(full.view(), 96, 96);
     }();
     return crop;
 }
@@ -182,7 +165,7 @@ std::array<glm::vec3, 16> sky_light() {
 using GpuRenderBackendTest = test_support::ValidatedTest;
 
 TEST_F(GpuRenderBackendTest, HorizonsAndLogShMatchTheCpuBackend) {
-    const Crop& c = grenoble_crop();
+    const terrain::GridCrop& c = grenoble_crop();
     const CpuVisibility& cpu = cpu_visibility();
     const auto gpu_backend = render::make_gpu_backend(*context_);
     EXPECT_EQ(gpu_backend->name(), context_->device_info().name);
@@ -225,7 +208,7 @@ TEST_F(GpuRenderBackendTest, HorizonsAndLogShMatchTheCpuBackend) {
 }
 
 TEST_F(GpuRenderBackendTest, TransferVectorsMatchTheCpuBackendForHybridAndScalingSquaring) {
-    const Crop& c = grenoble_crop();
+    const terrain::GridCrop& c = grenoble_crop();
     const CpuVisibility& cpu = cpu_visibility();
     const Lobes lobes = lobes_of(c.grid);
     const auto gpu_backend = render::make_gpu_backend(*context_);
@@ -290,7 +273,7 @@ TEST_F(GpuRenderBackendTest, SharedScalingSquaringEqualsCoreShWithinRounding) {
 }
 
 TEST_F(GpuRenderBackendTest, KeptTransferShadesAsTheCpuBackendAndBandsJoin) {
-    const Crop& c = grenoble_crop();
+    const terrain::GridCrop& c = grenoble_crop();
     const CpuVisibility& cpu = cpu_visibility();
     const Lobes lobes = lobes_of(c.grid);
     cr::TransferInputs in = transfer_inputs(lobes, cpu.log_sh, false, sh::ExpMethod::scaling_squaring);
@@ -336,7 +319,7 @@ TEST_F(GpuRenderBackendTest, KeptTransferShadesAsTheCpuBackendAndBandsJoin) {
 // backend in small bands (visibility rows and transfer texels) gives the unbanded frames bit
 // for bit.
 TEST_F(GpuRenderBackendTest, FramesMatchTheCpuPaths) {
-    const Crop& c = grenoble_crop();
+    const terrain::GridCrop& c = grenoble_crop();
     const cr::NormalField normals = cr::terrain_normals(c.grid);
     const cr::MaterialRaster materials = cr::rule_materials(c.grid, normals, cr::MaterialRule{});
     const auto gpu_backend = render::make_gpu_backend(*context_);

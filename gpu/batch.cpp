@@ -156,8 +156,7 @@ void Batch::dispatch(const Kernel& kernel, std::span<const BufferRef> buffers, s
     }
     if (groups.x == 0 || groups.y == 0 || groups.z == 0) return;  // nothing to run
 
-    std::vector<VkDescriptorBufferInfo> infos(buffers.size());
-    std::vector<VkWriteDescriptorSet> writes(buffers.size());
+    std::vector<VkBuffer> handles(buffers.size());
     const VkDescriptorSet set = allocate_set(kernel);
     for (std::size_t i = 0; i < buffers.size(); ++i) {
         const Buffer& buffer = buffers[i].get();
@@ -167,15 +166,9 @@ void Batch::dispatch(const Kernel& kernel, std::span<const BufferRef> buffers, s
                                         " bytes, more than the device's storage buffer range " +
                                         std::to_string(limits.maxStorageBufferRange) + " (split the work)");
         }
-        infos[i] = {buffer.get(), 0, VK_WHOLE_SIZE};
-        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[i].dstSet = set;
-        writes[i].dstBinding = static_cast<std::uint32_t>(i);
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[i].pBufferInfo = &infos[i];
+        handles[i] = buffer.get();
     }
-    vkUpdateDescriptorSets(context_.vk_device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    write_storage_buffers(context_.vk_device(), set, handles);
 
     begin_if_needed();
     barrier_before_next_command();
@@ -214,15 +207,8 @@ void Batch::submit_and_wait() {
     recording_ = false;
 
     const auto start = std::chrono::steady_clock::now();
-    const VkCommandBuffer commands = commands_.get();
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &commands;
-    check(vkQueueSubmit(context_.device().queue(), 1, &submit, fence_.get()), "vkQueueSubmit");
-    fence_.wait();
+    gpu::submit_and_wait(context_.device().queue(), commands_.get(), fence_);
     last_run_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    fence_.reset();
 
     stage_times_.clear();
     if (!mark_labels_.empty()) {

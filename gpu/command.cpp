@@ -75,4 +75,14 @@ void Fence::reset() {
     check(vkResetFences(fence_.device(), 1, &fence), "vkResetFences");
 }
 
+void submit_and_wait(VkQueue queue, VkCommandBuffer commands, Fence& fence) {
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    check(vkQueueSubmit(queue, 1, &submit, fence.get()), "vkQueueSubmit");
+    fence.wait();
+    fence.reset();
+}
+
 }  // namespace ts::gpu

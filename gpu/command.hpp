@@ -56,4 +56,7 @@ private:
     DeviceHandle<VkFence> fence_;
 };
 
+// Submits one recorded command buffer to `queue`, waits for `fence` and resets it for reuse.
+void submit_and_wait(VkQueue queue, VkCommandBuffer commands, Fence& fence);
+
 }  // namespace ts::gpu

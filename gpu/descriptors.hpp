@@ -2,6 +2,7 @@
 // Descriptor set layout, pool and sets for kernels whose resources are all storage buffers,
 // bound at consecutive bindings 0..n-1 of set 0 (the convention of every gpu/shaders/*.comp).
 #include <cstdint>
+#include <span>
 
 #include "gpu/vulkan_api.hpp"
 
@@ -38,5 +39,8 @@ private:
     std::uint32_t sets_left_ = 0;
     std::uint32_t descriptors_left_ = 0;
 };
+
+// Points bindings 0..n-1 of `set` at the whole of each buffer (storage buffers, in order).
+void write_storage_buffers(VkDevice device, VkDescriptorSet set, std::span<const VkBuffer> buffers);
 
 }  // namespace ts::gpu

@@ -94,19 +94,8 @@ void ShadeRecording::record(const Kernel& shade, std::span<const BandInput> inpu
         const Band& b = bands_[k];
         const Buffer& out = b.device_rgb.get() ? b.device_rgb : b.host_rgb;
         const VkDescriptorSet set = descriptors_.allocate(shade.set_layout(), 3);
-        const VkDescriptorBufferInfo infos[3] = {{inputs[k].transfer->get(), 0, VK_WHOLE_SIZE},
-                                                 {light_.get(), 0, VK_WHOLE_SIZE},
-                                                 {out.get(), 0, VK_WHOLE_SIZE}};
-        VkWriteDescriptorSet writes[3]{};
-        for (std::uint32_t i = 0; i < 3; ++i) {
-            writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-            writes[i].dstSet = set;
-            writes[i].dstBinding = i;
-            writes[i].descriptorCount = 1;
-            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            writes[i].pBufferInfo = &infos[i];
-        }
-        vkUpdateDescriptorSets(context_.vk_device(), 3, writes, 0, nullptr);
+        const VkBuffer bound[3] = {inputs[k].transfer->get(), light_.get(), out.get()};
+        write_storage_buffers(context_.vk_device(), set, bound);
         const std::uint32_t quads = std::uint32_t(padded(b.texels) / 4);
         const ShadePush push{quads, quads};
         vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, shade.pipeline_layout(), 0, 1, &set, 0,
@@ -133,14 +122,7 @@ void ShadeRecording::run(std::span<const float, 64> light, glm::vec3* rgb_out) {
     if (bands_.empty()) return;
     // Coherent memory: the host write is visible to the device at the submit.
     std::memcpy(light_.mapped(), light.data(), kLightBytes);
-    const VkCommandBuffer commands = commands_.get();
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &commands;
-    check(vkQueueSubmit(context_.device().queue(), 1, &submit, fence_.get()), "vkQueueSubmit");
-    fence_.wait();
-    fence_.reset();
+    submit_and_wait(context_.device().queue(), commands_.get(), fence_);
 
     for (const Band& b : bands_)
         std::memcpy(static_cast<void*>(rgb_out + b.first), b.host_rgb.mapped(), b.texels * 3 * sizeof(float));

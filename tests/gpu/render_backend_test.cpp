@@ -26,6 +26,7 @@
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "gpu/render/gpu_render_backend.hpp"
+#include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -122,35 +123,8 @@ cr::TransferInputs transfer_inputs(const Lobes& l, const std::vector<float>& log
     return in;
 }
 
-// Per texel: max |a - b| over the 16 coefficients over the reference's norm; texels beyond tol
-// are counted as flips, not in `worst`.
-struct TransferAgreement {
-    double worst = 0;
-    std::size_t flips = 0, nan_mismatches = 0;
-};
-TransferAgreement compare_transfer(const std::vector<float>& test, const std::vector<float>& ref, std::size_t texels,
-                                   double tol) {
-    TransferAgreement a;
-    for (std::size_t t = 0; t < texels; ++t) {
-        double norm = 0, diff = 0;
-        bool nan_test = false, nan_ref = false;
-        for (std::size_t i = 0; i < 16; ++i) {
-            const double r = ref[i * texels + t], x = test[i * texels + t];
-            nan_ref = nan_ref || std::isnan(r);
-            nan_test = nan_test || std::isnan(x);
-            norm += r * r;
-            diff = std::max(diff, std::abs(r - x));
-        }
-        if (nan_ref || nan_test) {
-            a.nan_mismatches += nan_ref != nan_test;
-            continue;
-        }
-        const double rel = diff / std::max(std::sqrt(norm), 1e-30);
-        if (rel > tol) ++a.flips;
-        else a.worst = std::max(a.worst, rel);
-    }
-    return a;
-}
+using test_support::compare_transfer;
+using test_support::TransferAgreement;
 
 std::array<glm::vec3, 16> sky_light() {
     std::array<glm::vec3, 16> l{};

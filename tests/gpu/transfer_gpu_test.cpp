@@ -21,6 +21,7 @@
 #include "gpu/batch.hpp"
 #include "gpu/render/gpu_transfer.hpp"
 #include "gpu/render/shade_recording.hpp"
+#include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -138,34 +139,6 @@ constexpr double kFlipFraction = 1e-4;
 // Shading: the 16-term dot of T, 1e-4 of the sum of the terms' magnitudes (measured 1e-6).
 constexpr double kShadeTol = 1e-4;
 
-struct Agreement {
-    double worst = 0;  // over texels that are not flips, relative to the texel's norm
-    std::size_t flips = 0, nan_mismatches = 0;
-};
-
-Agreement compare_transfer(const std::vector<float>& gpu, const std::vector<float>& cpu, std::size_t texels) {
-    Agreement a;
-    for (std::size_t t = 0; t < texels; ++t) {
-        double norm = 0, diff = 0;
-        bool nan_gpu = false, nan_cpu = false;
-        for (std::size_t i = 0; i < 16; ++i) {
-            const double c = cpu[i * texels + t], g = gpu[i * texels + t];
-            nan_cpu = nan_cpu || std::isnan(c);
-            nan_gpu = nan_gpu || std::isnan(g);
-            norm += c * c;
-            diff = std::max(diff, std::abs(c - g));
-        }
-        if (nan_cpu || nan_gpu) {
-            a.nan_mismatches += nan_cpu != nan_gpu;
-            continue;
-        }
-        const double rel = diff / std::max(std::sqrt(norm), 1e-30);
-        if (rel > kTransferTol) ++a.flips;
-        else a.worst = std::max(a.worst, rel);
-    }
-    return a;
-}
-
 using GpuTransferTest = test_support::ValidatedTest;
 
 TEST_F(GpuTransferTest, AgreesWithTheCpuOnSharedDemCrops) {
@@ -177,7 +150,7 @@ TEST_F(GpuTransferTest, AgreesWithTheCpuOnSharedDemCrops) {
             cr::transfer_vectors(in, cpu.data());
             gr::TransferField field(*context_, in);
             field.download(gpu.data());
-            const Agreement a = compare_transfer(gpu, cpu, s.texels);
+            const test_support::TransferAgreement a = test_support::compare_transfer(gpu, cpu, s.texels, kTransferTol);
             std::printf("%s %s: T worst %.2e of the norm, flips %zu of %zu\n", file, phong ? "phong" : "diffuse",
                         a.worst, a.flips, s.texels);
             EXPECT_EQ(a.nan_mismatches, 0u) << file;

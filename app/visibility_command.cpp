@@ -23,6 +23,7 @@
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sky_integrals.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#include "core/visibility/visibility_products.hpp"
 #ifdef TERRASHADE_HAS_GPU
 #include "gpu/context.hpp"
 #include "gpu/visibility/gpu_visibility.hpp"
@@ -161,6 +162,25 @@ void run_visibility(VisibilityOptions& o) {
                     o.horizon.directions, dem.width, dem.height, seconds_since(t0), o.no_curvature ? "no" : "with");
     }
     const visibility::HorizonSet& set = results->set;
+    {
+        // The products the GPU did not compute, in one pass over the horizon planes.
+        visibility::ProductRequest r;
+        r.log_sh = want_sh && results->log_sh.empty();
+        r.svf = !o.svf.empty() && rule == visibility::WedgeRule::linear && results->svf.empty();
+        r.sky_visible = !o.sky_visible.empty() && rule == visibility::WedgeRule::linear && results->sky.empty();
+        r.log_eps = o.log_eps;
+        r.threads = o.horizon.threads;
+        if (r.log_sh || r.svf || r.sky_visible) {
+            const auto t0 = std::chrono::steady_clock::now();
+            auto p = visibility::visibility_products(set, r);
+            if (r.log_sh) results->log_sh = std::move(p.log_sh);
+            if (r.svf) results->svf = std::move(p.svf);
+            if (r.sky_visible) results->sky = std::move(p.sky_visible);
+            const std::string what = std::string(r.log_sh ? ", log-SH" : "") + (r.svf ? ", svf" : "") +
+                                     (r.sky_visible ? ", sky_visible" : "");
+            std::printf("%s on the CPU: %.3f s\n", what.c_str() + 2, seconds_since(t0));
+        }
+    }
 
     if (!o.horizons.empty()) {
         std::vector<float> deg(set.angle.size());
@@ -185,7 +205,6 @@ void run_visibility(VisibilityOptions& o) {
         write_raster(o.sky_visible, dem, 1, sky.data(), {"sky_visible: visible fraction of the upper hemisphere"});
     }
     if (!o.sh.empty() || !o.log_sh.empty()) {
-        const auto t1 = std::chrono::steady_clock::now();
         const auto log_sh = results->log_sh.empty() ? visibility::log_sh_raster(set, o.log_eps, o.horizon.threads)
                                                      : std::move(results->log_sh);
         std::vector<std::string> names;
@@ -195,11 +214,11 @@ void run_visibility(VisibilityOptions& o) {
         }
         if (!o.log_sh.empty()) write_raster(o.log_sh, dem, 16, log_sh.data(), names);
         if (!o.sh.empty()) {
+            const auto t1 = std::chrono::steady_clock::now();
             const auto vis = visibility::exp_sh_raster(log_sh, texels, exp_method, o.horizon.threads);
+            std::printf("exp (%s): %.3f s\n", o.exp_method.c_str(), seconds_since(t1));
             write_raster(o.sh, dem, 16, vis.data(), names);
         }
-        std::printf("log-SH%s: %.3f s\n", o.sh.empty() ? "" : (" + exp (" + o.exp_method + ")").c_str(),
-                    seconds_since(t1));
     }
 }
 
@@ -232,6 +251,9 @@ void add_visibility_command(CLI::App& root) {
                     "exact: march each receiver's first N texels from the texel centre itself (0 = pure sweep)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 64.0));
+    cmd->add_flag_callback(
+        "--exact-scalar", [o] { o->horizon.exact_simd_lines = false; },
+        "exact: sweep one line at a time even where the CPU has AVX-512 (bit-identical, slower; for comparisons)");
     cmd->add_flag("--no-curvature", o->no_curvature,
                   "Ignore Earth curvature (default: drop d^2/(2 R_eff), R_eff = R/(1-0.13) with refraction)");
     cmd->add_option("--wedges", o->wedges,

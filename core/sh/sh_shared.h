@@ -84,9 +84,10 @@ TS_INLINE void ts_slice_log_coeffs(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRAY(
 // (pairs (0,0) (1,0) (1,1) (2,0) (2,1) (2,2) (3,0) (3,1) (3,2) (3,3)). The odd-|m| entries
 // need sigma itself (x = sin a substitution), which the 4 Legendre coefficients above cannot
 // give; these 10 numbers make the height-field projection exact (ts_hf_add_slice).
-TS_INLINE void ts_slice_sh_integrals(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, e, 10)) {
-    TS_REAL s = sin(sigma);
-    TS_REAL co = cos(sigma);
+// ts_slice_sh_integrals_sc takes s = sin sigma and co = cos sigma from the caller (the CPU's
+// vectorised pass derives them from polynomials, core/visibility/small_angle_trig.hpp).
+TS_INLINE void ts_slice_sh_integrals_sc(TS_REAL s, TS_REAL co, TS_REAL sigma, TS_REAL log_eps,
+                                        TS_OUT_ARRAY(TS_REAL, e, 10)) {
     TS_REAL a = sigma + 1.5707963267948966;  // asin(x) from -1 to s
     TS_REAL sc = s * co;
     TS_REAL c2 = co * co;
@@ -100,6 +101,10 @@ TS_INLINE void ts_slice_sh_integrals(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRA
     e[7] = log_eps * 0.21545345607610045 * 0.1875 * (a - sc * (9.0 - 10.0 * s * s));
     e[8] = log_eps * 0.06813236509555216 * (-3.75 * c2 * c2);
     e[9] = log_eps * 0.027814921575518937 * 1.875 * (sc * (5.0 - 2.0 * s * s) + 3.0 * a);
+}
+
+TS_INLINE void ts_slice_sh_integrals(TS_REAL sigma, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, e, 10)) {
+    ts_slice_sh_integrals_sc(sin(sigma), cos(sigma), sigma, log_eps, e);
 }
 
 // Weight of the slice sampled at azimuth phi_k, spacing delta, in SH coefficient of order m,

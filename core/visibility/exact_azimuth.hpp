@@ -22,6 +22,12 @@ namespace ts::visibility {
 struct FarFieldSums {
     std::vector<float> sum, weight;
     DelayedHull hull;
+    // One line sample's tent-weighted tangent into texel i (every splat goes through here, so
+    // the layout of the sums is this struct's business).
+    void add(std::size_t i, float w, float slope) {
+        sum[i] += w * slope;
+        weight[i] += w;
+    }
 };
 
 // Which family of lines sweeps azimuth phi and the numbers of the lines that can reach the window.
@@ -62,6 +68,7 @@ private:
     int lines_per_texel_;
     double near_m_;
     float z_top_;
+    bool simd_lines_;  // HorizonOptions::exact_simd_lines (sweep_lanes.hpp)
     // The near field's early exit needs an upper bound of the heights a receiver's near-field
     // march can read. The grid's top is one; the top of the kTile x kTile tile block around the
     // receiver's tile (3 x 3 tiles) is a much tighter one whenever the march stays inside it

@@ -21,6 +21,9 @@ struct HorizonOptions {
     // exact: how far (in texels) each receiver's near field is marched from the texel centre
     // itself before the sweep's far field takes over (0 = pure sweep, interpolated between lines).
     double exact_near_field_texels = 2.0;
+    // exact: sweep the far field 8 lines at a time as AVX-512 lanes where the CPU has it
+    // (sweep_lanes.hpp); the horizons are bit-identical either way, off only for comparisons.
+    bool exact_simd_lines = true;
     // pyramid: sampling schedule name (horizon_method.hpp: fast, balanced, fine, finest).
     std::string pyramid_schedule = "balanced";
     ReceiverWindow window;

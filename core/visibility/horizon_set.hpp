@@ -7,6 +7,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/util/uninitialised_vector.hpp"
+
 namespace ts::visibility {
 
 // Where the receivers are: a window of the height grid (the whole grid by default). Blockers
@@ -33,8 +35,9 @@ struct HorizonSet {
     int directions = 0;
     // Elevation angle in radians of the highest blocker, [d * width * height + row * width + col].
     // Negative on peaks (curvature, or terrain falling away); 0 where no terrain lies in that
-    // direction (receiver on the grid's edge facing out); NaN for void receivers.
-    std::vector<float> angle;
+    // direction (receiver on the grid's edge facing out); NaN for void receivers. resize()
+    // leaves new planes unwritten (uninitialised_vector.hpp): whoever sizes the set fills it.
+    UninitialisedVector<float> angle;
 
     std::size_t texels() const { return std::size_t(width) * std::size_t(height); }
     float at(int d, int col, int row) const {

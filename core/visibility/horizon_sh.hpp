@@ -2,8 +2,9 @@
 // log-SH visibility per texel from its D horizons (the slides' step 1), and its exponential.
 //
 // Each azimuth slice's log-visibility is log_eps below the horizon and 0 above; the slices are
-// blended linearly across azimuth and projected to 16 log-SH coefficients by
-// sh::SliceProjector::project_horizons (exact closed-form integrals, one precomputed table).
+// blended linearly across azimuth and projected to 16 log-SH coefficients: the exact
+// closed-form integrals of sh::SliceProjector::project_horizons, computed for all texels by
+// visibility_products (one vectorised pass; its double sums are rounded to float once).
 // exp_sh_raster then turns them into visibility SH with the chosen sh::ExpMethod.
 #include <vector>
 

@@ -7,34 +7,42 @@
 // u = z - s^2 / (2 R), the curvature-corrected slope from q back to point i is
 // (z_i - z_q)/(s_q - s_i) - (s_q - s_i)/(2 R) = (u_i - u_q)/(s_q - s_i) - s_q / R,
 // and the last term is the same for every i, so the maximiser is still a hull vertex of (s, u).
+#include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
 namespace ts::visibility {
 
+struct HullPoint {
+    double s, u;
+};
+
+// The hull as a value: a pointer to storage with room for every point of the line (the owner,
+// DelayedHull, provides it) and two counts. Meant to live in a local variable of the sweep's
+// inner loop, so the compiler keeps the counts in registers (hence always_inline: a call
+// would pass the object through memory).
 class ProfileHull {
 public:
-    void clear() {
-        n_ = 0;
-        hint_ = 0;
-    }
+    ProfileHull() = default;
+    explicit ProfileHull(HullPoint* storage) : pts_(storage) {}
     bool empty() const { return n_ == 0; }
 
-    // Adds point (s, u) (s larger than every earlier point's) and returns the largest slope
-    // (u_i - u) / (s - s_i) over the earlier points, or -infinity if there were none: the
-    // tangent from the new point is where its hull edge attaches, so the query is free.
-    double add(double s, double u) {
-        pop_hidden(s, u);
-        double slope = kNone;
-        if (n_ > 0) slope = (pts_[n_ - 1].u - u) / (s - pts_[n_ - 1].s);
-        push(s, u);
-        return slope;
-    }
-
-    // Adds a point without asking for its tangent.
-    void insert(double s, double u) {
-        pop_hidden(s, u);
-        push(s, u);
+    // Adds point q (q.s larger than every earlier point's). Pops the vertices that q hides
+    // first: the last vertex B leaves the upper hull if the one before it, A, is seen at
+    // least as high from q.
+    [[gnu::always_inline]] void insert(HullPoint q) {
+        std::size_t n = n_;
+        while (n >= 2) {
+            const HullPoint& a = pts_[n - 2];
+            const HullPoint& b = pts_[n - 1];
+            if ((a.u - q.u) * (q.s - b.s) >= (b.u - q.u) * (q.s - a.s))
+                --n;
+            else
+                break;
+        }
+        pts_[n] = q;
+        n_ = n + 1;
     }
 
     // Largest slope (u_i - u) / (s - s_i) from a point (s, u) beyond every hull point, without
@@ -43,81 +51,116 @@ public:
     // by one or two, so the search walks from the previous answer instead of bisecting: the
     // same vertex, in a step or two of predictable branches instead of ~log2(h) unpredictable
     // ones. -infinity on an empty hull.
-    double max_slope_from(double s, double u) {
-        if (n_ == 0) return kNone;
+    [[gnu::always_inline]] double max_slope_from(double s, double u) {
+        const std::size_t n = n_;
+        if (n == 0) return kNone;
         // Whether the slope to vertex k + 1 is at least the slope to vertex k.
         auto rises = [&](std::size_t k) {
-            const Point& a = pts_[k];
-            const Point& b = pts_[k + 1];
+            const HullPoint& a = pts_[k];
+            const HullPoint& b = pts_[k + 1];
             return (b.u - u) * (s - a.s) >= (a.u - u) * (s - b.s);
         };
-        const std::size_t n = n_;
         std::size_t i = std::min(hint_, n - 1);
-        while (i + 1 < n && rises(i)) ++i;
-        while (i > 0 && !rises(i - 1)) --i;
+        if (i + 1 < n && rises(i)) {
+            do ++i;
+            while (i + 1 < n && rises(i));
+        } else {
+            // Only when it did not move forward: after a step forward rises(i - 1) is known to
+            // hold, and the backward walk would stop at once.
+            while (i > 0 && !rises(i - 1)) --i;
+        }
         hint_ = i;
         return (pts_[i].u - u) / (s - pts_[i].s);
+    }
+
+    // The same hull in a copy of its storage.
+    ProfileHull rebased(HullPoint* storage) const {
+        ProfileHull h = *this;
+        h.pts_ = storage;
+        return h;
     }
 
     static constexpr double kNone = -std::numeric_limits<double>::infinity();
 
 private:
-    struct Point {
-        double s, u;
-    };
-    // Pop vertices that the new point hides: the last vertex B leaves the upper hull if the
-    // one before it, A, is seen at least as high from (s, u).
-    void pop_hidden(double s, double u) {
-        std::size_t n = n_;  // a local count: the member would be stored back on every pop
-        const Point* p = pts_.data();
-        while (n >= 2) {
-            const Point& a = p[n - 2];
-            const Point& b = p[n - 1];
-            if ((a.u - u) * (s - b.s) >= (b.u - u) * (s - a.s))
-                --n;
-            else
-                break;
-        }
-        n_ = n;
-    }
-    void push(double s, double u) {
-        if (n_ == pts_.size()) pts_.resize(2 * n_ + 64);  // grows to the longest line, then never
-        pts_[n_++] = {s, u};
-    }
-    std::vector<Point> pts_;
+    HullPoint* pts_ = nullptr;
     std::size_t n_ = 0;
     std::size_t hint_ = 0;  // the last query's tangent vertex
 };
 
 // The hull of the points at least `delay` behind the query point: the far field of a line,
 // while the receiver's own near field is marched exactly from the texel centre
-// (exact_horizons.cpp says why). Points wait in a queue until the sweep is `delay` past them.
+// (exact_horizons.cpp says why). The line's points are kept in order and the hull takes them
+// in from an index that trails the query by `delay` (no queue to push and pop).
 class DelayedHull {
 public:
-    explicit DelayedHull(double delay = 0) : delay_(delay) {}
-    void clear() {
-        hull_.clear();
-        pending_.clear();
-        head_ = 0;
-    }
-    void add(double s, double u) { pending_.push_back({s, u}); }
-    // Largest slope from (s, u) to the points at distance >= delay; -infinity if none.
-    double query(double s, double u) {
-        while (head_ < pending_.size() && pending_[head_].s <= s - delay_) {
-            hull_.insert(pending_[head_].s, pending_[head_].u);
-            ++head_;
+    // One line's state: pointers into the DelayedHull's storage and counts, for a local
+    // variable of the sweep's inner loop (the counts stay in registers).
+    class Line {
+    public:
+        // Adds a blocker (s larger than every earlier point's); at most `capacity` of
+        // begin_line per line.
+        [[gnu::always_inline]] void add(double s, double u) { line_[n_line_++] = {s, u}; }
+        // Largest slope (u_i - u) / (s - s_i) to the points at distance >= delay; -infinity
+        // if none.
+        [[gnu::always_inline]] double query(double s, double u) {
+            const double reach = s - delay_;
+            while (head_ < n_line_ && line_[head_].s <= reach) hull_.insert(line_[head_++]);
+            return hull_.max_slope_from(s, u);
         }
-        return hull_.max_slope_from(s, u);
+
+    private:
+        friend class DelayedHull;
+        HullPoint* line_ = nullptr;          // every point added, in order
+        std::size_t n_line_ = 0, head_ = 0;  // line_[0, head_) are in the hull
+        ProfileHull hull_;
+        double delay_ = 0;
+    };
+
+    explicit DelayedHull(double delay = 0) : delay_(delay) {}
+
+    // An empty line with room for `capacity` points; it points into this object's storage, so
+    // use it before the next begin_line, add or clear.
+    Line begin_line(std::size_t capacity) {
+        if (line_.size() < capacity) line_.resize(capacity), hull_.resize(capacity);
+        Line l;
+        l.line_ = line_.data();
+        l.hull_ = ProfileHull(hull_.data());
+        l.delay_ = delay_;
+        return l;
     }
 
+    // The same through the object itself, growing as needed (for callers outside a hot loop).
+    void clear() { cur_ = begin_line(0); }
+    void add(double s, double u) {
+        if (cur_.n_line_ == line_.size()) grow();
+        cur_.add(s, u);
+    }
+    double query(double s, double u) { return cur_.query(s, u); }
+
+    DelayedHull(const DelayedHull& o) : delay_(o.delay_) {}  // storage is scratch: not copied
+    DelayedHull& operator=(const DelayedHull& o) {
+        delay_ = o.delay_;
+        clear();
+        return *this;
+    }
+    DelayedHull(DelayedHull&&) = default;
+    DelayedHull& operator=(DelayedHull&&) = default;
+
 private:
-    struct Pending {
-        double s, u;
-    };
+    // Doubles the storage and carries the current line over (the hull's points are a prefix
+    // of its storage, so copying the storage keeps them).
+    void grow() {
+        const std::size_t n_line = cur_.n_line_, head = cur_.head_;
+        const ProfileHull hull = cur_.hull_;
+        line_.resize(2 * line_.size() + 64), hull_.resize(line_.size());
+        cur_.line_ = line_.data();
+        cur_.n_line_ = n_line, cur_.head_ = head;
+        cur_.hull_ = hull.rebased(hull_.data());
+    }
     double delay_;
-    ProfileHull hull_;
-    std::vector<Pending> pending_;
-    std::size_t head_ = 0;
+    std::vector<HullPoint> line_, hull_;
+    Line cur_;
 };
 
 }  // namespace ts::visibility

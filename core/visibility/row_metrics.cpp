@@ -30,11 +30,7 @@ double RowMetrics::row_of_g(double value) const {
     if (last == 0 || value <= 0) return 0.0;
     if (value >= g_.back()) return double(last);
     // rho varies slowly (cos(latitude)), so the guess is off by at most a row or two.
-    int r = std::clamp(int(value / mean_rho_), 0, last - 1);
-    while (r < last - 1 && g_[std::size_t(r) + 1] < value) ++r;
-    while (r > 0 && g_[std::size_t(r)] > value) --r;
-    const double g0 = g_[std::size_t(r)], g1 = g_[std::size_t(r) + 1];
-    return double(r) + (value - g0) / (g1 - g0);
+    return row_in_bracket(value, bracket(value, int(value / mean_rho_)));
 }
 
 }  // namespace ts::visibility

@@ -33,8 +33,29 @@ public:
     static constexpr double kMinAspect = 0.01;
     // Fractional row with G(row) = value; value must lie in [0, g_max()].
     double row_of_g(double value) const;
+    // The same, searching from row `hint` and leaving the row found there: a sweep line's
+    // consecutive samples are a row or less apart. The result does not depend on the hint.
+    double row_of_g(double value, int& hint) const {
+        const int last = int(g_.size()) - 1;
+        if (last == 0 || value <= 0) return 0.0;
+        if (value >= g_.back()) return double(last);
+        return row_in_bracket(value, hint = bracket(value, hint));
+    }
 
 private:
+    // The row r with g(r) <= value <= g(r + 1), for value inside (0, g_max()), searched from
+    // `start`; where value is a knot either neighbouring bracket gives the same row_in_bracket.
+    int bracket(double value, int start) const {
+        const int last = int(g_.size()) - 1;
+        int r = start < 0 ? 0 : (start > last - 1 ? last - 1 : start);
+        while (r < last - 1 && g_[std::size_t(r) + 1] < value) ++r;
+        while (r > 0 && g_[std::size_t(r)] > value) --r;
+        return r;
+    }
+    double row_in_bracket(double value, int r) const {
+        const double g0 = g_[std::size_t(r)], g1 = g_[std::size_t(r) + 1];
+        return double(r) + (value - g0) / (g1 - g0);
+    }
     // Inline: the sweep calls it for every line sample.
     static double lerp_rows(const std::vector<double>& v, double row) {
         if (row <= 0) return v.front();

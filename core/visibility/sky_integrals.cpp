@@ -5,6 +5,7 @@
 
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/sky_shared.hpp"
+#include "core/visibility/visibility_products.hpp"
 
 namespace ts::visibility {
 
@@ -48,12 +49,29 @@ double sky_visible_fraction(const float* horizons, int directions, std::size_t s
     return 1.0 - integrate(horizons, directions, stride, rule, wedge_mean_sin);
 }
 
+namespace {
+
+// Linear wedges take the vectorised pass of visibility_products (the same means, tested
+// against these per-texel functions); constant wedges, a comparison rule, stay per texel.
+ProductRequest sky_request(bool svf, int threads) {
+    ProductRequest r;
+    r.log_sh = false;
+    r.svf = svf;
+    r.sky_visible = !svf;
+    r.threads = threads;
+    return r;
+}
+
+}  // namespace
+
 std::vector<float> svf_raster(const HorizonSet& set, WedgeRule rule, int threads) {
+    if (rule == WedgeRule::linear) return visibility_products(set, sky_request(true, threads)).svf;
     return raster(set, threads,
                   [rule](const float* h, int d, std::size_t stride) { return sky_view_factor(h, d, stride, rule); });
 }
 
 std::vector<float> sky_visible_raster(const HorizonSet& set, WedgeRule rule, int threads) {
+    if (rule == WedgeRule::linear) return visibility_products(set, sky_request(false, threads)).sky_visible;
     return raster(set, threads, [rule](const float* h, int d, std::size_t stride) {
         return sky_visible_fraction(h, d, stride, rule);
     });

@@ -28,7 +28,8 @@ double sky_view_factor(const float* horizons, int directions, std::size_t stride
 double sky_visible_fraction(const float* horizons, int directions, std::size_t stride,
                             WedgeRule rule = WedgeRule::linear);
 
-// Per texel of the set; NaN where the horizons are NaN (void receivers).
+// Per texel of the set; NaN where the horizons are NaN (void receivers). Linear wedges run
+// through visibility_products (one vectorised pass; use it directly for several products).
 std::vector<float> svf_raster(const HorizonSet& set, WedgeRule rule = WedgeRule::linear, int threads = 0);
 std::vector<float> sky_visible_raster(const HorizonSet& set, WedgeRule rule = WedgeRule::linear, int threads = 0);
 

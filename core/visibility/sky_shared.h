@@ -10,6 +10,9 @@
 // The sinc forms have no cancellation when b is close to a, so they hold in float too.
 // Only the upper hemisphere counts: where the horizon is below 0 the receiver sees the whole
 // hemisphere in that azimuth (cos^2 -> 1, sin -> 0); a wedge crossing 0 is split there.
+// The CPU's whole-raster pass (visibility_products.cpp) evaluates the same means without
+// branches or libm calls, for vectorised loops; tests/visibility/visibility_products_test.cpp
+// holds it to these functions within float rounding.
 #ifndef TS_SKY_SHARED_H
 #define TS_SKY_SHARED_H
 

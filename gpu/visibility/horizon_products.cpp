@@ -106,7 +106,7 @@ void HorizonProducts::finish_band(Batch& batch, const Buffer& horizons, int band
 
     // The band's rows into the window-wide layouts ([plane][texel]).
     const std::size_t offset = std::size_t(band_row0) * std::size_t(result.horizons.width);
-    auto place = [&](const std::vector<float>& from, std::vector<float>& to, int planes) {
+    auto place = [&](const std::vector<float>& from, auto& to, int planes) {
         for (int i = 0; i < planes; ++i)
             std::memcpy(to.data() + std::size_t(i) * texels_ + offset, from.data() + std::size_t(i) * band_texels,
                         band_texels * sizeof(float));

@@ -73,13 +73,6 @@ public:
         return (pts_[i].u - u) / (s - pts_[i].s);
     }
 
-    // The same hull in a copy of its storage.
-    ProfileHull rebased(HullPoint* storage) const {
-        ProfileHull h = *this;
-        h.pts_ = storage;
-        return h;
-    }
-
     static constexpr double kNone = -std::numeric_limits<double>::infinity();
 
 private:
@@ -120,7 +113,7 @@ public:
     explicit DelayedHull(double delay = 0) : delay_(delay) {}
 
     // An empty line with room for `capacity` points; it points into this object's storage, so
-    // use it before the next begin_line, add or clear.
+    // use it before the next begin_line.
     Line begin_line(std::size_t capacity) {
         if (line_.size() < capacity) line_.resize(capacity), hull_.resize(capacity);
         Line l;
@@ -130,37 +123,9 @@ public:
         return l;
     }
 
-    // The same through the object itself, growing as needed (for callers outside a hot loop).
-    void clear() { cur_ = begin_line(0); }
-    void add(double s, double u) {
-        if (cur_.n_line_ == line_.size()) grow();
-        cur_.add(s, u);
-    }
-    double query(double s, double u) { return cur_.query(s, u); }
-
-    DelayedHull(const DelayedHull& o) : delay_(o.delay_) {}  // storage is scratch: not copied
-    DelayedHull& operator=(const DelayedHull& o) {
-        delay_ = o.delay_;
-        clear();
-        return *this;
-    }
-    DelayedHull(DelayedHull&&) = default;
-    DelayedHull& operator=(DelayedHull&&) = default;
-
 private:
-    // Doubles the storage and carries the current line over (the hull's points are a prefix
-    // of its storage, so copying the storage keeps them).
-    void grow() {
-        const std::size_t n_line = cur_.n_line_, head = cur_.head_;
-        const ProfileHull hull = cur_.hull_;
-        line_.resize(2 * line_.size() + 64), hull_.resize(line_.size());
-        cur_.line_ = line_.data();
-        cur_.n_line_ = n_line, cur_.head_ = head;
-        cur_.hull_ = hull.rebased(hull_.data());
-    }
     double delay_;
-    std::vector<HullPoint> line_, hull_;
-    Line cur_;
+    std::vector<HullPoint> line_, hull_;  // scratch reused by every line
 };
 
 }  // namespace ts::visibility

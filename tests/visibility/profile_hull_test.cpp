@@ -65,24 +65,6 @@ TEST(DelayedHullTest, MatchesBruteForceWithAndWithoutDelay) {
     }
 }
 
-// The object's own add/query (growing storage, the sweep's one-line-at-a-time use) and a Line
-// on reserved storage give the same bits, over several lines of one object.
-TEST(DelayedHullTest, GrowingInterfaceMatchesLine) {
-    DelayedHull growing(1.5), reserved(1.5);
-    for (unsigned seed = 7; seed <= 9; ++seed) {
-        const Profile p = random_profile(seed, 300 * int(seed - 6));
-        growing.clear();
-        DelayedHull::Line line = reserved.begin_line(p.s.size());
-        for (std::size_t i = 0; i < p.s.size(); ++i) {
-            const double a = growing.query(p.s[i], p.u[i]);
-            const double b = line.query(p.s[i], p.u[i]);
-            growing.add(p.s[i], p.u[i]);
-            line.add(p.s[i], p.u[i]);
-            EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "seed " << seed << " point " << i;
-        }
-    }
-}
-
 // The hinted search gives the same bits as the unhinted one from any hint (geographic rows:
 // dx varies by row).
 TEST(RowMetricsTest, HintedRowOfGMatchesUnhinted) {

@@ -165,10 +165,10 @@ TEST(SweepLanes, MostlyVoid) {
     expect_same_horizons(t.grid, o, "mostly void");
 }
 
-// The lane function itself: it takes whole groups, and its sums plus the scalar remainder are
-// the scalar sums (a uniform 30 m grid: the near field of 2 texels is a 60 m delay).
+// The lane function itself: it takes whole groups (none on a CPU without AVX-512), and its sums
+// plus the scalar remainder are the scalar sums (a uniform 30 m grid: the near field of 2 texels
+// is a 60 m delay).
 TEST(SweepLanes, DirectCallTakesWholeGroups) {
-    if (!sweep_lanes_supported()) GTEST_SKIP() << "no AVX-512 on this CPU: the lane sweep never runs";
     auto t = make_terrain(70, 64, 30.0, 30.0, ts::visibility::testing::hills);
     punch_voids(t.z, 70, 64);
     HorizonOptions off;
@@ -185,7 +185,7 @@ TEST(SweepLanes, DirectCallTakesWholeGroups) {
         const SweepPlan plan = scalar.plan(azimuth_rad(d, 20));
         FarFieldSums lanes = scalar.make_sums(), reference = scalar.make_sums();
         const long n = sweep_lines_simd(setup, plan, plan.n_min, plan.n_max + 1, lanes);
-        EXPECT_EQ(n, plan.n_min + plan.lines() / 8 * 8) << "azimuth " << d;
+        EXPECT_EQ(n, plan.n_min + (sweep_lanes_supported() ? plan.lines() / 8 * 8 : 0)) << "azimuth " << d;
         scalar.sweep_far_field(plan, n, plan.n_max + 1, lanes);
         scalar.sweep_far_field(plan, plan.n_min, plan.n_max + 1, reference);
         EXPECT_EQ(compare_bits(lanes.sum, reference.sum).count, 0) << "azimuth " << d;

@@ -15,6 +15,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -300,7 +301,7 @@ double median(std::vector<double> v) {
 }
 
 // svf RMSE of `svf` (whole-grid layout) against `ref` (the window's layout), interior of the window.
-double window_svf_rmse(const std::vector<float>& svf, int grid_w, const visibility::ReceiverWindow& w,
+double window_svf_rmse(std::span<const float> svf, int grid_w, const visibility::ReceiverWindow& w,
                        const std::vector<float>& ref) {
     std::vector<float> part(std::size_t(w.width) * std::size_t(w.height));
     for (int r = 0; r < w.height; ++r)
@@ -360,7 +361,7 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
 
     // CPU path, stage by stage: the horizons, then log-SH, svf and sky_visible in one pass.
     std::vector<double> cpu_h, cpu_products, cpu_total;
-    std::vector<float> cpu_svf;
+    visibility::VisibilityProducts cpu_products_last;
     visibility::ProductRequest products;
     products.threads = o.threads;
     for (int rep = 0; rep < o.repeats; ++rep) {
@@ -368,12 +369,12 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
         const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
         cpu_h.push_back(ms_since(t0));
         const auto t1 = std::chrono::steady_clock::now();
-        cpu_svf = visibility::visibility_products(set, products).svf;
+        cpu_products_last = visibility::visibility_products(set, products);
         cpu_products.push_back(ms_since(t1));
         cpu_total.push_back(ms_since(t0));
     }
     const double cpu_ms = median(cpu_total);
-    const double cpu_err = window_svf_rmse(cpu_svf, dem.width, win, svf_ref);
+    const double cpu_err = window_svf_rmse(cpu_products_last.svf, dem.width, win, svf_ref);
     std::printf("  cpu  %9.0f ms  (horizons %.0f, log_sh+svf+sky %.0f)  %.3g texel-azimuths/s  svf RMSE %.5f\n",
                 cpu_ms, median(cpu_h), median(cpu_products), texel_azimuths / (cpu_ms / 1000), cpu_err);
 

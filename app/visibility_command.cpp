@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct VisibilityResults {
     visibility::HorizonSet set;
     std::vector<float> svf, sky, log_sh;  // empty: not computed (the CPU writer computes them)
+    visibility::VisibilityProducts cpu;   // the CPU's one-pass products (what the GPU did not compute)
 };
+
+// The product from whichever path computed it (empty if neither did).
+std::span<const float> computed(const std::vector<float>& gpu, const UninitialisedVector<float>& cpu) {
+    return gpu.empty() ? std::span<const float>(cpu) : std::span<const float>(gpu);
+}
 
 #ifdef TERRASHADE_HAS_GPU
 // The Vulkan path: exact or pyramid horizons, log-SH and (linear wedges) svf/sky_visible on the device.
@@ -172,10 +179,7 @@ void run_visibility(VisibilityOptions& o) {
         r.threads = o.horizon.threads;
         if (r.log_sh || r.svf || r.sky_visible) {
             const auto t0 = std::chrono::steady_clock::now();
-            auto p = visibility::visibility_products(set, r);
-            if (r.log_sh) results->log_sh = std::move(p.log_sh);
-            if (r.svf) results->svf = std::move(p.svf);
-            if (r.sky_visible) results->sky = std::move(p.sky_visible);
+            results->cpu = visibility::visibility_products(set, r);
             const std::string what = std::string(r.log_sh ? ", log-SH" : "") + (r.svf ? ", svf" : "") +
                                      (r.sky_visible ? ", sky_visible" : "");
             std::printf("%s on the CPU: %.3f s\n", what.c_str() + 2, seconds_since(t0));
@@ -194,19 +198,21 @@ void run_visibility(VisibilityOptions& o) {
         }
         write_raster(o.horizons, dem, set.directions, deg.data(), names);
     }
+    // Constant wedges are not in the one-pass products: per texel.
     if (!o.svf.empty()) {
-        const auto svf =
-            results->svf.empty() ? visibility::svf_raster(set, rule, o.horizon.threads) : std::move(results->svf);
+        if (results->svf.empty() && results->cpu.svf.empty())
+            results->svf = visibility::svf_raster(set, rule, o.horizon.threads);
+        const auto svf = computed(results->svf, results->cpu.svf);
         write_raster(o.svf, dem, 1, svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
     }
     if (!o.sky_visible.empty()) {
-        const auto sky = results->sky.empty() ? visibility::sky_visible_raster(set, rule, o.horizon.threads)
-                                              : std::move(results->sky);
+        if (results->sky.empty() && results->cpu.sky_visible.empty())
+            results->sky = visibility::sky_visible_raster(set, rule, o.horizon.threads);
+        const auto sky = computed(results->sky, results->cpu.sky_visible);
         write_raster(o.sky_visible, dem, 1, sky.data(), {"sky_visible: visible fraction of the upper hemisphere"});
     }
     if (!o.sh.empty() || !o.log_sh.empty()) {
-        const auto log_sh = results->log_sh.empty() ? visibility::log_sh_raster(set, o.log_eps, o.horizon.threads)
-                                                     : std::move(results->log_sh);
+        const auto log_sh = computed(results->log_sh, results->cpu.log_sh);  // one of them (want_sh)
         std::vector<std::string> names;
         for (int i = 0; i < 16; ++i) {
             const int l = int(std::sqrt(double(i)));

@@ -18,10 +18,12 @@ std::vector<float> log_sh_raster(const HorizonSet& set, float log_eps, int threa
     r.svf = r.sky_visible = false;
     r.log_eps = log_eps;
     r.threads = threads;
-    return visibility_products(set, r).log_sh;
+    std::vector<float> out(set.texels() * kCoeffs);
+    visibility_products_into(set, r, {out.data(), nullptr, nullptr});
+    return out;
 }
 
-std::vector<float> exp_sh_raster(const std::vector<float>& log_sh, std::size_t texels, sh::ExpMethod method,
+std::vector<float> exp_sh_raster(std::span<const float> log_sh, std::size_t texels, sh::ExpMethod method,
                                  int threads) {
     std::vector<float> out(log_sh.size());
     const int items = int((texels + 4095) / 4096);

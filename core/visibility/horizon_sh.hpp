@@ -6,6 +6,7 @@
 // closed-form integrals of sh::SliceProjector::project_horizons, computed for all texels by
 // visibility_products (one vectorised pass; its double sums are rounded to float once).
 // exp_sh_raster then turns them into visibility SH with the chosen sh::ExpMethod.
+#include <span>
 #include <vector>
 
 #include "core/sh/exp_method.hpp"
@@ -25,7 +26,7 @@ constexpr float kDefaultVisibilityLogEps = -2.302585092994046f;
 std::vector<float> log_sh_raster(const HorizonSet& set, float log_eps = kDefaultVisibilityLogEps, int threads = 0);
 
 // exp of every texel's log-SH (same layout), with the chosen method's default options.
-std::vector<float> exp_sh_raster(const std::vector<float>& log_sh, std::size_t texels, sh::ExpMethod method,
+std::vector<float> exp_sh_raster(std::span<const float> log_sh, std::size_t texels, sh::ExpMethod method,
                                  int threads = 0);
 
 }  // namespace ts::visibility

@@ -65,13 +65,21 @@ ProductRequest sky_request(bool svf, int threads) {
 }  // namespace
 
 std::vector<float> svf_raster(const HorizonSet& set, WedgeRule rule, int threads) {
-    if (rule == WedgeRule::linear) return visibility_products(set, sky_request(true, threads)).svf;
+    if (rule == WedgeRule::linear) {
+        std::vector<float> out(set.texels());
+        visibility_products_into(set, sky_request(true, threads), {nullptr, out.data(), nullptr});
+        return out;
+    }
     return raster(set, threads,
                   [rule](const float* h, int d, std::size_t stride) { return sky_view_factor(h, d, stride, rule); });
 }
 
 std::vector<float> sky_visible_raster(const HorizonSet& set, WedgeRule rule, int threads) {
-    if (rule == WedgeRule::linear) return visibility_products(set, sky_request(false, threads)).sky_visible;
+    if (rule == WedgeRule::linear) {
+        std::vector<float> out(set.texels());
+        visibility_products_into(set, sky_request(false, threads), {nullptr, nullptr, out.data()});
+        return out;
+    }
     return raster(set, threads, [rule](const float* h, int d, std::size_t stride) {
         return sky_visible_fraction(h, d, stride, rule);
     });

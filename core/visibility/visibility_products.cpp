@@ -118,7 +118,7 @@ std::vector<double> azimuth_weights(int directions) {
 }
 
 void compute_block(const HorizonSet& set, std::size_t t0, int n, const ProductRequest& r,
-                   const std::vector<double>& weights, BlockSums& b, VisibilityProducts& out) {
+                   const std::vector<double>& weights, BlockSums& b, const ProductOutputs& out) {
     const int D = set.directions;
     const bool sky = r.svf || r.sky_visible;
     for (int j = 0; j < n; ++j) b.probe[j] = b.cos2[j] = b.sin[j] = 0.0;
@@ -139,26 +139,32 @@ void compute_block(const HorizonSet& set, std::size_t t0, int n, const ProductRe
 
     if (r.log_sh)
         for (int i = 0; i < kCoeffs; ++i)
-            store(b.log_sh[i], b.probe, 1.0, 0.0, n, out.log_sh.data() + std::size_t(i) * set.texels() + t0);
-    if (r.svf) store(b.cos2, b.probe, 1.0 / D, 0.0, n, out.svf.data() + t0);
-    if (r.sky_visible) store(b.sin, b.probe, -1.0 / D, 1.0, n, out.sky_visible.data() + t0);
+            store(b.log_sh[i], b.probe, 1.0, 0.0, n, out.log_sh + std::size_t(i) * set.texels() + t0);
+    if (r.svf) store(b.cos2, b.probe, 1.0 / D, 0.0, n, out.svf + t0);
+    if (r.sky_visible) store(b.sin, b.probe, -1.0 / D, 1.0, n, out.sky_visible + t0);
 }
 
 }  // namespace
 
 VisibilityProducts visibility_products(const HorizonSet& set, const ProductRequest& r) {
-    if (r.log_sh && set.directions < 4)
-        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(set.directions));
     VisibilityProducts out;
     const std::size_t texels = set.texels();
     if (r.log_sh) out.log_sh.resize(texels * kCoeffs);
     if (r.svf) out.svf.resize(texels);
     if (r.sky_visible) out.sky_visible.resize(texels);
+    visibility_products_into(set, r, {out.log_sh.data(), out.svf.data(), out.sky_visible.data()});
+    return out;
+}
+
+void visibility_products_into(const HorizonSet& set, const ProductRequest& r, const ProductOutputs& out) {
+    if (r.log_sh && set.directions < 4)
+        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(set.directions));
+    const std::size_t texels = set.texels();
     if (set.directions < 1) {  // no azimuth to average over: as 0 / 0 in the per-texel code
-        std::fill(out.svf.begin(), out.svf.end(), std::numeric_limits<float>::quiet_NaN());
-        std::fill(out.sky_visible.begin(), out.sky_visible.end(), std::numeric_limits<float>::quiet_NaN());
+        if (r.svf) std::fill(out.svf, out.svf + texels, std::numeric_limits<float>::quiet_NaN());
+        if (r.sky_visible) std::fill(out.sky_visible, out.sky_visible + texels, std::numeric_limits<float>::quiet_NaN());
     }
-    if (texels == 0 || set.directions < 1 || !(r.log_sh || r.svf || r.sky_visible)) return out;
+    if (texels == 0 || set.directions < 1 || !(r.log_sh || r.svf || r.sky_visible)) return;
 
     const std::vector<double> weights = r.log_sh ? azimuth_weights(set.directions) : std::vector<double>{};
     constexpr std::size_t kItem = std::size_t(kBlock) * kBlocksPerItem;
@@ -171,7 +177,6 @@ VisibilityProducts visibility_products(const HorizonSet& set, const ProductReque
             compute_block(set, t0, int(std::min<std::size_t>(kBlock, end - t0)), r, weights,
                           scratch[std::size_t(worker)], out);
     });
-    return out;
 }
 
 }  // namespace ts::visibility

@@ -11,6 +11,7 @@
 // the per-texel libm code is tested (tests/visibility/visibility_products_test.cpp).
 #include <vector>
 
+#include "core/util/uninitialised_vector.hpp"
 #include "core/visibility/horizon_set.hpp"
 #include "core/visibility/horizon_sh.hpp"
 
@@ -26,10 +27,21 @@ struct ProductRequest {
 
 // Layouts as log_sh_raster ([coefficient][texel]), svf_raster and sky_visible_raster; a
 // product not requested is left empty. NaN everywhere for void receivers (any NaN horizon).
+// The pass writes every texel, so the buffers are not zero-filled first (~40 ms for the 92 MB
+// log-SH of a whole SRTM tile, on one thread).
 struct VisibilityProducts {
-    std::vector<float> log_sh, svf, sky_visible;
+    UninitialisedVector<float> log_sh, svf, sky_visible;
 };
 
 VisibilityProducts visibility_products(const HorizonSet& set, const ProductRequest& request = {});
+
+// The same into caller-owned buffers (16 x texels floats for log-SH, texels for the others;
+// a buffer whose product is not requested may be null).
+struct ProductOutputs {
+    float* log_sh = nullptr;
+    float* svf = nullptr;
+    float* sky_visible = nullptr;
+};
+void visibility_products_into(const HorizonSet& set, const ProductRequest& request, const ProductOutputs& out);
 
 }  // namespace ts::visibility

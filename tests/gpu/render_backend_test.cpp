@@ -26,6 +26,7 @@
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "gpu/render/gpu_render_backend.hpp"
+#include "tests/gpu/horizon_agreement.hpp"
 #include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
@@ -124,17 +125,9 @@ cr::TransferInputs transfer_inputs(const Lobes& l, const std::vector<float>& log
 }
 
 using test_support::compare_transfer;
+using test_support::sky_light;
 using test_support::TransferAgreement;
 
-std::array<glm::vec3, 16> sky_light() {
-    std::array<glm::vec3, 16> l{};
-    l[0] = glm::vec3(2.0f, 2.6f, 3.4f);
-    l[1] = glm::vec3(-0.3f);
-    l[2] = glm::vec3(1.1f, 1.2f, 1.4f);
-    l[3] = glm::vec3(-0.4f, -0.3f, -0.2f);
-    for (int i = 4; i < 16; ++i) l[std::size_t(i)] = glm::vec3(0.05f * float(i % 5) - 0.1f);
-    return l;
-}
 
 using GpuRenderBackendTest = test_support::ValidatedTest;
 
@@ -148,19 +141,12 @@ TEST_F(GpuRenderBackendTest, HorizonsAndLogShMatchTheCpuBackend) {
     ASSERT_EQ(h.angle.size(), cpu.horizons.angle.size());
     ASSERT_EQ(log_sh.size(), cpu.log_sh.size());
     const std::size_t texels = cpu.horizons.texels();
-    std::vector<bool> flipped(texels, false);
-    std::size_t flips = 0, nan_mismatches = 0;
-    double worst_h = 0, worst_sh = 0;
-    for (std::size_t i = 0; i < h.angle.size(); ++i) {
-        const float a = cpu.horizons.angle[i], b = h.angle[i];
-        if (std::isnan(a) || std::isnan(b)) {
-            nan_mismatches += std::isnan(a) != std::isnan(b);
-            continue;
-        }
-        const double d = std::abs(double(a) - double(b));
-        if (d > kHorizonTol) ++flips, flipped[i % texels] = true;
-        else worst_h = std::max(worst_h, d);
-    }
+    const test_support::HorizonAgreement ha = test_support::compare_horizons(cpu.horizons, h, kHorizonTol);
+    const std::vector<bool>& flipped = ha.flipped;
+    const std::size_t flips = ha.flips;
+    std::size_t nan_mismatches = ha.nan_mismatches;
+    const double worst_h = ha.max;
+    double worst_sh = 0;
     for (std::size_t t = 0; t < texels; ++t) {
         if (flipped[t]) continue;
         for (std::size_t i = 0; i < 16; ++i) {

@@ -1,12 +1,28 @@
 #pragma once
-// How two sets of transfer vectors ([16][texels], render::transfer_vectors' layout) agree, for
-// the GPU tests that compare the device's transfer with the CPU's.
+// How two sets of transfer vectors ([16][texels], render::transfer_vectors' layout) agree, and
+// the light both GPU transfer/shading tests feed them, for the tests that compare the device's
+// transfer and shading with the CPU's.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 namespace ts::gpu::test_support {
+
+// A sky-like light: a bright constant, brighter towards the zenith and the south-west, some
+// detail in the higher bands.
+inline std::array<glm::vec3, 16> sky_light() {
+    std::array<glm::vec3, 16> l{};
+    l[0] = glm::vec3(2.0f, 2.6f, 3.4f);
+    l[1] = glm::vec3(-0.3f);
+    l[2] = glm::vec3(1.1f, 1.2f, 1.4f);
+    l[3] = glm::vec3(-0.4f, -0.3f, -0.2f);
+    for (int i = 4; i < 16; ++i) l[std::size_t(i)] = glm::vec3(0.05f * float(i % 5) - 0.1f);
+    return l;
+}
 
 // Per texel: max |test - ref| over the 16 coefficients, over the reference's norm. Texels beyond
 // `tol` are counted as flips and kept out of `worst`; a NaN on one side only is a mismatch.

@@ -113,17 +113,6 @@ cr::TransferInputs phong_inputs(const Scene& s) {
     return in;
 }
 
-std::array<glm::vec3, 16> sky_light() {
-    // A sky-like light: a bright constant, brighter towards the zenith and the south-west, some
-    // detail in the higher bands.
-    std::array<glm::vec3, 16> l{};
-    l[0] = glm::vec3(2.0f, 2.6f, 3.4f);
-    l[1] = glm::vec3(-0.3f);
-    l[2] = glm::vec3(1.1f, 1.2f, 1.4f);
-    l[3] = glm::vec3(-0.4f, -0.3f, -0.2f);
-    for (int i = 4; i < 16; ++i) l[std::size_t(i)] = glm::vec3(0.05f * float(i % 5) - 0.1f);
-    return l;
-}
 
 // Tolerances. Both sides run the same float exponentiation (core/sh/sh_exp_shared.h); they
 // differ in the lobe's rotation (double on the CPU, float on the GPU: ~1e-7 of the log), in the
@@ -139,6 +128,7 @@ constexpr double kFlipFraction = 1e-4;
 // Shading: the 16-term dot of T, 1e-4 of the sum of the terms' magnitudes (measured 1e-6).
 constexpr double kShadeTol = 1e-4;
 
+using test_support::sky_light;
 using GpuTransferTest = test_support::ValidatedTest;
 
 TEST_F(GpuTransferTest, AgreesWithTheCpuOnSharedDemCrops) {

@@ -20,6 +20,7 @@
 #include "core/visibility/sky_integrals.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "gpu/visibility/gpu_visibility.hpp"
+#include "tests/gpu/horizon_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -86,28 +87,11 @@ double abs_diff(float a, float b) { return std::abs(double(a) - double(b)); }
 Comparison compare(const CpuRun& cpu, const visibility::Result& gpu) {
     Comparison c;
     const std::size_t texels = cpu.horizons.texels();
-    std::vector<bool> flipped(texels, false);
-    double sum2 = 0;
-    for (std::size_t i = 0; i < cpu.horizons.angle.size(); ++i) {
-        const float a = cpu.horizons.angle[i], b = gpu.horizons.angle[i];
-        if (std::isnan(a) || std::isnan(b)) {
-            c.nan_mismatches += std::isnan(a) != std::isnan(b);
-            continue;
-        }
-        const double d = abs_diff(a, b);
-        sum2 += d * d;
-        ++c.compared;
-        if (d > kHorizonTol) {
-            if (std::getenv("TS_GPU_VISIBILITY_VERBOSE") && c.flips < 20)
-                std::printf("  flip d=%zu col=%zu row=%zu cpu %.6f gpu %.6f\n", i / texels, (i % texels) % std::size_t(cpu.horizons.width),
-                            (i % texels) / std::size_t(cpu.horizons.width), a, b);
-            ++c.flips;
-            flipped[i % texels] = true;
-            continue;
-        }
-        c.max_horizon = std::max(c.max_horizon, d);
-    }
-    c.rms_horizon = c.compared ? std::sqrt(sum2 / double(c.compared)) : 0.0;
+    const test_support::HorizonAgreement h =
+        test_support::compare_horizons(cpu.horizons, gpu.horizons, kHorizonTol, "TS_GPU_VISIBILITY_VERBOSE");
+    c.max_horizon = h.max, c.rms_horizon = h.rms;
+    c.flips = h.flips, c.compared = h.compared, c.nan_mismatches = h.nan_mismatches;
+    const std::vector<bool>& flipped = h.flipped;
     for (std::size_t t = 0; t < texels; ++t) {
         if (std::isnan(cpu.svf[t]) != std::isnan(gpu.svf[t]) || std::isnan(cpu.sky[t]) != std::isnan(gpu.sky_visible[t]))
             ++c.nan_mismatches;

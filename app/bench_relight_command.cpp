@@ -15,7 +15,7 @@
 #include <string>
 
 #include "app/command.hpp"
-#include "app/render_device.hpp"
+#include "app/compute_device.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/render/render_backend.hpp"
@@ -66,6 +66,7 @@ struct FrameSums {
 void compare_with_cpu(const dem::Dem& dem, render::SceneOptions options, int frames, render::Scene& device_scene,
                       double device_setup_s) {
     options.renderer.backend = nullptr;
+    options.renderer.visibility = nullptr;
     const auto t0 = Clock::now();
     render::Scene scene(dem, options);
     const double setup_s = seconds_since(t0);
@@ -77,8 +78,8 @@ void compare_with_cpu(const dem::Dem& dem, render::SceneOptions options, int fra
         cpu.add(scene, sun_of_frame(k, frames), image);
     }
     const double n = frames;
-    const auto& dr = device_scene.renderer();
-    const auto& cr = scene.renderer();
+    const auto& dr = device_scene.state();
+    const auto& cr = scene.state();
     std::printf("cpu one-time: visibility %.3f s + transfer %.3f s (setup %.3f s)\n", cr.visibility_seconds(),
                 cr.transfer_seconds(), setup_s);
     for (const auto& [name, f] : {std::pair{"device", dev}, std::pair{"cpu", cpu}})
@@ -119,7 +120,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
     render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
     const dem::Dem dem = load_dem_input(a.render.dem);
-    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 
@@ -189,8 +190,8 @@ void run_bench_relight(const BenchRelightArgs& a) {
                 thread_count(a.render.threads));
     std::printf("one-time: visibility (exact horizons, %d directions, log-SH) %.3f s + transfer vectors %.3f s "
                 "(%zu specular, %zu water texels)\n",
-                a.render.directions, scene.renderer().visibility_seconds(), scene.renderer().transfer_seconds(),
-                scene.renderer().specular_texels(), scene.renderer().water_texels());
+                a.render.directions, scene.state().visibility_seconds(), scene.state().transfer_seconds(),
+                scene.state().specular_index().size(), scene.state().water_index().size());
     std::printf("per frame: sky SH + sky table %.2f ms, sun visibility sweep %.2f ms, shading %.2f ms, "
                 "total %.2f ms\n",
                 sky_s / n * 1e3, sun_s / n * 1e3, shade_s / n * 1e3, frames_s / n * 1e3);
@@ -206,7 +207,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
     std::printf("backend: %s\n", device.name().c_str());
     if (a.compare_unfused) compare_unfused(dem, options, a.frames, scene);
     if (a.compare_cpu) {
-        if (device.backend()) compare_with_cpu(dem, options, a.frames, scene, setup_s);
+        if (device.on_vulkan()) compare_with_cpu(dem, options, a.frames, scene, setup_s);
         else std::printf("--compare-cpu: the run above was the CPU path already\n");
     }
 }

@@ -167,9 +167,11 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
     ro.directions = o.directions;
     ro.curvature = !o.no_curvature;
     ro.threads = o.threads;
-    render::FrameRenderer renderer(grid, materials, normals, view, ro);
+    const std::unique_ptr<render::ShadingState> state = render::compute_shading_state(grid, materials, normals, ro);
+    const render::ViewShading view_shading = render::compute_view_shading(*state, view);
+    render::FrameRenderer renderer(*state, view_shading);
     std::printf("%s: %dx%d, visibility %.2f s, transfer %.2f s\n", name.c_str(), grid.width, grid.height,
-                renderer.visibility_seconds(), renderer.transfer_seconds());
+                state->visibility_seconds(), state->transfer_seconds());
 
     const std::vector<std::size_t> texels = sample_texels(grid, o.samples, o.seed);
     render::ReferenceOptions refo;
@@ -178,7 +180,7 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
     refo.threads = o.threads;
     auto t0 = std::chrono::steady_clock::now();
     // The renderer's own normals (water flattened) and materials: only lighting differs.
-    const render::ReferenceShader reference(grid, renderer.materials(), renderer.normals(), view, texels, refo);
+    const render::ReferenceShader reference(grid, state->materials(), state->normals(), view, texels, refo);
     const double horizons_s = ms_since(t0) / 1000.0;
 
     std::vector<std::pair<std::string, light::UtcTime>> times;

@@ -127,7 +127,8 @@ void run_bench_transfer(const BenchTransferOptions& o) {
         gpu::visibility::Options go;
         go.horizon = ho;
         go.sky = false;
-        log_vis = gpu::visibility::compute(*context, grid, go).log_sh;
+        const auto r = gpu::visibility::compute(*context, grid, go);
+        log_vis.assign(r.log_sh.begin(), r.log_sh.end());
         vis_where = "GPU";
     }
 #endif

@@ -21,6 +21,7 @@
 
 #include "app/csv_number.hpp"
 #include "app/command.hpp"
+#include "app/compute_device.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/util/atomic_file.hpp"
@@ -30,10 +31,6 @@
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "core/visibility/visibility_products.hpp"
-#ifdef TERRASHADE_HAS_GPU
-#include "gpu/context.hpp"
-#include "gpu/visibility/gpu_visibility.hpp"
-#endif
 
 namespace ts::app {
 namespace {
@@ -359,57 +356,61 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
     std::printf("  reference: raymarch D=%d on the centred %dx%d window, %.0f ms\n", o.reference_directions,
                 win.width, win.height, ms_since(t0));
 
-    // CPU path, stage by stage: the horizons, then log-SH, svf and sky_visible in one pass.
-    std::vector<double> cpu_h, cpu_products, cpu_total;
-    visibility::VisibilityProducts cpu_products_last;
-    visibility::ProductRequest products;
-    products.threads = o.threads;
-    for (int rep = 0; rep < o.repeats; ++rep) {
-        t0 = std::chrono::steady_clock::now();
-        const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
-        cpu_h.push_back(ms_since(t0));
-        const auto t1 = std::chrono::steady_clock::now();
-        cpu_products_last = visibility::visibility_products(set, products);
-        cpu_products.push_back(ms_since(t1));
-        cpu_total.push_back(ms_since(t0));
-    }
-    const double cpu_ms = median(cpu_total);
-    const double cpu_err = window_svf_rmse(cpu_products_last.svf, dem.width, win, svf_ref);
-    std::printf("  cpu  %9.0f ms  (horizons %.0f, log_sh+svf+sky %.0f)  %.3g texel-azimuths/s  svf RMSE %.5f\n",
-                cpu_ms, median(cpu_h), median(cpu_products), texel_azimuths / (cpu_ms / 1000), cpu_err);
-
-    double gpu_ms = kNaN;
-#ifdef TERRASHADE_HAS_GPU
-    try {
-        const gpu::Context context(gpu::ContextOptions{.device_index = o.device});
+    // Each path as the visibility command runs it (the backend seam): the default (--device
+    // auto), the CPU and the Vulkan device, stage by stage.
+    visibility::VisibilityRequest request;
+    request.horizon = ho;
+    request.log_sh = request.svf = request.sky_visible = true;
+    struct PathRun {
+        std::string label;
+        double ms = kNaN;
+    };
+    std::vector<PathRun> runs;
+    auto run_path = [&](const std::string& label, const DeviceArgs& args) {
+        std::unique_ptr<ComputeDevice> device;
+        try {
+            device = std::make_unique<ComputeDevice>(args);
+        } catch (const InputError& e) {
+            if (o.device) throw;
+            std::printf("  %-7s not run: %s\n", label.c_str(), e.what());
+            return;
+        }
         std::vector<double> total;
-        std::vector<std::vector<gpu::visibility::StageTime>> stages;
-        std::vector<float> gpu_svf;
+        std::vector<std::vector<double>> stage_s;
+        visibility::VisibilityResult last;
         for (int rep = 0; rep < o.repeats; ++rep) {
-            gpu::visibility::Options go;
-            go.horizon = ho;
             t0 = std::chrono::steady_clock::now();
-            auto r = gpu::visibility::compute(context, grid.view(), go);
+            last = device->visibility().compute(grid.view(), request);
             total.push_back(ms_since(t0));
-            stages.push_back(r.stages);
-            gpu_svf = std::move(r.svf);
+            for (std::size_t i = 0; i < last.stages.size(); ++i) {
+                if (stage_s.size() <= i) stage_s.emplace_back();
+                stage_s[i].push_back(last.stages[i].seconds * 1e3);
+            }
         }
-        gpu_ms = median(total);
+        const double ms = median(total);
         std::string stage_text;
-        for (std::size_t i = 0; i < stages[0].size(); ++i) {
-            std::vector<double> v;
-            for (const auto& s : stages) v.push_back(i < s.size() ? s[i].ms : kNaN);
-            stage_text += (i ? ", " : "") + stages[0][i].label + " " + std::to_string(int(std::lround(median(v))));
-        }
-        std::printf("  gpu  %9.0f ms  (device ms: %s; on %s)  %.3g texel-azimuths/s  svf RMSE %.5f\n", gpu_ms,
-                    stage_text.c_str(), context.device_info().name.c_str(), texel_azimuths / (gpu_ms / 1000),
-                    window_svf_rmse(gpu_svf, dem.width, win, svf_ref));
-        std::printf("  gpu / cpu time: %.2f\n", gpu_ms / cpu_ms);
-    } catch (const InputError& e) {
-        if (o.device) throw;
-        std::printf("  gpu  not run: %s\n", e.what());
-    }
+        for (std::size_t i = 0; i < stage_s.size(); ++i)
+            stage_text += (i ? "; " : "") + last.stages[i].label + " " +
+                          std::to_string(int(std::lround(median(stage_s[i])))) + " on " + last.stages[i].path;
+        std::printf("  %-7s %9.0f ms  (%s)  %.3g texel-azimuths/s  svf RMSE %.5f\n", label.c_str(), ms,
+                    stage_text.c_str(), texel_azimuths / (ms / 1000), window_svf_rmse(last.svf, dem.width, win, svf_ref));
+        runs.push_back({label, ms});
+    };
+    DeviceArgs default_args, cpu_args, vulkan_args;
+    cpu_args.device = "cpu";
+    vulkan_args.device = o.device ? std::to_string(*o.device) : "vulkan";
+    const DeviceChoice choice = choose_device(default_args);
+    std::printf("  default path: %s\n", choice.reason.c_str());
+    run_path("default", default_args);
+    run_path("cpu", cpu_args);
+#ifdef TERRASHADE_HAS_GPU
+    run_path("vulkan", vulkan_args);
 #endif
+    double fastest = kNaN;
+    for (const auto& r : runs)
+        if (r.label != "default" && !(r.ms >= fastest)) fastest = r.ms;
+    if (!runs.empty() && runs[0].label == "default")
+        std::printf("  default / fastest path time: %.2f\n", runs[0].ms / fastest);
 
     if (o.no_saga) return;
     if (!have_program("saga_cmd") || !have_program("gdalwarp")) {
@@ -471,8 +472,9 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
                 compare(our_q.svf, ref_q.svf, uwin.width, uwin.height).rmse,
                 compare(sv, ref_q.visible, uwin.width, uwin.height).rmse,
                 compare(our_q.visible, ref_q.visible, uwin.width, uwin.height).rmse);
-    std::printf("  saga time / cpu time: %.2f", saga_ms / cpu_ms);
-    if (!std::isnan(gpu_ms)) std::printf(", saga time / gpu time: %.2f", saga_ms / gpu_ms);
+    std::printf("  saga time /");
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        std::printf("%s %s time: %.2f", i ? "," : "", runs[i].label.c_str(), saga_ms / runs[i].ms);
     std::printf("\n");
     std::filesystem::remove_all(dir);
 }

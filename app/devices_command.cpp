@@ -39,6 +39,8 @@ void list_devices() {
         std::printf("\n");
     }
     if (!chosen) throw gpu::no_vulkan_device_error("no Vulkan device with Vulkan 1.1 and a compute queue");
+    std::printf("--device vulkan uses the (default) device; --device auto (every command's default): %s\n",
+                gpu::choose_auto_path(devices).reason.c_str());
 }
 
 void test_device(const DevicesOptions& options) {
@@ -61,7 +63,7 @@ void test_device(const DevicesOptions& options) {
 void add_devices_command(CLI::App& root) {
     auto options = std::make_shared<DevicesOptions>();
     CLI::App* command = root.add_subcommand(
-        "devices", "List the Vulkan devices; the default is the first discrete GPU, else integrated, virtual, CPU");
+        "devices", "List the Vulkan devices, which one --device vulkan takes (the first discrete GPU, else integrated, virtual, CPU) and what --device auto picks and why");
     command->add_flag("--test", options->self_test, "Run a small compute kernel on the device and check its result");
     command->add_option("--device", options->device, "With --test: the device index to test (default: the default)");
     command->footer(

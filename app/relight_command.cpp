@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/command.hpp"
-#include "app/render_device.hpp"
+#include "app/compute_device.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/light/time_interval.hpp"
@@ -64,7 +64,7 @@ void run_relight(const RelightArgs& a) {
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
-    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());
     const auto t0 = std::chrono::steady_clock::now();
@@ -87,7 +87,6 @@ void run_relight(const RelightArgs& a) {
     if (down > 0)
         std::fprintf(stderr, "terrashade: warning: the sun is below the horizon at %zu of %zu times: those frames "
                              "have sky light only\n", down, times.size());
-    const bool map = options.view == render::ViewKind::map;
     render::LinearImage image;
     if (exposure.automatic && a.format != "exr") {
         // One exposure for the whole sequence (from the frame with the highest sun), so dusk
@@ -115,7 +114,7 @@ void run_relight(const RelightArgs& a) {
             char name[64];
             std::snprintf(name, sizeof name, "frame_%04zu.%s", k, a.format.c_str());
             writer.write((std::filesystem::path(a.out_dir) / name).string(), image, exposure,
-                         map ? &dem.georef : nullptr);
+                         scene->target().georef());
             bar.advance();
         }
         writer.finish();

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/command.hpp"
-#include "app/render_device.hpp"
+#include "app/compute_device.hpp"
 #include "app/render_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -52,7 +52,7 @@ void run_render(const RenderCommandArgs& a) {
     const render::Exposure exposure = exposure_of(a.render);
 
     const dem::Dem dem = load_dem_input(a.render.dem);
-    const RenderDevice device(a.render);  // before the scene: it must outlive it
+    const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;
     {
@@ -71,14 +71,13 @@ void run_render(const RenderCommandArgs& a) {
     scene->render(sun, image);
     const double frame_s = seconds_since(t1);
 
-    const bool map = options.view == render::ViewKind::map;
-    const double scale = render::write_image(a.out, image, exposure, map ? &dem.georef : nullptr);
+    const double scale = render::write_image(a.out, image, exposure, scene->target().georef());
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,
                 time ? (" at " + light::format_utc_time(*time)).c_str() : "");
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
     std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
-                scene->renderer().visibility_seconds(), scene->renderer().transfer_seconds(), a.render.directions,
+                scene->state().visibility_seconds(), scene->state().transfer_seconds(), a.render.directions,
                 frame_s, device.name().c_str());
     if (!a.out.ends_with(".exr"))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);

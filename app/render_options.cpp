@@ -1,6 +1,10 @@
 #include "app/render_options.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <string_view>
+
+#include "core/geo/crs.hpp"
 
 #include "core/sh/exp_method.hpp"
 #include "core/util/error.hpp"
@@ -36,7 +40,14 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "datum; heading clockwise from north; pitch < 0 looks down; horizontal fov). Default: an oblique "
                    "view from beyond the DEM's south-west corner (docs/rendering.md)");
     cmd.add_option("--size", a.size,
-                   "Output WIDTHxHEIGHT: perspective default 960x540; map default the DEM grid (else resampled)");
+                   "Output WIDTHxHEIGHT: perspective default 960x540; map default the DEM grid (else resampled); "
+                   "--extent default 512 on the longer side, the extent's aspect");
+    cmd.add_option("--extent", a.extent,
+                   "A map of this extent instead of the DEM grid: XMIN,YMIN,XMAX,YMAX in --extent-crs (north up; "
+                   "pixels off the DEM or over voids are transparent; a .tif is georeferenced in that CRS)");
+    cmd.add_option("--extent-crs", a.extent_crs,
+                   "CRS of --extent: EPSG:3857 (Web Mercator), EPSG:4326 (lon/lat), any EPSG code, PROJ string or "
+                   "WKT (default: the DEM's CRS)");
     cmd.add_option("--exposure", a.exposure,
                    "EV100 number (e.g. 14.5 for a sunlit scene) or auto (log-average luminance to middle grey)")
         ->capture_default_str();
@@ -58,13 +69,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
                  "Keep the diffuse transfer as exponentiated (default: scaled per SH band so open ground gets the exact projected cosine; docs/rendering.md)");
-    auto* cpu = cmd.add_flag("--cpu", a.cpu,
-                             "Compute visibility, transfer and shading on the CPU (the reference path) instead of the "
-                             "Vulkan device");
-    cmd.add_option("--device", a.device,
-                   "Vulkan device index as `terrashade devices` lists it (default: the best device; without --device "
-                   "a machine with no Vulkan falls back to the CPU with a warning)")
-        ->excludes(cpu);
+    add_device_options(cmd, a.device);
     cmd.add_option("--sun-shadows", a.sun_shadows,
                    "Per-frame sun shadows: sweep (fast, shadow heights along the sweep lines) or exact (the "
                    "reference horizon sweep in the sun's azimuth; docs/accuracy.md)")
@@ -90,6 +95,35 @@ render::SceneOptions scene_options(const RenderArgs& a) {
             o.perspective.width = w, o.perspective.height = h;
         else
             o.map_width = w, o.map_height = h;
+    }
+    if (!a.extent_crs.empty() && a.extent.empty()) throw InputError("--extent-crs goes with --extent");
+    if (!a.extent.empty()) {
+        if (o.view != render::ViewKind::map) throw InputError("--extent: a map view only (drop --view perspective)");
+        render::ExtentRequest e;
+        double v[4];
+        std::string_view rest = a.extent;
+        for (int i = 0; i < 4; ++i) {
+            const auto comma = rest.find(',');
+            const std::string_view item = rest.substr(0, comma);
+            const auto [p, ec] = std::from_chars(item.data(), item.data() + item.size(), v[i]);
+            if (ec != std::errc() || p != item.data() + item.size() || item.empty() || (i < 3) == (comma == rest.npos))
+                throw InputError("--extent " + a.extent + ": give four numbers XMIN,YMIN,XMAX,YMAX");
+            rest = comma == rest.npos ? std::string_view() : rest.substr(comma + 1);
+        }
+        e.x0 = v[0], e.y0 = v[1], e.x1 = v[2], e.y1 = v[3];
+        if (!(e.x1 > e.x0 && e.y1 > e.y0))
+            throw InputError("--extent " + a.extent + ": XMIN < XMAX and YMIN < YMAX, please");
+        e.crs = a.extent_crs;
+        if (o.map_width > 0) {
+            e.width = o.map_width, e.height = o.map_height;
+        } else {
+            const double aspect = (e.x1 - e.x0) / (e.y1 - e.y0);
+            e.width = aspect >= 1 ? 512 : std::max(1, int(std::lround(512 * aspect)));
+            e.height = aspect >= 1 ? std::max(1, int(std::lround(512 / aspect))) : 512;
+        }
+        if (!e.crs.empty()) geo::Crs::from_definition(e.crs);  // an unknown CRS fails before any work
+        o.extent = e;
+        o.view = render::ViewKind::extent;
     }
     o.materials = a.materials;
     o.albedo = a.albedo;

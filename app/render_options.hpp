@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
 #include "core/render/render_scene.hpp"
 
@@ -19,13 +20,14 @@ struct RenderArgs {
     std::string view = "map";
     std::string camera;
     std::string size;
+    std::string extent;      // --extent XMIN,YMIN,XMAX,YMAX (a map of that extent)
+    std::string extent_crs;  // --extent-crs (default: the DEM's CRS)
     std::string exposure = "auto";
     std::string materials = "rule";
     std::string albedo;
     int directions = 32;
     bool no_curvature = false;
-    bool cpu = false;                     // --cpu: the CPU reference path (app/render_device.hpp)
-    std::optional<std::uint32_t> device;  // --device N: this Vulkan device (default: the best one)
+    DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)
     double haze_km = 250.0;
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/sh/exp_method.hpp"
@@ -23,12 +24,8 @@
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sky_integrals.hpp"
+#include "core/visibility/visibility_backend.hpp"
 #include "core/visibility/visibility_grid.hpp"
-#include "core/visibility/visibility_products.hpp"
-#ifdef TERRASHADE_HAS_GPU
-#include "gpu/context.hpp"
-#include "gpu/visibility/gpu_visibility.hpp"
-#endif
 
 namespace ts::app {
 namespace {
@@ -42,61 +39,12 @@ struct VisibilityOptions {
     float log_eps = visibility::kDefaultVisibilityLogEps;
     bool no_curvature = false;
     std::string svf, sky_visible, horizons, sh, log_sh;
-    bool cpu = false;                    // --cpu: the CPU reference path
-    std::optional<std::uint32_t> device;  // --device N
+    DeviceArgs device;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-
-// What one path (GPU or CPU) hands the writers: horizons always; the rest when computed.
-struct VisibilityResults {
-    visibility::HorizonSet set;
-    std::vector<float> svf, sky, log_sh;  // empty: not computed (the CPU writer computes them)
-    visibility::VisibilityProducts cpu;   // the CPU's one-pass products (what the GPU did not compute)
-};
-
-// The product from whichever path computed it (empty if neither did).
-std::span<const float> computed(const std::vector<float>& gpu, const UninitialisedVector<float>& cpu) {
-    return gpu.empty() ? std::span<const float>(cpu) : std::span<const float>(gpu);
-}
-
-#ifdef TERRASHADE_HAS_GPU
-// The Vulkan path: exact or pyramid horizons, log-SH and (linear wedges) svf/sky_visible on the device.
-// Returns nothing when Vulkan cannot run and no --device was asked for: the caller falls
-// back to the CPU after a one-line warning. With --device, the error stands (it names the
-// package to install).
-std::optional<VisibilityResults> run_on_gpu(const VisibilityOptions& o, const terrain::HeightGrid& grid,
-                                            bool want_sh, bool want_sky) {
-    std::unique_ptr<gpu::Context> context;
-    try {
-        context = std::make_unique<gpu::Context>(gpu::ContextOptions{.device_index = o.device});
-    } catch (const std::exception& e) {
-        if (o.device) throw;
-        std::fprintf(stderr, "terrashade: warning: no usable Vulkan device, visibility runs on the CPU (%s)\n",
-                     e.what());
-        return std::nullopt;
-    }
-    gpu::visibility::Options go;
-    go.horizon = o.horizon;
-    go.log_eps = o.log_eps;
-    go.log_sh = want_sh;
-    go.sky = want_sky;
-    const auto t0 = std::chrono::steady_clock::now();
-    ProgressBar bar("horizons (" + o.method + ", GPU)", std::uint64_t(grid.width) * std::uint64_t(grid.height) *
-                                                 std::uint64_t(o.horizon.directions), "rays");
-    go.horizon.progress = &bar;
-    gpu::visibility::Result r = gpu::visibility::compute(*context, grid, go);
-    bar.finish();
-    std::printf("%s horizons on %s: %d directions, %dx%d texels, %.3f s (%s curvature; %d band%s; device ms:",
-                o.method.c_str(), context->device_info().name.c_str(), o.horizon.directions, grid.width, grid.height,
-                seconds_since(t0), o.no_curvature ? "no" : "with", r.bands, r.bands == 1 ? "" : "s");
-    for (const auto& st : r.stages) std::printf(" %s %.0f", st.label.c_str(), st.ms);
-    std::printf(")\n");
-    return VisibilityResults{std::move(r.horizons), std::move(r.svf), std::move(r.sky_visible), std::move(r.log_sh)};
-}
-#endif
 
 bool is_png(const std::string& path) {
     return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
@@ -140,51 +88,23 @@ void run_visibility(VisibilityOptions& o) {
     const visibility::VisibilityGrid grid(dem);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 
-    const bool want_sh = !o.sh.empty() || !o.log_sh.empty();
-    const bool want_sky = (!o.svf.empty() || !o.sky_visible.empty()) && rule == visibility::WedgeRule::linear;
-    std::optional<VisibilityResults> results;
-#ifdef TERRASHADE_HAS_GPU
-    if (!o.cpu) {
-        if (o.horizon.method == visibility::HorizonMethod::raymarch) {
-            if (o.device)
-                throw InputError("--device: the GPU computes --method exact and pyramid; drop --device or pick one");
-            std::fprintf(stderr, "terrashade: note: --method %s runs on the CPU (the GPU has exact and pyramid)\n",
-                         o.method.c_str());
-        } else {
-            results = run_on_gpu(o, grid.view(), want_sh, want_sky);
-        }
-    }
-#else
-    if (o.device) throw InputError("--device: this terrashade was built without Vulkan (TERRASHADE_BUILD_GPU=OFF)");
-#endif
-    if (!results) {
-        const auto t0 = std::chrono::steady_clock::now();
-        results.emplace();
-        ProgressBar bar("horizons (" + o.method + ")", texels * std::uint64_t(o.horizon.directions), "rays");
-        o.horizon.progress = &bar;
-        results->set = visibility::compute_horizons(grid.view(), o.horizon);
-        o.horizon.progress = nullptr;
-        bar.finish();
-        std::printf("%s horizons on the CPU: %d directions, %dx%d texels, %.3f s (%s curvature)\n", o.method.c_str(),
-                    o.horizon.directions, dem.width, dem.height, seconds_since(t0), o.no_curvature ? "no" : "with");
-    }
-    const visibility::HorizonSet& set = results->set;
-    {
-        // The products the GPU did not compute, in one pass over the horizon planes.
-        visibility::ProductRequest r;
-        r.log_sh = want_sh && results->log_sh.empty();
-        r.svf = !o.svf.empty() && rule == visibility::WedgeRule::linear && results->svf.empty();
-        r.sky_visible = !o.sky_visible.empty() && rule == visibility::WedgeRule::linear && results->sky.empty();
-        r.log_eps = o.log_eps;
-        r.threads = o.horizon.threads;
-        if (r.log_sh || r.svf || r.sky_visible) {
-            const auto t0 = std::chrono::steady_clock::now();
-            results->cpu = visibility::visibility_products(set, r);
-            const std::string what = std::string(r.log_sh ? ", log-SH" : "") + (r.svf ? ", svf" : "") +
-                                     (r.sky_visible ? ", sky_visible" : "");
-            std::printf("%s on the CPU: %.3f s\n", what.c_str() + 2, seconds_since(t0));
-        }
-    }
+    const ComputeDevice device(o.device);
+    visibility::VisibilityRequest request;
+    request.horizon = o.horizon;
+    request.log_sh = !o.sh.empty() || !o.log_sh.empty();
+    request.svf = !o.svf.empty();
+    request.sky_visible = !o.sky_visible.empty();
+    request.wedges = rule;
+    request.log_eps = o.log_eps;
+    ProgressBar bar("horizons (" + o.method + ")", texels * std::uint64_t(o.horizon.directions), "rays");
+    request.horizon.progress = &bar;
+    visibility::VisibilityResult result = device.visibility().compute(grid.view(), request);
+    bar.finish();
+    std::printf("%s horizons: %d directions, %dx%d texels (%s curvature)\n", o.method.c_str(), o.horizon.directions,
+                dem.width, dem.height, o.no_curvature ? "no" : "with");
+    for (const auto& stage : result.stages)
+        std::printf("  %s on %s: %.3f s\n", stage.label.c_str(), stage.path.c_str(), stage.seconds);
+    const visibility::HorizonSet& set = result.horizons;
 
     if (!o.horizons.empty()) {
         std::vector<float> deg(set.angle.size());
@@ -198,21 +118,13 @@ void run_visibility(VisibilityOptions& o) {
         }
         write_raster(o.horizons, dem, set.directions, deg.data(), names);
     }
-    // Constant wedges are not in the one-pass products: per texel.
-    if (!o.svf.empty()) {
-        if (results->svf.empty() && results->cpu.svf.empty())
-            results->svf = visibility::svf_raster(set, rule, o.horizon.threads);
-        const auto svf = computed(results->svf, results->cpu.svf);
-        write_raster(o.svf, dem, 1, svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
-    }
-    if (!o.sky_visible.empty()) {
-        if (results->sky.empty() && results->cpu.sky_visible.empty())
-            results->sky = visibility::sky_visible_raster(set, rule, o.horizon.threads);
-        const auto sky = computed(results->sky, results->cpu.sky_visible);
-        write_raster(o.sky_visible, dem, 1, sky.data(), {"sky_visible: visible fraction of the upper hemisphere"});
-    }
+    if (!o.svf.empty())
+        write_raster(o.svf, dem, 1, result.svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
+    if (!o.sky_visible.empty())
+        write_raster(o.sky_visible, dem, 1, result.sky_visible.data(),
+                     {"sky_visible: visible fraction of the upper hemisphere"});
     if (!o.sh.empty() || !o.log_sh.empty()) {
-        const auto log_sh = computed(results->log_sh, results->cpu.log_sh);  // one of them (want_sh)
+        const std::span<const float> log_sh(result.log_sh);
         std::vector<std::string> names;
         for (int i = 0; i < 16; ++i) {
             const int l = int(std::sqrt(double(i)));
@@ -281,11 +193,7 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--threads", o->horizon.threads, "Worker threads (0 = one per core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 256));
-    cmd->add_flag("--cpu", o->cpu, "Compute on the CPU (the reference path) instead of the Vulkan device");
-    auto* device = cmd->add_option("--device", o->device,
-                    "Vulkan device index as `terrashade devices` lists it (default: the best device; without "
-                    "--device a machine with no Vulkan falls back to the CPU with a warning)");
-    device->excludes("--cpu");
+    add_device_options(*cmd, o->device);
     cmd->callback([o] { run_visibility(*o); });
 }
 

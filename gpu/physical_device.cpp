@@ -126,4 +126,20 @@ const PhysicalDeviceInfo& choose_device(std::span<const PhysicalDeviceInfo> devi
     return devices[*best];
 }
 
+AutoPath choose_auto_path(std::span<const PhysicalDeviceInfo> devices) {
+    const auto best = default_device_index(devices);
+    if (!best) {
+        return {std::nullopt, devices.empty() ? "no Vulkan device found: the CPU path"
+                                              : "no usable Vulkan device (Vulkan 1.1 with a compute queue): the CPU path"};
+    }
+    const PhysicalDeviceInfo& d = devices[*best];
+    const bool gpu = d.type == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU || d.type == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU ||
+                     d.type == VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU;
+    if (gpu) return {*best, std::string(device_type_name(d.type)) + " GPU " + d.name + " (device " +
+                                std::to_string(d.index) + "): the Vulkan path"};
+    return {std::nullopt, "the best Vulkan device, " + d.name + ", is a " + device_type_name(d.type) +
+                              " implementation that runs on the same cores as the CPU path, which is faster there: "
+                              "the CPU path (--device vulkan forces it)"};
+}
+
 }  // namespace ts::gpu

@@ -43,4 +43,14 @@ std::optional<std::uint32_t> default_device_index(std::span<const PhysicalDevice
 const PhysicalDeviceInfo& choose_device(std::span<const PhysicalDeviceInfo> devices,
                                         std::optional<std::uint32_t> requested);
 
+// What `--device auto` runs on: the device default_device_index picks when it is a GPU
+// (discrete, integrated or virtual), else the CPU path (no device): a CPU implementation of
+// Vulkan (lavapipe, llvmpipe, SwiftShader) runs the same cores as the CPU path, and slower.
+// `reason` says why in one sentence, for `terrashade devices` and --verbose.
+struct AutoPath {
+    std::optional<std::uint32_t> device;  // empty: the CPU path
+    std::string reason;
+};
+AutoPath choose_auto_path(std::span<const PhysicalDeviceInfo> devices);
+
 }  // namespace ts::gpu

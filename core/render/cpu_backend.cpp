@@ -5,8 +5,6 @@
 #include <vector>
 
 #include "core/render/render_backend.hpp"
-#include "core/visibility/compute_horizons.hpp"
-#include "core/visibility/horizon_sh.hpp"
 
 namespace ts::render {
 namespace {
@@ -30,17 +28,6 @@ class CpuBackend final : public RenderBackend {
 public:
     explicit CpuBackend(int threads) : threads_(threads) {}
     std::string name() const override { return "cpu"; }
-
-    visibility::HorizonSet horizons_and_log_sh(const terrain::HeightGrid& grid, const visibility::HorizonOptions& options,
-                                               float log_eps, std::vector<float>& log_sh) override {
-        if (options.method != visibility::HorizonMethod::exact)
-            throw std::invalid_argument("RenderBackend::horizons_and_log_sh: exact horizons only");
-        visibility::HorizonOptions o = options;
-        o.threads = threads_;
-        visibility::HorizonSet set = visibility::compute_horizons(grid, o);
-        log_sh = visibility::log_sh_raster(set, log_eps, threads_);
-        return set;
-    }
 
     void transfer_vectors(const TransferInputs& in, float* transfer_out) override {
         TransferInputs with_threads = in;

@@ -1,10 +1,10 @@
 #pragma once
-// Where a FrameRenderer's heavy stages run. core/ knows only this interface: the CPU
-// implementation (cpu_backend()) is the reference; gpu/render provides a Vulkan one
-// (gpu/render/gpu_render_backend.hpp) that the app passes in by default, `--cpu` keeping the CPU.
+// Where the renderer's transfer stages run. core/ knows only this interface: the CPU
+// implementation (make_cpu_backend()) is the reference; gpu/render provides a Vulkan one
+// (gpu/render/gpu_render_backend.hpp). Horizons and log-SH have their own seam
+// (core/visibility/visibility_backend.hpp).
 //
-//   one-time:  horizons + log-SH            -> horizons_and_log_sh
-//              transfer vectors T            -> transfer_vectors
+//   one-time:  transfer vectors T            -> transfer_vectors
 //              T kept for per-frame shading  -> keep_transfer
 //   per frame: rgb_t = sum_i T_i,t L_i        -> ShadeField::shade
 //
@@ -18,9 +18,6 @@
 #include <glm/vec3.hpp>
 
 #include "core/render/transfer.hpp"
-#include "core/terrain/height_grid.hpp"
-#include "core/visibility/horizon_options.hpp"
-#include "core/visibility/horizon_set.hpp"
 
 namespace ts::render {
 
@@ -38,18 +35,13 @@ public:
     virtual ~RenderBackend() = default;
     // "cpu" or the Vulkan device's name, for logs and bench output.
     virtual std::string name() const = 0;
-    // Exact horizons (options.method must be exact) and the log-SH visibility [16][texels] with
-    // log epsilon log_eps, as compute_horizons + log_sh_raster.
-    virtual visibility::HorizonSet horizons_and_log_sh(const terrain::HeightGrid& grid,
-                                                       const visibility::HorizonOptions& options, float log_eps,
-                                                       std::vector<float>& log_sh) = 0;
     // As render::transfer_vectors (in.method: at least hybrid and scaling_squaring).
     virtual void transfer_vectors(const TransferInputs& in, float* transfer_out) = 0;
     // Keeps a copy of T ([16][texels], as transfer_vectors writes it) for per-frame shading.
     virtual std::unique_ptr<ShadeField> keep_transfer(const float* transfer, std::size_t texels) = 0;
 };
 
-// The CPU reference backend (compute_horizons, log_sh_raster, transfer_vectors, shade_transfer)
+// The CPU reference backend (transfer_vectors, shade_transfer)
 // with `threads` workers (0 = one per core).
 std::unique_ptr<RenderBackend> make_cpu_backend(int threads = 0);
 

@@ -23,25 +23,18 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-// Bilinear resampling of a texel raster to w x h (texel centres aligned like GDAL's -ts).
-void resample(const std::vector<glm::vec3>& src, int sw, int sh, int w, int h, std::vector<glm::vec3>& out) {
-    out.resize(std::size_t(w) * h);
-    for (int j = 0; j < h; ++j) {
-        const double y = std::clamp((j + 0.5) * sh / h - 0.5, 0.0, double(sh - 1));
-        const int y0 = std::min(int(y), sh - 1), y1 = std::min(y0 + 1, sh - 1);
-        const float fy = float(y - y0);
-        for (int i = 0; i < w; ++i) {
-            const double x = std::clamp((i + 0.5) * sw / w - 0.5, 0.0, double(sw - 1));
-            const int x0 = std::min(int(x), sw - 1), x1 = std::min(x0 + 1, sw - 1);
-            const float fx = float(x - x0);
-            auto at = [&](int c, int r) { return src[std::size_t(r) * sw + c]; };
-            out[std::size_t(j) * w + i] =
-                (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
-        }
-    }
-}
-
 }  // namespace
+
+geo::Georef extent_georef(const ExtentRequest& e, const geo::Georef& dem_georef) {
+    if (!(e.x1 > e.x0 && e.y1 > e.y0) || !std::isfinite(e.x0 + e.x1 + e.y0 + e.y1))
+        throw InputError("--extent: give XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
+    if (e.width < 1 || e.height < 1) throw InputError("--extent: the picture needs at least 1x1 pixels");
+    const std::shared_ptr<const geo::Crs> crs = e.crs.empty() ? dem_georef.crs_ptr() : geo::Crs::from_definition(e.crs);
+    geo::GeoTransform t;
+    t.x0 = e.x0, t.dx_col = (e.x1 - e.x0) / e.width, t.dx_row = 0;
+    t.y0 = e.y1, t.dy_col = 0, t.dy_row = -(e.y1 - e.y0) / e.height;
+    return geo::Georef(e.width, e.height, t, crs, true);
+}
 
 Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), options_(options) {
     grid_ = std::make_unique<terrain::HeightGrid>(terrain::metric_view(dem_));
@@ -55,16 +48,40 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
     }
     if (!options_.albedo.empty()) apply_albedo(materials, read_orthophoto_albedo(options_.albedo, dem_.georef));
 
-    ViewDirections view;
-    if (options_.view == ViewKind::perspective) {
-        camera_ = options_.camera ? *options_.camera : default_camera(*grid_, dem_.georef);
-        PerspectiveOptions po = options_.perspective;
-        po.curvature = options_.renderer.curvature;
-        po.threads = options_.renderer.threads;
-        perspective_ = std::make_unique<PerspectiveView>(*grid_, dem_.georef, *camera_, po);
-        view.per_texel = perspective_->view_directions();
+    // The target first: a camera below the terrain or an extent off the DEM is found before
+    // the visibility is computed.
+    switch (options_.view) {
+        case ViewKind::map:
+            target_ = std::make_unique<GridTarget>(dem_.georef, options_.map_width, options_.map_height);
+            break;
+        case ViewKind::extent: {
+            if (!options_.extent) throw InputError("render: an extent view needs an extent");
+            auto extent = std::make_unique<ExtentTarget>(dem_, extent_georef(*options_.extent, dem_.georef),
+                                                         options_.renderer.threads);
+            if (extent->covered_pixels() == 0)
+                throw InputError("--extent: the extent does not overlap the DEM (check the bounds and --extent-crs)");
+            target_ = std::move(extent);
+            break;
+        }
+        case ViewKind::perspective: {
+            PerspectiveOptions po = options_.perspective;
+            po.curvature = options_.renderer.curvature;
+            po.threads = options_.renderer.threads;
+            target_ = std::make_unique<CameraTarget>(
+                *grid_, dem_.georef, options_.camera ? *options_.camera : default_camera(*grid_, dem_.georef), po);
+            break;
+        }
     }
-    renderer_ = std::make_unique<FrameRenderer>(*grid_, std::move(materials), std::move(normals), view, options_.renderer);
+    state_ = compute_shading_state(*grid_, std::move(materials), std::move(normals), options_.renderer);
+    view_ = compute_view_shading(*state_, target_->view_directions());
+    renderer_ = std::make_unique<FrameRenderer>(*state_, view_);
+}
+
+Scene::~Scene() = default;
+
+const Camera* Scene::camera() const {
+    const auto* c = dynamic_cast<const CameraTarget*>(target_.get());
+    return c ? &c->camera() : nullptr;
 }
 
 SunState Scene::sun_at(light::UtcTime time) const {
@@ -87,30 +104,17 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     const glm::dvec3 s = sun_direction(sun);
     // An HDR map does not change with the sun: read it once.
     if (!sky_ || options_.sky.kind != light::SkyOptions::Kind::hdr) sky_ = light::make_sky(options_.sky, s);
-    const bool resampled =
-        options_.map_width > 0 && (options_.map_width != grid_->width || options_.map_height != grid_->height);
-    if (!perspective_ && !resampled) {
+    if (target_->is_texel_grid()) {
         // A map on the DEM grid is the texels themselves: render straight into the picture
         // (a 500x500 frame's copy is 3 MB, ~0.3 ms of a ~5 ms frame).
         renderer_->render(*sky_, sun, image.rgb);
         image.width = grid_->width;
         image.height = grid_->height;
+        image.alpha.clear();
         return;
     }
     renderer_->render(*sky_, sun, texel_radiance_);
-    if (perspective_) {
-        sky_table_.update(*sky_);
-        const light::SunDisc disc = sky_->sun();
-        const double r = disc.angular_radius_rad;
-        const glm::vec3 sun_radiance = disc.irradiance / float(std::numbers::pi * r * r);
-        perspective_->compose(texel_radiance_.data(), sky_table_, glm::vec3(s), sun_radiance, std::cos(r), image.rgb);
-        image.width = perspective_->width();
-        image.height = perspective_->height();
-        return;
-    }
-    resample(texel_radiance_, grid_->width, grid_->height, options_.map_width, options_.map_height, image.rgb);
-    image.width = options_.map_width;
-    image.height = options_.map_height;
+    target_->compose(texel_radiance_, *sky_, image);
 }
 
 void check_image_extension(const std::string& path) {
@@ -120,19 +124,42 @@ void check_image_extension(const std::string& path) {
 }
 
 double image_exposure_scale(const LinearImage& image, const Exposure& exposure) {
-    return exposure_scale(exposure, exposure.automatic ? log_average_luminance(image.rgb.data(), image.rgb.size()) : 0.0);
+    if (!exposure.automatic) return exposure_scale(exposure, 0.0);
+    if (image.alpha.empty()) return exposure_scale(exposure, log_average_luminance(image.rgb.data(), image.rgb.size()));
+    std::vector<glm::vec3> covered;
+    for (std::size_t k = 0; k < image.rgb.size(); ++k)
+        if (image.alpha[k]) covered.push_back(image.rgb[k]);
+    return exposure_scale(exposure, log_average_luminance(covered.data(), covered.size()));
 }
 
 double write_image(const std::string& path, const LinearImage& image, const Exposure& exposure,
                    const geo::Georef* georef) {
     check_image_extension(path);
     const std::string ext = lower_extension(path);
+    const bool rgba = !image.alpha.empty();
     if (ext == ".exr") {
-        raster::write_float_image_exr(path, image.width, image.height, 3, &image.rgb[0].x, true);
+        if (!rgba) {
+            raster::write_float_image_exr(path, image.width, image.height, 3, &image.rgb[0].x, true);
+        } else {
+            std::vector<float> px(image.rgb.size() * 4);
+            for (std::size_t k = 0; k < image.rgb.size(); ++k) {
+                px[4 * k] = image.rgb[k].x, px[4 * k + 1] = image.rgb[k].y, px[4 * k + 2] = image.rgb[k].z;
+                px[4 * k + 3] = image.alpha[k] / 255.0f;
+            }
+            raster::write_float_image_exr(path, image.width, image.height, 4, px.data(), true);
+        }
         return 1.0;
     }
     const double scale = image_exposure_scale(image, exposure);
-    const auto bytes = tone_map_to_srgb8(image.rgb.data(), image.rgb.size(), scale);
+    std::vector<std::uint8_t> bytes = tone_map_to_srgb8(image.rgb.data(), image.rgb.size(), scale);
+    if (rgba) {
+        std::vector<std::uint8_t> with_alpha(image.rgb.size() * 4);
+        for (std::size_t k = 0; k < image.rgb.size(); ++k) {
+            for (int c = 0; c < 3; ++c) with_alpha[4 * k + c] = image.alpha[k] ? bytes[3 * k + c] : 0;
+            with_alpha[4 * k + 3] = image.alpha[k];
+        }
+        bytes = std::move(with_alpha);
+    }
     const geo::Georef* geo = ext == ".png" ? nullptr : georef;
     geo::Georef scaled;
     if (geo && (geo->width() != image.width || geo->height() != image.height)) {
@@ -142,7 +169,7 @@ double write_image(const std::string& path, const LinearImage& image, const Expo
         scaled = geo::Georef(image.width, image.height, t, geo->crs_ptr(), geo->pixel_is_area());
         geo = &scaled;
     }
-    raster::write_u8_image(path, image.width, image.height, 3, bytes.data(), geo);
+    raster::write_u8_image(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), geo);
     return scale;
 }
 

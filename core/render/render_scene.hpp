@@ -1,7 +1,7 @@
 #pragma once
 // Everything `render`, `relight` and `bench relight` share: a DEM turned once into normals,
-// materials, visibility and transfer vectors (and camera rays for a perspective view), then
-// frames for any number of sun positions and skies.
+// materials, visibility and transfer vectors (shading_state.hpp), a target (render_target.hpp),
+// then frames for any number of sun positions and skies.
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,13 +15,29 @@
 #include "core/render/frame_renderer.hpp"
 #include "core/render/material.hpp"
 #include "core/render/perspective_view.hpp"
+#include "core/render/render_target.hpp"
+#include "core/render/shading_state.hpp"
 #include "core/render/sky_table.hpp"
+#include "core/render/view_shading.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {
 
-enum class ViewKind { map, perspective };
+// A georeferenced extent to render: [x0, x1] x [y0, y1] in `crs` (EPSG:3857, a PROJ string,
+// WKT; empty = the DEM's CRS), north up, width x height pixels.
+struct ExtentRequest {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    std::string crs;
+    int width = 512, height = 512;
+};
+// The extent's georef (pixel-is-area, north up). Throws ts::InputError for an empty extent or
+// an unknown CRS.
+geo::Georef extent_georef(const ExtentRequest& extent, const geo::Georef& dem_georef);
+
+// map: the DEM grid (or resampled to map_width x map_height); extent: a georeferenced extent in
+// any CRS (SceneOptions::extent); perspective: a camera.
+enum class ViewKind { map, extent, perspective };
 
 struct SceneOptions {
     std::string materials = "rule";  // "rule" or a WorldCover GeoTIFF
@@ -34,34 +50,35 @@ struct SceneOptions {
     PerspectiveOptions perspective;
     // Map: output size (0 = the DEM grid); the texels are resampled bilinearly.
     int map_width = 0, map_height = 0;
+    // Extent: the picture's bounds in a CRS (empty: the DEM's) and its size in pixels.
+    std::optional<ExtentRequest> extent;
 };
 
-// A linear RGB picture (the sky's units).
-struct LinearImage {
-    int width = 0, height = 0;
-    std::vector<glm::vec3> rgb;
-};
-
+// A DEM made ready for frames: the view-independent shading state (computed once), one
+// target and the view shading it needs, and a frame renderer; then frames for any number of
+// sun positions and skies.
 class Scene {
 public:
-    // The Dem (voids filled, void_mask kept) must outlive the scene.
+    // The Dem (voids filled, void_mask kept) must outlive the scene. Computes the shading state.
     Scene(const dem::Dem& dem, const SceneOptions& options);
+    ~Scene();
 
     // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.
     SunState sun_at(light::UtcTime time) const;
 
     // Renders one frame: the sky from options.sky for this sun, per-texel radiance, then the
-    // view. `image` keeps its storage from frame to frame.
+    // target's picture. `image` keeps its storage from frame to frame.
     void render(const SunState& sun, LinearImage& image);
     // The sky of the last frame (for its description).
     const light::Sky* last_sky() const { return sky_.get(); }
 
+    const ShadingState& state() const { return *state_; }
     const FrameRenderer& renderer() const { return *renderer_; }
-    FrameRenderer& renderer() { return *renderer_; }
+    const RenderTarget& target() const { return *target_; }
     const terrain::HeightGrid& grid() const { return *grid_; }
-    const Camera* camera() const { return camera_ ? &*camera_ : nullptr; }
-    // The per-texel radiance of the last frame of a perspective view or a resampled map (a map on
-    // the DEM grid is rendered straight into the image: there it is the image's rgb).
+    const Camera* camera() const;
+    // The per-texel radiance of the last frame (a map on the DEM grid is rendered straight into
+    // the image: there it is the image's rgb, and this is empty).
     const std::vector<glm::vec3>& texel_radiance() const { return texel_radiance_; }
     const SceneOptions& options() const { return options_; }
 
@@ -69,20 +86,21 @@ private:
     const dem::Dem& dem_;
     SceneOptions options_;
     std::unique_ptr<terrain::HeightGrid> grid_;
+    std::unique_ptr<ShadingState> state_;
+    std::unique_ptr<RenderTarget> target_;
+    ViewShading view_;
     std::unique_ptr<FrameRenderer> renderer_;
-    std::optional<Camera> camera_;
-    std::unique_ptr<PerspectiveView> perspective_;
     std::unique_ptr<light::Sky> sky_;
-    SkyTable sky_table_{256, 128};
     std::vector<glm::vec3> texel_radiance_;
 };
 
 // Writes a picture by extension: .png / .tif / .tiff (8-bit sRGB after exposure and the
-// filmic curve; a .tif of a map view is georeferenced with `georef`), .exr (linear, no tone
-// mapping). Atomic. Returns the exposure scale used (1 for EXR).
+// filmic curve; a .tif of a map view is georeferenced with `georef`, whose size may differ from
+// the image's: it is scaled), .exr (linear, no tone mapping). With alpha: RGBA. Atomic.
+// Returns the exposure scale used (1 for EXR).
 double write_image(const std::string& path, const LinearImage& image, const Exposure& exposure,
                    const geo::Georef* georef);
-// The exposure scale an image gets (auto: from its log-average luminance).
+// The exposure scale an image gets (auto: from the log-average luminance of its covered pixels).
 double image_exposure_scale(const LinearImage& image, const Exposure& exposure);
 // Checks the extension before any work; throws ts::InputError naming the path.
 void check_image_extension(const std::string& path);

@@ -4,7 +4,6 @@
 
 #include "core/util/error.hpp"
 #include "gpu/render/gpu_transfer.hpp"
-#include "gpu/visibility/gpu_visibility.hpp"
 
 namespace ts::gpu::render {
 namespace {
@@ -30,22 +29,6 @@ public:
         : context_(context), options_(options), kernels_(std::make_shared<const TransferKernels>(context)) {}
 
     std::string name() const override { return context_.device_info().name; }
-
-    ts::visibility::HorizonSet horizons_and_log_sh(const terrain::HeightGrid& grid,
-                                                   const ts::visibility::HorizonOptions& options, float log_eps,
-                                                   std::vector<float>& log_sh) override {
-        if (options.method != ts::visibility::HorizonMethod::exact)
-            throw InputError("the GPU computes exact horizons only (use --cpu)");
-        visibility::Options go;
-        go.horizon = options;
-        go.log_eps = log_eps;
-        go.log_sh = true;
-        go.sky = false;  // the renderer needs no svf / sky_visible
-        go.max_band_rows = options_.max_band_rows;
-        visibility::Result r = visibility::compute(context_, grid, go);
-        log_sh = std::move(r.log_sh);
-        return std::move(r.horizons);
-    }
 
     void transfer_vectors(const ts::render::TransferInputs& in, float* transfer_out) override {
         TransferField field(context_, in, options_.max_band_texels, kernels_);

@@ -1,7 +1,6 @@
 #pragma once
-// The Vulkan RenderBackend (core/render/render_backend.hpp): what FrameRenderer computes once
-// and shades per frame, on a gpu::Context.
-//   horizons + log-SH   gpu::visibility::compute (exact sweep, log-SH; no svf/sky)
+// The Vulkan RenderBackend (core/render/render_backend.hpp): the transfer computed once and the
+// sky shaded per frame, on a gpu::Context.
 //   transfer vectors    gpu::render::TransferField (hybrid or scaling_squaring), T downloaded
 //   per-frame shading   T uploaded once and kept on the device; render_shade.comp's dispatches
 //                       recorded once (gpu/render/shade_recording.hpp) and re-submitted each
@@ -20,14 +19,12 @@
 namespace ts::gpu::render {
 
 struct GpuBackendOptions {
-    // Upper bounds for tests (0 = the device's limits): texels per band of T, and rows of
-    // receivers per band of the visibility pass.
+    // Upper bound for tests (0 = the device's limits): texels per band of T.
     std::size_t max_band_texels = 0;
-    int max_band_rows = 0;
 };
 
-// Throws ts::InputError when a stage is asked for what the GPU does not run (a horizon method
-// other than exact, an exponentiation other than hybrid or scaling_squaring).
+// Throws ts::InputError when a stage is asked for what the GPU does not run (an exponentiation
+// other than hybrid or scaling_squaring).
 std::unique_ptr<ts::render::RenderBackend> make_gpu_backend(const Context& context,
                                                             const GpuBackendOptions& options = {});
 

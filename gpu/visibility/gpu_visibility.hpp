@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"
+#include "core/util/uninitialised_vector.hpp"
 #include "core/visibility/horizon_options.hpp"
 #include "core/visibility/horizon_set.hpp"
 #include "core/visibility/horizon_sh.hpp"
@@ -48,9 +49,9 @@ struct StageTime {
 
 struct Result {
     ts::visibility::HorizonSet horizons;  // as compute_horizons (NaN for void receivers)
-    std::vector<float> log_sh;            // as log_sh_raster: [coefficient][texel]; empty unless asked
-    std::vector<float> svf;               // as svf_raster; empty unless asked
-    std::vector<float> sky_visible;       // as sky_visible_raster; empty unless asked
+    UninitialisedVector<float> log_sh;    // as log_sh_raster: [coefficient][texel]; empty unless asked
+    UninitialisedVector<float> svf;       // as svf_raster; empty unless asked
+    UninitialisedVector<float> sky_visible;  // as sky_visible_raster; empty unless asked
     std::vector<StageTime> stages;        // upload, horizons, log_sh, sky, download
     double wall_ms = 0;                   // submit to results, all bands
     int bands = 0;

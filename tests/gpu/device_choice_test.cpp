@@ -73,5 +73,28 @@ TEST(DeviceChoice, NoUsableDeviceNamesThePackageToInstall) {
     }
 }
 
+// --device auto: a GPU of any kind takes the Vulkan path; a CPU implementation (lavapipe) or
+// nothing usable takes the CPU path, and the reason says which.
+TEST(DeviceChoice, AutoTakesAGpuAndLeavesCpuImplementationsForTheCpuPath) {
+    for (VkPhysicalDeviceType type : {VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU,
+                                      VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU}) {
+        const std::vector<PhysicalDeviceInfo> devices = {fake(0, VK_PHYSICAL_DEVICE_TYPE_CPU), fake(1, type)};
+        const AutoPath p = choose_auto_path(devices);
+        ASSERT_TRUE(p.device.has_value()) << p.reason;
+        EXPECT_EQ(*p.device, 1u);
+        EXPECT_NE(p.reason.find("the Vulkan path"), std::string::npos) << p.reason;
+    }
+    const std::vector<PhysicalDeviceInfo> lavapipe = {fake(0, VK_PHYSICAL_DEVICE_TYPE_CPU)};
+    const AutoPath cpu = choose_auto_path(lavapipe);
+    EXPECT_FALSE(cpu.device.has_value());
+    EXPECT_NE(cpu.reason.find("the CPU path"), std::string::npos) << cpu.reason;
+    EXPECT_NE(cpu.reason.find("device 0"), std::string::npos) << cpu.reason;  // names the device
+    const std::vector<PhysicalDeviceInfo> broken_gpu = {
+        fake(0, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "has no compute queue"), fake(1, VK_PHYSICAL_DEVICE_TYPE_CPU)};
+    EXPECT_FALSE(choose_auto_path(broken_gpu).device.has_value());
+    EXPECT_FALSE(choose_auto_path({}).device.has_value());
+    EXPECT_NE(choose_auto_path({}).reason.find("the CPU path"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ts::gpu

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -26,6 +27,7 @@
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "gpu/render/gpu_render_backend.hpp"
+#include "gpu/visibility/gpu_visibility_backend.hpp"
 #include "tests/gpu/horizon_agreement.hpp"
 #include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
@@ -78,17 +80,15 @@ vis::HorizonOptions horizon_options() {
 }
 
 // The CPU's horizons and log-SH of the crop, computed once for the whole file.
-struct CpuVisibility {
-    vis::HorizonSet horizons;
-    std::vector<float> log_sh;
-};
-const CpuVisibility& cpu_visibility() {
-    static const CpuVisibility v = [] {
-        CpuVisibility r;
-        r.horizons = cr::make_cpu_backend()->horizons_and_log_sh(grenoble_crop().grid, horizon_options(),
-                                                                  vis::kDefaultVisibilityLogEps, r.log_sh);
-        return r;
-    }();
+vis::VisibilityRequest log_sh_request(const vis::HorizonOptions& horizon) {
+    vis::VisibilityRequest r;
+    r.horizon = horizon;
+    r.log_sh = true;
+    return r;
+}
+const vis::VisibilityResult& cpu_visibility() {
+    static const vis::VisibilityResult v =
+        vis::make_cpu_visibility_backend()->compute(grenoble_crop().grid, log_sh_request(horizon_options()));
     return v;
 }
 
@@ -113,7 +113,7 @@ Lobes lobes_of(const terrain::HeightGrid& g) {
     return l;
 }
 
-cr::TransferInputs transfer_inputs(const Lobes& l, const std::vector<float>& log_sh, bool phong, sh::ExpMethod m) {
+cr::TransferInputs transfer_inputs(const Lobes& l, std::span<const float> log_sh, bool phong, sh::ExpMethod m) {
     cr::TransferInputs in;
     in.texels = l.normal.size() / 3;
     in.log_visibility = log_sh.data();
@@ -133,11 +133,14 @@ using GpuRenderBackendTest = test_support::ValidatedTest;
 
 TEST_F(GpuRenderBackendTest, HorizonsAndLogShMatchTheCpuBackend) {
     const terrain::GridCrop& c = grenoble_crop();
-    const CpuVisibility& cpu = cpu_visibility();
-    const auto gpu_backend = render::make_gpu_backend(*context_);
+    const vis::VisibilityResult& cpu = cpu_visibility();
+    const auto gpu_backend = gpu::visibility::make_gpu_visibility_backend(*context_);
     EXPECT_EQ(gpu_backend->name(), context_->device_info().name);
-    std::vector<float> log_sh;
-    const vis::HorizonSet h = gpu_backend->horizons_and_log_sh(c.grid, horizon_options(), vis::kDefaultVisibilityLogEps, log_sh);
+    const vis::VisibilityResult r = gpu_backend->compute(c.grid, log_sh_request(horizon_options()));
+    EXPECT_EQ(r.path(), context_->device_info().name);
+    EXPECT_TRUE(r.svf.empty());
+    const vis::HorizonSet& h = r.horizons;
+    const auto& log_sh = r.log_sh;
     ASSERT_EQ(h.angle.size(), cpu.horizons.angle.size());
     ASSERT_EQ(log_sh.size(), cpu.log_sh.size());
     const std::size_t texels = cpu.horizons.texels();
@@ -162,14 +165,25 @@ TEST_F(GpuRenderBackendTest, HorizonsAndLogShMatchTheCpuBackend) {
     EXPECT_LE(double(flips), kFlipFraction * double(h.angle.size()));
     EXPECT_LE(worst_sh, kLogShTol);
 
-    vis::HorizonOptions pyramid = horizon_options();
-    pyramid.method = vis::HorizonMethod::pyramid;
-    EXPECT_THROW(gpu_backend->horizons_and_log_sh(c.grid, pyramid, vis::kDefaultVisibilityLogEps, log_sh), InputError);
+    // What the device does not run is computed on the CPU, and the stages say so.
+    vis::HorizonOptions raymarch = horizon_options();
+    raymarch.method = vis::HorizonMethod::raymarch;
+    raymarch.directions = 4;
+    vis::VisibilityRequest constant = log_sh_request(horizon_options());
+    constant.svf = true;
+    constant.wedges = vis::WedgeRule::constant;
+    const vis::VisibilityResult rm = gpu_backend->compute(c.grid, log_sh_request(raymarch));
+    EXPECT_EQ(rm.path(), "cpu");
+    const vis::VisibilityResult cw = gpu_backend->compute(c.grid, constant);
+    ASSERT_EQ(cw.stages.size(), 2u);
+    EXPECT_EQ(cw.stages[0].path, context_->device_info().name);
+    EXPECT_EQ(cw.stages[1].path, "cpu");
+    EXPECT_EQ(cw.svf.size(), cw.horizons.texels());
 }
 
 TEST_F(GpuRenderBackendTest, TransferVectorsMatchTheCpuBackendForHybridAndScalingSquaring) {
     const terrain::GridCrop& c = grenoble_crop();
-    const CpuVisibility& cpu = cpu_visibility();
+    const vis::VisibilityResult& cpu = cpu_visibility();
     const Lobes lobes = lobes_of(c.grid);
     const auto gpu_backend = render::make_gpu_backend(*context_);
     const auto cpu_backend = cr::make_cpu_backend();
@@ -197,7 +211,7 @@ TEST_F(GpuRenderBackendTest, SharedScalingSquaringEqualsCoreShWithinRounding) {
     // The shared text (which both the CPU transfer and the shader run) against sh_exp.cpp's
     // exp_scaling_squaring, on the crop's real exponents: V alone and V + the diffuse lobe
     // about the zenith (its ZH at the m = 0 entries).
-    const CpuVisibility& cpu = cpu_visibility();
+    const vis::VisibilityResult& cpu = cpu_visibility();
     const Lobes lobes = lobes_of(grenoble_crop().grid);
     const std::size_t texels = cpu.horizons.texels();
     const sh::ExpOptions o;
@@ -234,7 +248,7 @@ TEST_F(GpuRenderBackendTest, SharedScalingSquaringEqualsCoreShWithinRounding) {
 
 TEST_F(GpuRenderBackendTest, KeptTransferShadesAsTheCpuBackendAndBandsJoin) {
     const terrain::GridCrop& c = grenoble_crop();
-    const CpuVisibility& cpu = cpu_visibility();
+    const vis::VisibilityResult& cpu = cpu_visibility();
     const Lobes lobes = lobes_of(c.grid);
     cr::TransferInputs in = transfer_inputs(lobes, cpu.log_sh, false, sh::ExpMethod::scaling_squaring);
     std::vector<float> t(16 * in.texels);
@@ -283,18 +297,31 @@ TEST_F(GpuRenderBackendTest, FramesMatchTheCpuPaths) {
     const cr::NormalField normals = cr::terrain_normals(c.grid);
     const cr::MaterialRaster materials = cr::rule_materials(c.grid, normals, cr::MaterialRule{});
     const auto gpu_backend = render::make_gpu_backend(*context_);
-    const auto banded_backend = render::make_gpu_backend(*context_, {.max_band_texels = 2000, .max_band_rows = 20});
+    const auto banded_backend = render::make_gpu_backend(*context_, {.max_band_texels = 2000});
+    const auto gpu_visibility = gpu::visibility::make_gpu_visibility_backend(*context_);
+    const auto banded_visibility = gpu::visibility::make_gpu_visibility_backend(*context_, {.max_band_rows = 20});
     const auto cpu_backend = cr::make_cpu_backend();
     cr::RendererOptions o;  // the defaults: scaling_squaring, band correction
-    auto make = [&](cr::RenderBackend* b) {
+    struct Renderer {
+        std::unique_ptr<cr::ShadingState> state;
+        cr::ViewShading view;
+        std::unique_ptr<cr::FrameRenderer> frame;
+        cr::FrameRenderer* operator->() const { return frame.get(); }
+    };
+    auto make = [&](cr::RenderBackend* b, vis::VisibilityBackend* v) {
         cr::RendererOptions ob = o;
         ob.backend = b;
-        return std::make_unique<cr::FrameRenderer>(c.grid, materials, normals, cr::ViewDirections{}, ob);
+        ob.visibility = v;
+        Renderer r;
+        r.state = cr::compute_shading_state(c.grid, materials, normals, ob);
+        r.view = cr::compute_view_shading(*r.state, {});
+        r.frame = std::make_unique<cr::FrameRenderer>(*r.state, r.view);
+        return r;
     };
-    const auto on_gpu = make(gpu_backend.get());
-    const auto on_gpu_banded = make(banded_backend.get());
-    const auto on_cpu_backend = make(cpu_backend.get());
-    const auto on_cpu_fused = make(nullptr);
+    const auto on_gpu = make(gpu_backend.get(), gpu_visibility.get());
+    const auto on_gpu_banded = make(banded_backend.get(), banded_visibility.get());
+    const auto on_cpu_backend = make(cpu_backend.get(), nullptr);
+    const auto on_cpu_fused = make(nullptr, nullptr);
     for (const cr::SunState sun : {cr::SunState{135.0, 25.0}, cr::SunState{250.0, 8.0}}) {
         const auto sky = light::make_sky(light::SkyOptions{}, cr::sun_direction(sun));
         std::vector<glm::vec3> g, gb, b, f;

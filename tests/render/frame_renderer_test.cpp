@@ -7,9 +7,23 @@
 
 #include "core/render/frame_renderer.hpp"
 #include "core/render/render_backend.hpp"
+#include "core/visibility/visibility_backend.hpp"
 
 namespace ts::render {
 namespace {
+
+// The view-independent state, one view's shading and a frame renderer, as a Scene holds them.
+struct Renderer {
+    std::unique_ptr<ShadingState> state;
+    ViewShading view;
+    std::unique_ptr<FrameRenderer> frame;
+    Renderer(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
+             const ViewDirections& directions, const RendererOptions& options)
+        : state(compute_shading_state(grid, std::move(materials), std::move(normals), options)),
+          view(compute_view_shading(*state, directions)),
+          frame(std::make_unique<FrameRenderer>(*state, view)) {}
+    FrameRenderer* operator->() const { return frame.get(); }
+};
 
 // A test sky: uniform radiance L over the upper hemisphere, black below, and a sun disc of
 // the given irradiance (0 = no sun).
@@ -60,11 +74,11 @@ TEST(FrameRenderer, FlatPlaneUnderUniformSkyGivesAlbedoTimesL) {
     Terrain t(16, 16, 500.0f);
     RendererOptions o = small_options();
     o.band_correction = false;  // the raw log-SH pipeline; the corrected one is tested below
-    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, o);
+    Renderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, o);
     const SunState sun{180.0, 40.0};
     const UniformSky sky(2.0f, sun_direction(sun), 0.0f);
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     ASSERT_EQ(out.size(), 256u);
     // Exact: albedo * E / pi = albedo * L = 0.6. The log-SH pipeline (order-4 SH of the
     // visibility and of the clamped cosine, log floors eps_v = 0.1 and eps_brdf = 0.05,
@@ -93,26 +107,26 @@ private:
 
 TEST(FrameRenderer, BandCorrectionMakesAnOpenPlaneExact) {
     Terrain t(16, 16, 500.0f);
-    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
+    Renderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
     const SunState sun{180.0, 40.0};
     const ZenithSky sky(1.0f, 1.5f, sun_direction(sun));
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     const float expected = 0.3f * (1.0f + 2.0f * 1.5f / 3.0f);
     for (const auto& c : out) EXPECT_NEAR(c.x, expected, expected * 0.01f);
 }
 
 TEST(FrameRenderer, SunOnAFlatPlaneIsLambertExactly) {
     Terrain t(12, 12, 100.0f);
-    FrameRenderer r(t.grid, t.grey(0.25f), terrain_normals(t.grid), {}, small_options());
+    Renderer r(t.grid, t.grey(0.25f), terrain_normals(t.grid), {}, small_options());
     const SunState sun{135.0, 30.0};
     const UniformSky sky(0.0f, sun_direction(sun), 100.0f);
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     // No sky light; sun fully visible: L = albedo/pi * E * sin(elevation). Only float rounding.
     const float expected = float(0.25 / std::numbers::pi * 100.0 * 0.5);
     for (std::size_t i = 0; i < out.size(); ++i) {
-        EXPECT_NEAR(r.sun_visibility()[i], 1.0f, 1e-6f) << i;
+        EXPECT_NEAR(r->sun_visibility()[i], 1.0f, 1e-6f) << i;
         EXPECT_NEAR(out[i].x, expected, expected * 1e-4f) << i;
     }
 }
@@ -125,12 +139,12 @@ TEST(FrameRenderer, AWallShadowsTheTexelsBehindIt) {
     t.grid = terrain::HeightGrid::uniform(t.w, t.h, t.z, 30, 30);
     MaterialRaster m = t.grey(0.5f);
     std::fill(m.water.begin(), m.water.end(), 0);  // height 0 would be sea: keep it land
-    FrameRenderer r(t.grid, std::move(m), terrain_normals(t.grid), {}, small_options());
+    Renderer r(t.grid, std::move(m), terrain_normals(t.grid), {}, small_options());
     const SunState sun{180.0, 30.0};
     const UniformSky sky(0.0f, sun_direction(sun), 100.0f);
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
-    const auto vis = [&](int row) { return r.sun_visibility()[std::size_t(row * t.w + 10)]; };
+    r->render(sky, sun, out);
+    const auto vis = [&](int row) { return r->sun_visibility()[std::size_t(row * t.w + 10)]; };
     EXPECT_NEAR(vis(13), 1.0f, 1e-3f);  // south of the wall: lit
     EXPECT_NEAR(vis(15), 1.0f, 1e-3f);
     EXPECT_NEAR(vis(9), 0.0f, 1e-3f);   // 1..3 texels north (30..90 m < 104 m): shadowed
@@ -143,13 +157,13 @@ TEST(FrameRenderer, AWallShadowsTheTexelsBehindIt) {
 
 TEST(FrameRenderer, SunBelowHorizonGivesSkyOnly) {
     Terrain t(8, 8, 100.0f);
-    FrameRenderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
+    Renderer r(t.grid, t.grey(0.3f), terrain_normals(t.grid), {}, small_options());
     const SunState sun{90.0, -5.0};
     const UniformSky sky(1.0f, sun_direction(sun), 50.0f);
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     for (std::size_t i = 0; i < out.size(); ++i) {
-        EXPECT_EQ(r.sun_visibility()[i], 0.0f);
+        EXPECT_EQ(r->sun_visibility()[i], 0.0f);
         EXPECT_NEAR(out[i].x, 0.3f, 0.3f * 0.05f);  // the sky alone, as in the uniform-sky test (5%)
     }
 }
@@ -160,12 +174,12 @@ TEST(FrameRenderer, WaterMirrorsTheSkyWithFresnel) {
     Terrain t(8, 8, 0.0f);
     MaterialRaster m = rule_materials(t.grid, terrain_normals(t.grid));
     ASSERT_EQ(m.water[0], 1);
-    FrameRenderer r(t.grid, std::move(m), terrain_normals(t.grid), {}, small_options());
-    EXPECT_EQ(r.water_texels(), 64u);
+    Renderer r(t.grid, std::move(m), terrain_normals(t.grid), {}, small_options());
+    EXPECT_EQ(r.state->water_index().size(), 64u);
     const SunState sun{180.0, 40.0};
     const UniformSky sky(10.0f, sun_direction(sun), 0.0f);
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     const double f0 = std::pow((1.333 - 1) / (1.333 + 1), 2);
     const double expected = f0 * 10.0 + (1 - f0) * kWaterAlbedo * 10.0;
     // Reflection exact (table lookup of a constant); the body's sky term has the 5% above.
@@ -190,12 +204,12 @@ struct Hills {
 
 std::vector<glm::vec3> render_hills(const Hills& hills, const RendererOptions& options, const SunState& sun) {
     const NormalField normals = terrain_normals(hills.grid);
-    FrameRenderer r(hills.grid, rule_materials(hills.grid, normals), normals, {}, options);
-    EXPECT_GT(r.water_texels(), 0u);
-    EXPECT_GT(r.specular_texels(), 0u);
+    Renderer r(hills.grid, rule_materials(hills.grid, normals), normals, {}, options);
+    EXPECT_GT(r.state->water_index().size(), 0u);
+    EXPECT_GT(r.state->specular_index().size(), 0u);
     const ZenithSky sky(1.0f, 2.0f, sun_direction(sun));
     std::vector<glm::vec3> out;
-    r.render(sky, sun, out);
+    r->render(sky, sun, out);
     return out;
 }
 
@@ -244,11 +258,6 @@ class CountingBackend : public RenderBackend {
 public:
     explicit CountingBackend(std::unique_ptr<RenderBackend> inner) : inner_(std::move(inner)) {}
     std::string name() const override { return "counting " + inner_->name(); }
-    visibility::HorizonSet horizons_and_log_sh(const terrain::HeightGrid& grid, const visibility::HorizonOptions& options,
-                                               float log_eps, std::vector<float>& log_sh) override {
-        ++horizons;
-        return inner_->horizons_and_log_sh(grid, options, log_eps, log_sh);
-    }
     void transfer_vectors(const TransferInputs& in, float* out) override {
         ++transfers;
         inner_->transfer_vectors(in, out);
@@ -257,19 +266,36 @@ public:
         ++kept;
         return inner_->keep_transfer(t, texels);
     }
-    int horizons = 0, transfers = 0, kept = 0;
+    int transfers = 0, kept = 0;
 
 private:
     std::unique_ptr<RenderBackend> inner_;
+};
+
+class CountingVisibility : public visibility::VisibilityBackend {
+public:
+    std::string name() const override { return "counting cpu"; }
+    visibility::VisibilityResult compute(const terrain::HeightGrid& grid,
+                                         const visibility::VisibilityRequest& request) override {
+        ++computed;
+        EXPECT_TRUE(request.log_sh);
+        return inner_->compute(grid, request);
+    }
+    int computed = 0;
+
+private:
+    std::unique_ptr<visibility::VisibilityBackend> inner_ = visibility::make_cpu_visibility_backend();
 };
 
 TEST(FrameRenderer, BackendRunsTheHeavyStages) {
     const Hills hills;
     CountingBackend backend(make_cpu_backend(1));
     RendererOptions o = small_options();
+    CountingVisibility visibility;
     o.backend = &backend;
+    o.visibility = &visibility;
     render_hills(hills, o, {200.0, 35.0});
-    EXPECT_EQ(backend.horizons, 1);
+    EXPECT_EQ(visibility.computed, 1);
     EXPECT_EQ(backend.transfers, 2);  // diffuse, and specular (the snow texels)
     EXPECT_EQ(backend.kept, 1);       // the diffuse T, for per-frame shading
     EXPECT_EQ(backend.name(), "counting cpu");

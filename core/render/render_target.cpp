@@ -1,0 +1,129 @@
+#include "core/render/render_target.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+
+namespace ts::render {
+namespace {
+
+// Bilinear sample of a texel raster at texel-centre coordinates (x, y), clamped to the grid.
+glm::vec3 sample(const std::vector<glm::vec3>& src, int sw, int sh, double x, double y) {
+    x = std::clamp(x, 0.0, double(sw - 1));
+    y = std::clamp(y, 0.0, double(sh - 1));
+    const int x0 = std::min(int(x), sw - 1), x1 = std::min(x0 + 1, sw - 1);
+    const int y0 = std::min(int(y), sh - 1), y1 = std::min(y0 + 1, sh - 1);
+    const float fx = float(x - x0), fy = float(y - y0);
+    auto at = [&](int c, int r) { return src[std::size_t(r) * std::size_t(sw) + std::size_t(c)]; };
+    return (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
+}
+
+geo::Georef scaled_georef(const geo::Georef& g, int w, int h) {
+    if (w == g.width() && h == g.height()) return g;
+    geo::GeoTransform t = g.transform();
+    const double sx = double(g.width()) / w, sy = double(g.height()) / h;
+    t.dx_col *= sx, t.dy_col *= sx, t.dx_row *= sy, t.dy_row *= sy;
+    return geo::Georef(w, h, t, g.crs_ptr(), g.pixel_is_area());
+}
+
+}  // namespace
+
+GridTarget::GridTarget(const geo::Georef& dem_georef, int width, int height)
+    : grid_width_(dem_georef.width()),
+      grid_height_(dem_georef.height()),
+      georef_(scaled_georef(dem_georef, width > 0 ? width : dem_georef.width(),
+                            height > 0 ? height : dem_georef.height())),
+      same_size_(georef_.width() == grid_width_ && georef_.height() == grid_height_) {}
+
+void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky&, LinearImage& image) {
+    const int w = width(), h = height();
+    image.width = w, image.height = h;
+    image.alpha.clear();
+    if (same_size_) {
+        image.rgb = texel_radiance;
+        return;
+    }
+    image.rgb.resize(std::size_t(w) * std::size_t(h));
+    for (int j = 0; j < h; ++j) {
+        const double y = (j + 0.5) * grid_height_ / h - 0.5;
+        for (int i = 0; i < w; ++i)
+            image.rgb[std::size_t(j) * w + i] =
+                sample(texel_radiance, grid_width_, grid_height_, (i + 0.5) * grid_width_ / w - 0.5, y);
+    }
+}
+
+ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int threads)
+    : grid_width_(dem.width), grid_height_(dem.height), georef_(target), threads_(threads) {
+    if (!target.valid() || target.width() < 1 || target.height() < 1)
+        throw InputError("render extent: empty or without a CRS");
+    const bool same_crs = dem.georef.crs().same_as(target.crs());
+    const int w = target.width(), h = target.height();
+    at_.assign(std::size_t(w) * std::size_t(h), glm::vec2(-1.0f));
+    std::vector<std::size_t> covered_rows(std::size_t(h), 0);
+    parallel_rows(h, threads, w * 64LL, [&](int r0, int r1) {
+        for (int j = r0; j < r1; ++j)
+            for (int i = 0; i < w; ++i) {
+                const glm::dvec2 xy = target.pixel_to_crs(i + 0.5, j + 0.5);
+                glm::dvec2 p;
+                if (same_crs) {
+                    p = dem.georef.crs_to_pixel(xy);
+                } else {
+                    const glm::dvec2 ll = target.crs().to_lonlat(xy);
+                    if (!std::isfinite(ll.x) || !std::isfinite(ll.y)) continue;
+                    p = dem.georef.lonlat_to_pixel(ll);
+                }
+                // Edge coordinates: the DEM covers [0, width] x [0, height].
+                if (!(p.x >= 0 && p.y >= 0 && p.x <= dem.width && p.y <= dem.height)) continue;
+                const int c = std::min(int(p.x), dem.width - 1), r = std::min(int(p.y), dem.height - 1);
+                if (!dem.void_mask.empty() && dem.void_mask[std::size_t(r) * std::size_t(dem.width) + std::size_t(c)])
+                    continue;
+                at_[std::size_t(j) * std::size_t(w) + std::size_t(i)] = glm::vec2(p.x - 0.5, p.y - 0.5);
+                ++covered_rows[std::size_t(j)];
+            }
+    });
+    for (std::size_t n : covered_rows) covered_ += n;
+}
+
+void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky&, LinearImage& image) {
+    const int w = width(), h = height();
+    image.width = w, image.height = h;
+    image.rgb.resize(std::size_t(w) * std::size_t(h));
+    image.alpha.resize(image.rgb.size());
+    parallel_rows(h, threads_, w * 16LL, [&](int r0, int r1) {
+        for (std::size_t k = std::size_t(r0) * w; k < std::size_t(r1) * w; ++k) {
+            const glm::vec2 p = at_[k];
+            if (p.x < -0.75f) {  // off the DEM (a pixel on it is at least -0.5)
+                image.rgb[k] = glm::vec3(0.0f);
+                image.alpha[k] = 0;
+                continue;
+            }
+            image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, p.x, p.y);
+            image.alpha[k] = 255;
+        }
+    });
+}
+
+CameraTarget::CameraTarget(const terrain::HeightGrid& grid, const geo::Georef& georef, const Camera& camera,
+                           const PerspectiveOptions& options)
+    : camera_(camera), view_(grid, georef, camera, options) {}
+
+ViewDirections CameraTarget::view_directions() const {
+    ViewDirections v;
+    v.per_texel = view_.view_directions();
+    return v;
+}
+
+void CameraTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) {
+    sky_table_.update(sky);
+    const light::SunDisc disc = sky.sun();
+    const double r = disc.angular_radius_rad;
+    const glm::vec3 sun_radiance = disc.irradiance / float(std::numbers::pi * r * r);
+    view_.compose(texel_radiance.data(), sky_table_, glm::vec3(disc.direction), sun_radiance, std::cos(r), image.rgb);
+    image.width = view_.width(), image.height = view_.height();
+    image.alpha.clear();
+}
+
+}  // namespace ts::render

@@ -1,0 +1,174 @@
+#include "core/render/shading_state.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "core/geo/azimuth.hpp"
+#include "core/render/render_backend.hpp"
+#include "core/render/transfer.hpp"
+#include "core/sh/log_brdf.hpp"
+#include "core/visibility/sun_sweep.hpp"
+#include "core/visibility/visibility_backend.hpp"
+
+namespace ts::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// RendererOptions::band_correction: scales each SH band of the diffuse transfer t ([16][texels])
+// so that a texel with nothing blocking gets the projected clamped cosine / pi exactly.
+void correct_diffuse_bands(const std::array<float, 4>& lobe, const TransferInputs& like, std::vector<float>& t) {
+    std::array<float, 16> v0{};
+    const std::array<float, 3> z = {0, 0, 1};
+    TransferInputs in = like;
+    in.texels = 1;
+    in.log_visibility = v0.data();
+    in.lobe_axis = z.data();
+    in.lobe_log_zh = lobe.data();
+    in.uniform_lobe = true;
+    in.threads = 1;
+    std::array<float, 16> e{};
+    transfer_vectors(in, e.data());  // about the z axis: the ZH of exp(F) sits at the m = 0 entries
+    const double pi = std::numbers::pi;
+    const double c[4] = {std::sqrt(pi) / 2 / pi, std::sqrt(pi / 3) / pi, std::sqrt(5 * pi) / 8 / pi, 0.0};
+    float scale[4];
+    for (int l = 0; l < 4; ++l) scale[l] = l == 3 ? 0.0f : float(c[l] / e[std::size_t(l * l + l)]);
+    const std::size_t n = t.size() / 16;
+    for (int l = 0; l < 4; ++l)
+        for (int m = -l; m <= l; ++m) {
+            float* p = t.data() + std::size_t(l * l + l + m) * n;
+            for (std::size_t k = 0; k < n; ++k) p[k] *= scale[l];
+        }
+}
+
+}  // namespace
+
+glm::dvec3 sun_direction(const SunState& sun) {
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(sun.azimuth_deg),
+                              sun.elevation_deg * (std::numbers::pi / 180.0));
+}
+
+ShadingState::ShadingState(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
+                           const RendererOptions& options)
+    : grid_(grid),
+      options_(options),
+      texels_(std::size_t(grid.width) * std::size_t(grid.height)),
+      materials_(std::move(materials)),
+      normals_(std::move(normals)) {}
+
+ShadingState::~ShadingState() = default;
+
+std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& grid, MaterialRaster materials,
+                                                    NormalField normals, const RendererOptions& options) {
+    auto state = std::make_unique<ShadingState>(grid, std::move(materials), std::move(normals), options);
+    ShadingState& s = *state;
+    const std::size_t texels = s.texels_;
+    // Water is a flat mirror whatever the DEM's noise on a lake says.
+    for (std::size_t t = 0; t < texels; ++t)
+        if (s.materials_.water[t]) s.normals_.x[t] = 0, s.normals_.y[t] = 0, s.normals_.z[t] = 1;
+
+    auto t0 = Clock::now();
+    visibility::VisibilityRequest request;
+    request.horizon.directions = options.directions;
+    request.horizon.method = visibility::HorizonMethod::exact;
+    request.horizon.curvature = options.curvature;
+    request.horizon.threads = options.threads;
+    request.horizon.progress = options.progress;
+    request.log_sh = true;
+    request.log_eps = options.visibility_log_eps;
+    std::unique_ptr<visibility::VisibilityBackend> own_cpu;
+    visibility::VisibilityBackend* vb = options.visibility;
+    if (!vb) own_cpu = visibility::make_cpu_visibility_backend(), vb = own_cpu.get();
+    visibility::VisibilityResult vis = vb->compute(grid, request);
+    s.visibility_path_ = vis.path();
+    s.visibility_s_ = seconds_since(t0);
+    const float* log_sh = vis.log_sh.data();
+
+    t0 = Clock::now();
+    RenderBackend* backend = options.backend;
+    const sh::LogBrdfTable table(options.brdf_log_eps);
+    // Diffuse: the cos/pi lobe about the normal, the same ZH for every texel.
+    {
+        std::vector<float> axis(texels * 3);
+        for (std::size_t t = 0; t < texels; ++t)
+            axis[3 * t] = s.normals_.x[t], axis[3 * t + 1] = s.normals_.y[t], axis[3 * t + 2] = s.normals_.z[t];
+        const sh::ZhVec zh = table.diffuse();
+        const std::array<float, 4> lobe = {float(zh[0]), float(zh[1]), float(zh[2]), float(zh[3])};
+        TransferInputs in;
+        in.texels = texels;
+        in.log_visibility = log_sh;
+        in.lobe_axis = axis.data();
+        in.lobe_log_zh = lobe.data();
+        in.uniform_lobe = true;
+        in.method = options.exp_method;
+        in.threads = options.threads;
+        std::vector<float> t_diffuse(16 * texels);
+        if (backend) backend->transfer_vectors(in, t_diffuse.data());
+        else transfer_vectors(in, t_diffuse.data());
+        if (options.band_correction) correct_diffuse_bands(lobe, in, t_diffuse);
+        if (backend) {
+            s.diffuse_field_ = backend->keep_transfer(t_diffuse.data(), texels);
+        } else {
+            // Water texels get albedo 1 here: their fused result is then the body's irradiance / pi
+            // (sky + sun), which the water pass weights by (1 - F) kWaterAlbedo.
+            std::vector<float> albedo[3] = {s.materials_.albedo_r, s.materials_.albedo_g, s.materials_.albedo_b};
+            for (std::size_t t = 0; t < texels; ++t)
+                if (s.materials_.water[t]) albedo[0][t] = albedo[1][t] = albedo[2][t] = 1.0f;
+            DiffuseShading::Inputs di;
+            di.texels = texels;
+            di.transfer = t_diffuse.data();
+            // Band correction scales band 3 by 0: only bands 0..2 (9 coefficients) carry light.
+            di.coefficients = options.band_correction ? 9 : 16;
+            di.normal[0] = s.normals_.x.data(), di.normal[1] = s.normals_.y.data(), di.normal[2] = s.normals_.z.data();
+            for (int c = 0; c < 3; ++c) di.albedo[c] = albedo[c].data();
+            di.precision = options.shading_precision;
+            s.diffuse_ = std::make_unique<DiffuseShading>(di);
+        }
+    }
+    // What the views need: V of the specular texels, the horizons of the water texels.
+    for (std::size_t t = 0; t < texels; ++t) {
+        if (s.materials_.water[t]) s.water_index_.push_back(std::uint32_t(t));
+        else if (s.materials_.ks[t] > 0) s.spec_index_.push_back(std::uint32_t(t));
+    }
+    const std::size_t n_spec = s.spec_index_.size();
+    s.spec_log_sh_.resize(16 * n_spec);
+    for (std::size_t k = 0; k < n_spec; ++k)
+        for (int i = 0; i < 16; ++i)
+            s.spec_log_sh_[std::size_t(i) * n_spec + k] = log_sh[std::size_t(i) * texels + s.spec_index_[k]];
+    const int d_count = vis.horizons.directions;
+    s.water_horizons_.resize(s.water_index_.size() * std::size_t(d_count));
+    for (std::size_t k = 0; k < s.water_index_.size(); ++k)
+        for (int d = 0; d < d_count; ++d)
+            s.water_horizons_[k * std::size_t(d_count) + std::size_t(d)] = vis.horizons.plane(d)[s.water_index_[k]];
+    s.transfer_s_ = seconds_since(t0);
+    return state;
+}
+
+void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out) {
+    out.resize(texels_);
+    if (!sun_up) {
+        std::fill(out.begin(), out.end(), 0.0f);
+        return;
+    }
+    if (options_.sun_method == visibility::SunMethod::sweep) {
+        if (!sun_sweep_) {
+            visibility::SunSweepOptions so;
+            so.curvature = options_.curvature;
+            so.threads = options_.threads;
+            sun_sweep_ = std::make_unique<visibility::SunShadowSweep>(grid_, so);
+        }
+        sun_sweep_->compute(sun.azimuth_deg, sun.elevation_deg, out);
+        return;
+    }
+    visibility::SunVisibilityOptions so;
+    so.curvature = options_.curvature;
+    so.threads = options_.threads;
+    out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
+}
+
+}  // namespace ts::render

@@ -1,0 +1,151 @@
+#pragma once
+// The view-independent part of shading a DEM: everything that depends only on the terrain and
+// its materials, computed once (per DEM, or per tile of it) and shared by every view and every
+// frame (docs/rendering.md, "What is computed once"):
+//
+//   horizons (exact sweep, D azimuths) -> log-SH visibility V            (VisibilityBackend)
+//   diffuse transfer T_d = exp(V + rot(F_diffuse, n)), band-corrected    (every texel)
+//   kept for the views: V of the specular texels (ks > 0), the horizons of the water texels
+//   per frame: the sun's visibility per texel (the sun sweep, built on the first frame)
+//
+// What depends on the view (specular and water reflection) is ViewShading (view_shading.hpp);
+// a frame is FrameRenderer (frame_renderer.hpp); the picture is a RenderTarget.
+//
+//   ShadingState state = compute_shading_state(grid, materials, normals, options);
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/render/diffuse_shading.hpp"
+#include "core/render/material.hpp"
+#include "core/render/terrain_normals.hpp"
+#include "core/sh/exp_method.hpp"
+#include "core/terrain/height_grid.hpp"
+#include "core/visibility/horizon_sh.hpp"
+#include "core/visibility/sun_visibility.hpp"
+
+namespace ts {
+class ProgressBar;
+}
+namespace ts::visibility {
+class SunShadowSweep;
+class VisibilityBackend;
+}  // namespace ts::visibility
+
+namespace ts::render {
+
+class RenderBackend;
+class ShadeField;
+
+// What the sun does this frame (user-facing angles, as sun_position gives them).
+struct SunState {
+    double azimuth_deg = 180.0;
+    double elevation_deg = 45.0;
+};
+
+struct RendererOptions {
+    int directions = 32;           // horizon azimuths D for the visibility
+    bool curvature = true;         // Earth curvature with refraction (horizons and sun)
+    float visibility_log_eps = visibility::kDefaultVisibilityLogEps;
+    double brdf_log_eps = -2.995732273553991;  // sh::kDefaultBrdfLogEps
+    // scaling_squaring: on an open plane under a uniform sky albedo*<T_d, L> comes out 3% low;
+    // hybrid (fast, the visibility default) 19% low, because V + F_diffuse is large (docs/rendering.md).
+    // It is a one-time cost here, so accuracy wins.
+    sh::ExpMethod exp_method = sh::ExpMethod::scaling_squaring;
+    // Band correction of the diffuse transfer: every SH band l of T_d is scaled by c_l / e_l, with
+    // c_l the clamped cosine / pi projected to order 4 (c_3 = 0) and e_l what the exponentiation
+    // gives for the same lobe with nothing blocking, so an open texel gets exactly the projected
+    // clamped cosine. It removes the log-lobe's low bias under a low sun (docs/accuracy.md).
+    // One-time cost: one exponentiation and a scaling pass.
+    bool band_correction = true;
+    // Where horizons and log-SH are computed (core/visibility/visibility_backend.hpp; must
+    // outlive the state). nullptr: the CPU.
+    visibility::VisibilityBackend* visibility = nullptr;
+    // Where the transfer vectors and the per-frame sky transfer run (render_backend.hpp; must
+    // outlive the state). nullptr: here on the CPU, with the per-frame diffuse pass fused and
+    // compact (DiffuseShading); a backend (make_cpu_backend, the Vulkan one) shades <T_d, L>
+    // itself and the sun and albedo follow in a second pass.
+    RenderBackend* backend = nullptr;
+    // CPU path (backend == nullptr): how the per-frame copy of T_d, albedo and normal is stored.
+    // half (default): fp16 (normal 16-bit fixed point), 30 B/texel read per frame, radiance
+    // within 1e-3 of single; single: fp32, 60 B/texel, float rounding (diffuse_shading.hpp).
+    DiffuseShading::Precision shading_precision = DiffuseShading::Precision::half;
+    // Per-frame sun visibility: the sweep (core/visibility/sun_sweep.hpp, built on the first frame
+    // and kept) or the exact path (the reference; `--sun-shadows exact`).
+    visibility::SunMethod sun_method = visibility::SunMethod::sweep;
+    int threads = 0;
+    ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
+};
+
+class ShadingState {
+public:
+    // Use compute_shading_state(); this constructor only takes the parts.
+    ShadingState(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
+                 const RendererOptions& options);
+    ~ShadingState();
+    ShadingState(const ShadingState&) = delete;
+    ShadingState& operator=(const ShadingState&) = delete;
+
+    const terrain::HeightGrid& grid() const { return grid_; }
+    const RendererOptions& options() const { return options_; }
+    int width() const { return grid_.width; }
+    int height() const { return grid_.height; }
+    std::size_t texels() const { return texels_; }
+    const MaterialRaster& materials() const { return materials_; }
+    const NormalField& normals() const { return normals_; }
+    // One-time cost split: horizons + log-SH, and the diffuse transfer.
+    double visibility_seconds() const { return visibility_s_; }
+    double transfer_seconds() const { return transfer_s_; }
+    // Where the horizons were computed ("cpu" or the Vulkan device's name).
+    const std::string& visibility_path() const { return visibility_path_; }
+
+    // Diffuse transfer in one of two forms: the fused compact copy (CPU path) or the backend's
+    // field (then the frame adds the sun and albedo in a second pass).
+    const DiffuseShading* fused_diffuse() const { return diffuse_.get(); }
+    ShadeField* diffuse_field() const { return diffuse_field_.get(); }
+
+    // Specular texels (ks > 0, not water) and their log-SH visibility [16][n].
+    const std::vector<std::uint32_t>& specular_index() const { return spec_index_; }
+    const std::vector<float>& specular_log_sh() const { return spec_log_sh_; }
+    // Water texels and their D horizons [texel-in-list * D + d] (radians).
+    const std::vector<std::uint32_t>& water_index() const { return water_index_; }
+    const std::vector<float>& water_horizons() const { return water_horizons_; }
+    int directions() const { return options_.directions; }
+
+    // The sun's visible fraction per texel (0 everywhere when `sun_up` is false) into `out`
+    // (texels() entries). The sweep is built on the first call and kept.
+    void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out);
+
+private:
+    friend std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid&, MaterialRaster, NormalField,
+                                                               const RendererOptions&);
+
+    const terrain::HeightGrid& grid_;
+    RendererOptions options_;
+    std::size_t texels_ = 0;
+    MaterialRaster materials_;
+    NormalField normals_;
+    double visibility_s_ = 0, transfer_s_ = 0;
+    std::string visibility_path_ = "cpu";
+    std::unique_ptr<DiffuseShading> diffuse_;
+    std::unique_ptr<ShadeField> diffuse_field_;
+    std::vector<std::uint32_t> spec_index_;
+    std::vector<float> spec_log_sh_;
+    std::vector<std::uint32_t> water_index_;
+    std::vector<float> water_horizons_;
+    std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;
+};
+
+// The one-time step: visibility, diffuse transfer, what the views need. `grid` must outlive
+// the state (its heights are swept for the sun every frame). Water texels get flat normals.
+std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& grid, MaterialRaster materials,
+                                                    NormalField normals, const RendererOptions& options = {});
+
+// The direction towards the sun in ENU from user-facing angles.
+glm::dvec3 sun_direction(const SunState& sun);
+
+}  // namespace ts::render

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
@@ -34,6 +35,7 @@ struct BenchRelightArgs {
     int write_queue = 2;  // frames waiting for the writer thread
     bool compare_cpu = false;  // --compare-cpu: also time the CPU path in the same run
     bool compare_unfused = false;  // --compare-unfused: the shading stage against the CPU backend's
+    bool compare_devices = false;  // --compare-devices: the default path, --device cpu and vulkan
 };
 
 using Clock = std::chrono::steady_clock;
@@ -113,6 +115,66 @@ void compare_unfused(const dem::Dem& dem, render::SceneOptions options, int fram
                 "(16 fp32 planes, then sun + albedo) %.2f ms (fastest %.2f): %.2fx (fastest %.2fx)\n",
                 s_this / frames * 1e3, min_this * 1e3, s_unfused / frames * 1e3, min_unfused * 1e3, s_unfused / s_this,
                 min_unfused / min_this);
+}
+
+// --compare-devices: the whole job (one-time stages, then frames written as PNGs on the writer
+// thread, as `relight` does) on the default path (--device auto), the CPU and the Vulkan
+// device, one after the other in the same run.
+void compare_devices(const BenchRelightArgs& a, const dem::Dem& dem, const render::Exposure& exposure) {
+    struct PathTime {
+        std::string label, name;
+        double setup_s = 0, frames_s = 0, files_s = 0, pixels = 0;
+        double total() const { return setup_s + files_s; }
+    };
+    std::vector<PathTime> paths;
+    const auto dir = std::filesystem::temp_directory_path() / ("ts_bench_devices_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    for (const std::string label : {"default", "cpu", "vulkan"}) {
+        DeviceArgs args;
+        args.device = label == "default" ? "auto" : label;
+        std::unique_ptr<ComputeDevice> device;
+        try {
+            device = std::make_unique<ComputeDevice>(args);
+        } catch (const InputError& e) {
+            std::printf("  %-8s not run: %s\n", label.c_str(), e.what());
+            continue;
+        }
+        render::SceneOptions options = scene_options(a.render);
+        device->apply(options);
+        PathTime p{label, device->name()};
+        auto t0 = Clock::now();
+        render::Scene scene(dem, options);
+        p.setup_s = seconds_since(t0);
+        render::LinearImage image;
+        scene.render(sun_of_frame(0, a.frames), image);  // warm-up
+        p.pixels = double(image.width) * image.height * a.frames;
+        t0 = Clock::now();
+        for (int k = 0; k < a.frames; ++k) scene.render(sun_of_frame(k, a.frames), image);
+        p.frames_s = seconds_since(t0);
+        t0 = Clock::now();
+        {
+            render::BackgroundWriter writer(a.write_queue);
+            for (int k = 0; k < a.frames; ++k) {
+                scene.render(sun_of_frame(k, a.frames), image);
+                writer.write((dir / ("frame_" + std::to_string(k) + ".png")).string(), image, exposure, nullptr);
+            }
+            writer.finish();
+        }
+        p.files_s = seconds_since(t0);
+        paths.push_back(p);
+    }
+    std::filesystem::remove_all(dir);
+    std::printf("paths, one after the other (%d frames each, PNG files on the writer thread):\n", a.frames);
+    double fastest = 0;
+    for (const auto& p : paths) {
+        if (p.label != "default" && (fastest == 0 || p.total() < fastest)) fastest = p.total();
+        std::printf("  %-8s on %-40s one-time %.3f s, frames %.2f ms (%.1f Mpx/s), with files %.2f ms (%.1f Mpx/s), "
+                    "job %.3f s\n",
+                    p.label.c_str(), p.name.c_str(), p.setup_s, p.frames_s / a.frames * 1e3, p.pixels / p.frames_s * 1e-6,
+                    p.files_s / a.frames * 1e3, p.pixels / p.files_s * 1e-6, p.total());
+    }
+    if (!paths.empty() && paths[0].label == "default" && fastest > 0)
+        std::printf("  default / fastest path, whole job: %.2f\n", paths[0].total() / fastest);
 }
 
 void run_bench_relight(const BenchRelightArgs& a) {
@@ -210,6 +272,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
         if (device.on_vulkan()) compare_with_cpu(dem, options, a.frames, scene, setup_s);
         else std::printf("--compare-cpu: the run above was the CPU path already\n");
     }
+    if (a.compare_devices) compare_devices(a, dem, exposure);
 }
 
 }  // namespace
@@ -231,6 +294,9 @@ void add_bench_relight_command(CLI::App& bench) {
                   "CPU loop) in the same run, frames interleaved");
     cmd->add_flag("--compare-cpu", a->compare_cpu,
                   "Also time the CPU path (one-time stages and frames) in the same run and print device / cpu ratios");
+    cmd->add_flag("--compare-devices", a->compare_devices,
+                  "Also run the whole job (one-time stages, frames with PNG files) on the default path (--device "
+                  "auto), --device cpu and --device vulkan in the same run, and print default / fastest");
     cmd->callback([a] { run_bench_relight(*a); });
 }
 

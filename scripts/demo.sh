@@ -2,7 +2,7 @@
 # Sets up, builds and runs the main job on the shipped default DEM; outputs go to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh terrashade terrashade_image_io
 mkdir -p out
 ts=build/release/app/terrashade
 dem=data/grenoble_500px.tif
@@ -23,9 +23,10 @@ $ts visibility "$dem" --directions 32 --svf out/svf.png
 echo "== the sun over Grenoble at the June solstice, 12:00 CEST (solar noon is ~13:38 there)"
 $ts sun --time 2025-06-21T12:00:00+02:00 --lat 45.19 --lon 5.72 --height-m 212
 
-echo "== shaded renders: real sun (June solstice, 09:00 CEST), clear sky, sun shadows (on the Vulkan device; --cpu for the CPU)"
+echo "== shaded renders: real sun (June solstice, 09:00 CEST), clear sky, sun shadows (on the default device choice; terrashade devices says which)"
 $ts render "$dem" --time 2025-06-21T07:00:00Z --out out/render_map.png --sun-visibility out/sun_visibility.tif
 $ts render "$dem" --time 2025-06-21T07:00:00Z --out out/render_map.tif
+$ts render "$dem" --time 2025-06-21T07:00:00Z --extent 601125,5637278,690181,5732404 --extent-crs EPSG:3857 --out out/render_extent_3857.png
 $ts render "$dem" --time 2025-06-21T07:00:00Z --view perspective --camera 5.62,45.33,3000,150,-8,62 --out out/render_perspective.png
 $ts render "$dem" --time 2025-06-21T07:00:00Z --sky overcast --out out/render_overcast.png
 

@@ -2,8 +2,9 @@
 // Prints the one-time cost (horizons + log-SH, transfer vectors), the per-frame shading rate
 // (sky SH projection + sun visibility sweep + per-texel shading, no file written) as
 // `N Mpx/s`, the end-to-end rate with a PNG written per frame (on a writer thread, as `relight`
-// does, and one after the other for comparison), and in the same run the baseline: a classic
-// hillshade (local shading, no shadows, no sky) of the same DEM.
+// does, and one after the other for comparison) next to the shading-only rate, the mean PNG
+// size, and in the same run the baseline: a classic hillshade (local shading, no shadows, no
+// sky) of the same DEM.
 #include <unistd.h>
 
 #include <algorithm>
@@ -168,6 +169,8 @@ void run_bench_relight(const BenchRelightArgs& a) {
         render::write_image(frame_path(k), image, exposure, nullptr);
     }
     const double files_serial_s = seconds_since(t0);
+    std::uintmax_t file_bytes = 0;
+    for (int k = 0; k < a.frames; ++k) file_bytes += std::filesystem::file_size(frame_path(k));
     if (a.out_dir.empty()) std::filesystem::remove_all(dir);
 
     // Baseline in the same run: the classic hillshade, one light, no shadows, no sky.
@@ -197,9 +200,11 @@ void run_bench_relight(const BenchRelightArgs& a) {
     std::printf("relight: %.1f Mpx/s (per-frame work after the visibility pass: sky SH, sun sweep, shading%s)\n",
                 pixels * n / frames_s * 1e-6, options.view == render::ViewKind::map ? "" : ", view composition");
     std::printf("end-to-end with files: %.1f Mpx/s (%.2f ms per frame incl. tone mapping and PNG writing, on a "
-                "writer thread with a %d-frame queue); one after the other: %.1f Mpx/s (%.2f ms per frame)\n",
-                pixels * n / files_s * 1e-6, files_s / n * 1e3, a.write_queue, pixels * n / files_serial_s * 1e-6,
-                files_serial_s / n * 1e3);
+                "writer thread with a %d-frame queue; shading alone %.1f Mpx/s, %.2f ms); one after the other: "
+                "%.1f Mpx/s (%.2f ms per frame); PNG %.1f KB per frame\n",
+                pixels * n / files_s * 1e-6, files_s / n * 1e3, a.write_queue, pixels * n / frames_s * 1e-6,
+                frames_s / n * 1e3, pixels * n / files_serial_s * 1e-6, files_serial_s / n * 1e3,
+                double(file_bytes) / n * 1e-3);
     std::printf("baseline hillshade (local, no shadows, no sky): %.1f Mpx/s\n", double(texels) * n / hill_s * 1e-6);
     std::printf("with the one-time cost over %d frames: %.1f Mpx/s\n", a.frames,
                 pixels * n / (frames_s + setup_s) * 1e-6);

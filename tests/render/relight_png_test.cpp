@@ -39,7 +39,7 @@ void expect_frames_match_libpng(const dem::Dem& dem, const SceneOptions& options
     Exposure exposure;  // auto: each frame's own log-average, as `bench relight` writes them
     std::vector<LinearImage> frames;
     {
-        BackgroundWriter writer(1);
+        BackgroundWriter writer(1, 3);
         LinearImage image;
         for (int k = 0; k < 4; ++k) {
             scene.render({90.0 + 50.0 * k, 6.0 + 15.0 * k}, image);

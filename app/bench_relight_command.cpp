@@ -1,9 +1,10 @@
 // `terrashade bench relight DEM`: how fast relighting is once the visibility is known.
 // Prints the one-time cost (horizons + log-SH, transfer vectors), the per-frame shading rate
 // (sky SH projection + sun visibility sweep + per-texel shading, no file written) as
-// `N Mpx/s`, the end-to-end rate with a PNG written per frame (on a writer thread, as `relight`
-// does, and one after the other for comparison), and in the same run the baseline: a classic
-// hillshade (local shading, no shadows, no sky) of the same DEM.
+// `N Mpx/s`, the end-to-end rate with a PNG written per frame (on writer threads, as `relight`
+// does, and one after the other for comparison) next to the shading-only rate, the mean PNG
+// size, and in the same run the baseline: a classic hillshade (local shading, no shadows, no
+// sky) of the same DEM.
 #include <unistd.h>
 
 #include <algorithm>
@@ -32,7 +33,8 @@ struct BenchRelightArgs {
     RenderArgs render;
     int frames = 24;
     std::string out_dir;
-    int write_queue = 2;  // frames waiting for the writer thread
+    int write_queue = 2;  // frames waiting for the writer threads
+    int writer_threads = render::kDefaultWriterThreads;
     bool compare_cpu = false;  // --compare-cpu: also time the CPU path in the same run
     bool compare_unfused = false;  // --compare-unfused: the shading stage against the CPU backend's
     bool compare_devices = false;  // --compare-devices: the default path, --device cpu and vulkan
@@ -213,10 +215,10 @@ void run_bench_relight(const BenchRelightArgs& a) {
         std::snprintf(name, sizeof name, "frame_%04d.png", k);
         return (dir / name).string();
     };
-    // As `relight` writes: frame k encoded on the writer thread while frame k+1 renders.
+    // As `relight` writes: frame k encoded on a writer thread while frame k+1 renders.
     t0 = Clock::now();
     {
-        render::BackgroundWriter writer(a.write_queue);
+        render::BackgroundWriter writer(a.write_queue, a.writer_threads);
         for (int k = 0; k < a.frames; ++k) {
             scene.render(sun_of_frame(k, a.frames), image);
             writer.write(frame_path(k), image, exposure, nullptr);
@@ -231,6 +233,8 @@ void run_bench_relight(const BenchRelightArgs& a) {
         render::write_image(frame_path(k), image, exposure, nullptr);
     }
     const double files_serial_s = seconds_since(t0);
+    std::uintmax_t file_bytes = 0;
+    for (int k = 0; k < a.frames; ++k) file_bytes += std::filesystem::file_size(frame_path(k));
     if (a.out_dir.empty()) std::filesystem::remove_all(dir);
 
     // Baseline in the same run: the classic hillshade, one light, no shadows, no sky.
@@ -259,10 +263,12 @@ void run_bench_relight(const BenchRelightArgs& a) {
                 sky_s / n * 1e3, sun_s / n * 1e3, shade_s / n * 1e3, frames_s / n * 1e3);
     std::printf("relight: %.1f Mpx/s (per-frame work after the visibility pass: sky SH, sun sweep, shading%s)\n",
                 pixels * n / frames_s * 1e-6, options.view == render::ViewKind::map ? "" : ", view composition");
-    std::printf("end-to-end with files: %.1f Mpx/s (%.2f ms per frame incl. tone mapping and PNG writing, on a "
-                "writer thread with a %d-frame queue); one after the other: %.1f Mpx/s (%.2f ms per frame)\n",
-                pixels * n / files_s * 1e-6, files_s / n * 1e3, a.write_queue, pixels * n / files_serial_s * 1e-6,
-                files_serial_s / n * 1e3);
+    std::printf("end-to-end with files: %.1f Mpx/s (%.2f ms per frame incl. tone mapping and PNG writing, on %d "
+                "writer thread%s with a %d-frame queue; shading alone %.1f Mpx/s, %.2f ms); one after the other: "
+                "%.1f Mpx/s (%.2f ms per frame); PNG %.1f KB per frame\n",
+                pixels * n / files_s * 1e-6, files_s / n * 1e3, a.writer_threads, a.writer_threads == 1 ? "" : "s",
+                a.write_queue, pixels * n / frames_s * 1e-6, frames_s / n * 1e3, pixels * n / files_serial_s * 1e-6,
+                files_serial_s / n * 1e3, double(file_bytes) / n * 1e-3);
     std::printf("baseline hillshade (local, no shadows, no sky): %.1f Mpx/s\n", double(texels) * n / hill_s * 1e-6);
     std::printf("with the one-time cost over %d frames: %.1f Mpx/s\n", a.frames,
                 pixels * n / (frames_s + setup_s) * 1e-6);
@@ -286,7 +292,10 @@ void add_bench_relight_command(CLI::App& bench) {
     cmd->add_option("--frames", a->frames, "Frames to time (sun over a day's arc)")->capture_default_str()->check(
         CLI::Range(1, 100000));
     cmd->add_option("--keep", a->out_dir, "Keep the written frames in this directory (default: a temp dir, removed)");
-    cmd->add_option("--write-queue", a->write_queue, "Frames that may wait for the PNG writer thread")
+    cmd->add_option("--write-queue", a->write_queue, "Frames that may wait for the PNG writer threads")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    cmd->add_option("--writer-threads", a->writer_threads, "Threads encoding and writing the PNG frames, as for relight")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
     cmd->add_flag("--compare-unfused", a->compare_unfused,

@@ -28,7 +28,8 @@ struct RelightArgs {
     std::string times_file;
     std::string out_dir;
     std::string format = "png";
-    int write_queue = 2;  // frames that may wait for the writer thread (memory: 12 B/pixel each)
+    int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
+    int writer_threads = render::kDefaultWriterThreads;
 };
 
 std::vector<light::UtcTime> read_times_file(const std::string& path) {
@@ -102,9 +103,9 @@ void run_relight(const RelightArgs& a) {
     double render_s = 0;
     int width = 0, height = 0;
     {
-        // Frame k is tone-mapped, encoded and renamed into place on the writer's thread while
-        // frame k+1 renders (encoding a PNG takes longer than relighting it).
-        render::BackgroundWriter writer(a.write_queue);
+        // Frame k is tone-mapped, encoded and renamed into place on a writer thread while
+        // frame k+1 renders (encoding a PNG takes about as long as relighting it).
+        render::BackgroundWriter writer(a.write_queue, a.writer_threads);
         ProgressBar bar("relight", times.size(), "frames");
         for (std::size_t k = 0; k < times.size(); ++k) {
             const auto tf = std::chrono::steady_clock::now();
@@ -143,7 +144,11 @@ void add_relight_command(CLI::App& root) {
         ->capture_default_str()
         ->check(CLI::IsMember({"png", "tif", "exr"}));
     cmd->add_option("--write-queue", a->write_queue,
-                    "Frames that may wait for the writer thread (it encodes frame k while frame k+1 renders)")
+                    "Frames that may wait for the writer threads (they encode frame k while frame k+1 renders)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    cmd->add_option("--writer-threads", a->writer_threads,
+                    "Threads encoding and writing frames, each its own frame (frames may then land out of order)")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
     cmd->callback([a] { run_relight(*a); });

@@ -1,23 +1,42 @@
 #pragma once
-// 8-bit PNG through libpng. Kept apart from OpenImageIO on purpose: linking OIIO pulls ~260
-// shared libraries whose symbol resolution cost every terrashade run 0.3 s at start-up (perf:
-// 70% in the dynamic loader), more than the shading itself.
+// 8-bit PNG, encoded here: the rows filtered (PNG filter types 0-4), one zlib stream from
+// libdeflate, and the IHDR / IDAT / IEND chunks with their CRCs. Every PNG terrashade writes
+// (rendered frames, hillshade and svf quick-looks) goes through write_png.
+//
+// Why not libpng + zlib: for a 500x500 rendered frame libpng with zlib at level 3 took 2.6x
+// the CPU time of this encoder and gave a file 1-8% larger (hillshades: 2.1x, 11%; see
+// docs/dependencies.md, "PNG output"), and a sequence of frames is encoder-bound. Why not
+// OpenImageIO: linking it pulls ~260 shared libraries whose symbol resolution cost every
+// terrashade run 0.3 s at start-up.
+//
+// Memory: the filtered rows (width * channels + 1 bytes per row) and the compressed stream are
+// whole buffers beside the caller's pixels (libdeflate compresses a buffer at once).
 #include <cstdint>
 #include <filesystem>
 
 namespace ts::raster {
 
-// How the pixels are compressed. The defaults were measured on rendered frames (500x500 map,
-// 640x360 perspective views; CPU time of one encode, libpng 1.6 / zlib 1.2):
-//   libpng's default (zlib 6, adaptive filter)  map 46 ms 463 KB   perspective 34 ms 128 KB
-//   zlib 3, Sub filter (default here)           map 16 ms 428 KB   perspective  9 ms 134 KB
-//   zlib 1, Sub filter                          map 11 ms 441 KB   perspective  5 ms 150 KB
-// i.e. 3-4x faster for -8% (maps) to +4% (hazy perspective views) in size. Sub predicts a pixel
-// from its left neighbour, which suits shaded terrain; the adaptive choice per row buys nothing
-// here and costs a trial of all five filters on every row.
+// The PNG filter applied to every row (the PNG specification, section 9; the values are the
+// filter-type bytes).
+enum class PngFilter : std::uint8_t {
+    none = 0,     // the bytes as they are
+    sub = 1,      // minus the same channel of the pixel on the left
+    up = 2,       // minus the byte above
+    average = 3,  // minus the floor of the mean of left and above
+    paeth = 4,    // minus whichever of left, above, upper-left is closest to left + above - upper-left
+    // Per picture: whichever of none, sub and paeth compresses a sample of the rows smallest
+    // (8-row bands every 256 rows, ~3% of the picture, compressed once per filter).
+    trial = 255,
+};
+
+// How the pixels are compressed. The defaults were measured on 500x500 rendered maps, 640x360
+// and 960x540 perspective views and hillshade / svf quick-looks: the best filter depends on the
+// picture (none for maps, whose flat areas repeat whole pixels; sub for hazy perspective views;
+// paeth for hillshades) and the trial found it on all but one of 20 such pictures (that one
+// 1.1% larger); libdeflate level 2 made map frames 9% smaller for 1.4x the time of level 1.
 struct PngEncoding {
-    int zlib_level = 3;       // 0 (store) .. 9 (smallest)
-    bool sub_filter = true;   // false: libpng's adaptive choice among all five filters
+    int level = 1;                      // libdeflate: 0 (store) .. 12 (smallest)
+    PngFilter filter = PngFilter::trial;
 };
 
 // Writes width x height pixels of 1 (grey), 3 (RGB) or 4 (RGBA) interleaved 8-bit channels,

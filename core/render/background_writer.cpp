@@ -5,8 +5,21 @@
 
 namespace ts::render {
 
-BackgroundWriter::BackgroundWriter(int queue_frames)
-    : capacity_(std::size_t(std::max(1, queue_frames))), thread_([this] { run(); }) {}
+BackgroundWriter::BackgroundWriter(int queue_frames, int threads) : capacity_(std::size_t(std::max(1, queue_frames))) {
+    const int n = std::max(1, threads);
+    threads_.reserve(std::size_t(n));
+    try {
+        for (int i = 0; i < n; ++i) threads_.emplace_back([this] { run(); });
+    } catch (...) {
+        // The threads already started must see stop_ to return before they are joined.
+        {
+            std::lock_guard lock(mutex_);
+            stop_ = true;
+        }
+        changed_.notify_all();
+        throw;
+    }
+}
 
 BackgroundWriter::~BackgroundWriter() {
     {
@@ -14,7 +27,7 @@ BackgroundWriter::~BackgroundWriter() {
         stop_ = true;
     }
     changed_.notify_all();
-    // jthread joins; run() drains the queue first (or drops it after an error).
+    // The jthreads join; run() drains the queue first (or drops it after an error).
 }
 
 void BackgroundWriter::rethrow_error_locked() {
@@ -40,7 +53,7 @@ void BackgroundWriter::write(std::string path, LinearImage& image, const Exposur
 
 void BackgroundWriter::finish() {
     std::unique_lock lock(mutex_);
-    changed_.wait(lock, [&] { return error_ || (queue_.empty() && !busy_); });
+    changed_.wait(lock, [&] { return error_ ? busy_ == 0 : queue_.empty() && busy_ == 0; });
     rethrow_error_locked();
 }
 
@@ -55,7 +68,7 @@ void BackgroundWriter::run() {
         }
         Job job = std::move(queue_.front());
         queue_.pop_front();
-        busy_ = true;
+        ++busy_;
         lock.unlock();
         changed_.notify_all();  // a slot is free: the caller may queue the next frame now
         std::exception_ptr failed;
@@ -65,7 +78,7 @@ void BackgroundWriter::run() {
             failed = std::current_exception();
         }
         lock.lock();
-        busy_ = false;
+        --busy_;
         if (failed && !error_) error_ = failed;
         spare_.push_back(std::move(job.image));
         changed_.notify_all();

@@ -1,16 +1,20 @@
 #pragma once
 // Writes frames (render::write_image: tone mapping, PNG/TIFF/EXR encoding, atomic temp + rename)
-// on a thread of its own while the caller renders the next frame. A sequence of frames is
-// encoder-bound (a 500x500 PNG takes longer to tone-map and compress than to relight), so
-// overlapping the two hides most of the rendering.
+// on threads of their own while the caller renders the next frame. A sequence of frames can be
+// encoder-bound (tone mapping and compressing a 500x500 PNG takes about as long as relighting
+// it), so overlapping the two hides most of the encoding, and with several writer threads
+// several frames are encoded at once.
 //
-//   BackgroundWriter writer(2);
+//   BackgroundWriter writer(2, 2);
 //   for (...) { scene.render(sun, image); writer.write(path, image, exposure, georef); }
 //   writer.finish();   // waits; rethrows the first write error
 //
-// At most `queue_frames` frames wait (memory stays bounded whatever the encoder's speed); the
-// caller blocks when the queue is full. An error is reported by the next write() or finish(),
-// and no further frame is written after it.
+// At most `queue_frames` frames wait (memory stays bounded whatever the encoder's speed: the
+// caller blocks when the queue is full), besides the one each writer thread is writing. Every
+// frame is renamed into place as soon as its own write is done, so with several threads the
+// files may appear out of order. An error is reported by the next write() or finish(); once
+// it happened no further queued frame is started (frames already being written still finish,
+// each completely or not at all: write_image never leaves a temporary file).
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -25,9 +29,16 @@
 
 namespace ts::render {
 
+// Writer threads `relight` and `bench relight` start unless told otherwise. Writing a 500x500
+// frame (tone map + PNG) costs about as much CPU as relighting it, so on 2 cores one writer
+// thread competing with two shading threads can fall behind; two did better in interleaved
+// runs of `bench relight --cpu` (median 13.9 against 12.6 Mpx/s end to end), three no better
+// than two (docs/performance.md, "PNG output").
+inline constexpr int kDefaultWriterThreads = 2;
+
 class BackgroundWriter {
 public:
-    explicit BackgroundWriter(int queue_frames = 2);
+    explicit BackgroundWriter(int queue_frames = 2, int threads = 1);
     // Waits for the queued frames (errors are dropped: call finish() to see them).
     ~BackgroundWriter();
     BackgroundWriter(const BackgroundWriter&) = delete;
@@ -56,10 +67,10 @@ private:
     std::condition_variable changed_;
     std::deque<Job> queue_;
     std::vector<LinearImage> spare_;  // written frames' storage, reused by write()
-    bool busy_ = false;               // the thread is writing a frame taken off the queue
+    int busy_ = 0;                    // threads writing a frame taken off the queue
     bool stop_ = false;
     std::exception_ptr error_;
-    std::jthread thread_;             // last: started after the members it uses exist
+    std::vector<std::jthread> threads_;  // last: started after the members they use exist
 };
 
 }  // namespace ts::render

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numbers>
 
 #include <glm/vec3.hpp>
 
@@ -27,15 +28,33 @@ Exposure parse_exposure(std::string_view text) {
 
 double log_average_luminance(const glm::vec3* rgb, std::size_t count) {
     constexpr double kDelta = 1e-6;
-    double sum = 0;
+    // x = 2^e m with m in [1, 2): sum log x = ln 2 * sum e + log(prod m). A product of 512
+    // mantissas stays below 2^512, far from overflow, before its log is taken.
+    constexpr std::size_t kBlock = 512;
+    constexpr std::uint64_t kMantissa = (std::uint64_t(1) << 52) - 1, kOne = std::uint64_t(1023) << 52;
+    std::int64_t exponents = 0;
+    double log_mantissas = 0;
     std::size_t n = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const float l = luminance(rgb[i]);
-        if (!std::isfinite(l)) continue;
-        sum += std::log(kDelta + std::max(0.0f, l));
-        ++n;
+    for (std::size_t begin = 0; begin < count; begin += kBlock) {
+        const std::size_t end = std::min(count, begin + kBlock);
+        double product = 1;
+        for (std::size_t i = begin; i < end; ++i) {
+            const float l = luminance(rgb[i]);
+            if (!std::isfinite(l)) continue;
+            const double x = kDelta + std::max(0.0f, l);  // normal, positive: 1e-6 <= x < 2^128
+            std::uint64_t bits;
+            std::memcpy(&bits, &x, sizeof bits);
+            exponents += std::int64_t(bits >> 52) - 1023;
+            bits = (bits & kMantissa) | kOne;
+            double m;
+            std::memcpy(&m, &bits, sizeof m);
+            product *= m;
+            ++n;
+        }
+        log_mantissas += std::log(product);
     }
-    return n == 0 ? 0.0 : std::exp(sum / double(n));
+    if (n == 0) return 0.0;
+    return std::exp((double(exponents) * std::numbers::ln2 + log_mantissas) / double(n));
 }
 
 double exposure_scale(const Exposure& e, double log_average) {
@@ -106,21 +125,55 @@ Srgb8Encoder::Srgb8Encoder() {
     tabulated_ = true;
 }
 
+void Srgb8Encoder::encode_rgb(const glm::vec3* rgb, std::size_t count, float scale,
+                              std::array<std::uint8_t, 3> nan_colour, std::uint8_t* out) const {
+    if (!tabulated_) {
+        for (std::size_t i = 0; i < count; ++i, out += 3) {
+            const glm::vec3 c = rgb[i];
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+                out[0] = nan_colour[0], out[1] = nan_colour[1], out[2] = nan_colour[2];
+                continue;
+            }
+            out[0] = srgb8_code(scale * c.x), out[1] = srgb8_code(scale * c.y), out[2] = srgb8_code(scale * c.z);
+        }
+        return;
+    }
+    const std::uint8_t* const code = code_.data();
+    const float* const step = step_.data();
+    // operator() for a product of a finite channel and a finite scale: such a product is never
+    // NaN (that case of operator() returns srgb8_code(NaN), which is 0 as well).
+    auto encode = [code, step](float x) -> std::uint8_t {
+        if (!(x >= kLow)) return 0;
+        if (x >= kHigh) return 255;
+        std::uint32_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        const std::size_t i = (bits >> kShift) - kFirst;
+        return std::uint8_t(code[i] + (x >= step[i] ? 1 : 0));
+    };
+    for (std::size_t i = 0; i < count; ++i, out += 3) {
+        const glm::vec3 c = rgb[i];  // all three read before the first byte is stored
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+            out[0] = nan_colour[0], out[1] = nan_colour[1], out[2] = nan_colour[2];
+            continue;
+        }
+        const std::uint8_t r = encode(scale * c.x), g = encode(scale * c.y), b = encode(scale * c.z);
+        out[0] = r, out[1] = g, out[2] = b;
+    }
+}
+
+const Srgb8Encoder& shared_srgb8_table() {
+    static const Srgb8Encoder table;
+    return table;
+}
+
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,
                                             std::array<std::uint8_t, 3> nan_colour) {
     std::vector<std::uint8_t> out(count * 3);
-    const float s = float(scale);
-    // Small pictures: the encoder's table would cost more than it saves.
-    const bool table = count >= 16384;
-    const Srgb8Encoder encoder = table ? Srgb8Encoder() : Srgb8Encoder(Srgb8Encoder::direct);
-    for (std::size_t i = 0; i < count; ++i) {
-        const glm::vec3 c = rgb[i];
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
-            out[3 * i] = nan_colour[0], out[3 * i + 1] = nan_colour[1], out[3 * i + 2] = nan_colour[2];
-            continue;
-        }
-        for (int k = 0; k < 3; ++k) out[3 * i + std::size_t(k)] = encoder(s * c[k]);
-    }
+    // The table is built once per process (a frame sequence would rebuild it per frame), and
+    // not at all for small pictures, where building it would cost more than it saves.
+    static const Srgb8Encoder direct(Srgb8Encoder::direct);
+    const Srgb8Encoder& encoder = count >= 16384 ? shared_srgb8_table() : direct;
+    encoder.encode_rgb(rgb, count, float(scale), nan_colour, out.data());
     return out;
 }
 

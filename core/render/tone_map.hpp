@@ -34,7 +34,10 @@ inline float luminance(const glm::vec3& c) {
 }
 
 // exp(mean(log(L + delta))) over the finite pixels (NaN/inf skipped), delta = 1e-6 kcd/m^2 so
-// black pixels do not send it to 0. Returns 0 if no pixel is finite.
+// black pixels do not send it to 0. Returns 0 if no pixel is finite. The sum of the logs is
+// taken as the sum of the binary exponents plus the log of the product of the mantissas, one
+// log per 512 pixels instead of one per pixel (a 500x500 frame: 1.7 ms -> 0.5 ms); it agrees
+// with the sum of std::log to ~1e-14 relative (tests/render/tone_map_test.cpp).
 double log_average_luminance(const glm::vec3* rgb, std::size_t count);
 
 // The multiplier applied to linear radiance before the curve.
@@ -78,6 +81,13 @@ public:
     // not 0 and 255): then every call evaluates srgb8_code.
     bool tabulated() const { return tabulated_; }
 
+    // out[3i + k] = (*this)(scale * rgb[i][k]) for count pixels; a pixel with a non-finite
+    // channel becomes `nan_colour`. The same bytes as that loop, faster: the table is read
+    // through local pointers (a byte store may alias the vectors' own pointers, so a loop over
+    // operator() reloads them after every byte it writes).
+    void encode_rgb(const glm::vec3* rgb, std::size_t count, float scale, std::array<std::uint8_t, 3> nan_colour,
+                    std::uint8_t* out) const;
+
 private:
     static constexpr float kLow = 0x1p-14f, kHigh = 8.0f;
     static constexpr int kStepBits = 9;                 // steps per octave = 2^kStepBits
@@ -88,6 +98,9 @@ private:
     std::vector<std::uint8_t> code_;
     std::vector<float> step_;
 };
+
+// A tabulated Srgb8Encoder built on first use and shared by every thread (it is read-only).
+const Srgb8Encoder& shared_srgb8_table();
 
 // rgb (linear, count pixels) -> 8-bit sRGB RGB interleaved. NaN pixels become `nan_colour`.
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,

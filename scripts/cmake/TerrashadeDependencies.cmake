@@ -2,7 +2,7 @@
 find_package(Threads REQUIRED)
 find_package(PROJ CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)  # tests read images with it; later: EXR/HDR environment maps
-find_package(PNG REQUIRED)                  # 8-bit PNG output (core/raster/png_writer.hpp says why not OIIO)
+find_package(PNG REQUIRED)                  # tests: an independent PNG decoder and the reference encoder
 # Debian 12's OpenImageIO config lists /usr/include/opencv4 even when OpenCV is not installed,
 # which makes every target linking it fail to generate: drop that one directory.
 get_target_property(_ts_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
@@ -14,6 +14,8 @@ find_package(TIFF REQUIRED)
 # libzip: its Debian CMake config demands the zipcmp tools; pkg-config needs nothing more.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
+# libdeflate: PNG compression (core/raster/png_writer.hpp says why); Debian 12 ships pkg-config only.
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 find_package(glm CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(SQLite3 REQUIRED)

@@ -128,6 +128,24 @@ TEST(RelightCli, OneFramePerTimeAndSunDownWarns) {
     EXPECT_FALSE(std::filesystem::exists(dir / "frames" / "frame_0003.png"));
 }
 
+TEST(RelightCli, SeveralWriterThreadsWriteEveryFrame) {
+    const auto dir = temp_dir("relight_writers");
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop +
+                                " --times 2025-06-21T06:00:00Z/2025-06-21T16:00:00Z/PT2H --writer-threads 3 --out " +
+                                quote((dir / "frames").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir / "frames")) {
+        ++files;
+        EXPECT_EQ(e.path().filename().string().rfind("frame_000", 0), 0u) << e.path();  // no temporary left
+        EXPECT_EQ(png_size(e.path()), std::make_pair(101, 101)) << e.path();
+    }
+    EXPECT_EQ(files, 6);
+    const Result bad = run(ts_cmd("relight " + quote(kDem) + kCrop + " --times 2025-06-21T06:00:00Z/2025-06-21T08:00:00Z/PT1H" +
+                                  " --writer-threads 0 --out " + quote((dir / "bad").string())));
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+}
+
 TEST(RelightCli, TimesFileAndErrors) {
     const auto dir = temp_dir("relight_file");
     const auto times = dir / "times.txt";

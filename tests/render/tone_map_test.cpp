@@ -42,6 +42,43 @@ TEST(ToneMap, AutoExposurePutsLogAverageAtMiddleGrey) {
     EXPECT_NEAR(exposure_scale(e, avg) * avg, 0.18, 1e-9);
 }
 
+// The log-average as it was computed before (one std::log per pixel), the reference for the
+// exponent + mantissa-product form.
+double log_average_by_logs(const std::vector<glm::vec3>& px) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const auto& c : px) {
+        const float l = luminance(c);
+        if (!std::isfinite(l)) continue;
+        sum += std::log(1e-6 + std::max(0.0f, l));
+        ++n;
+    }
+    return n == 0 ? 0.0 : std::exp(sum / double(n));
+}
+
+TEST(ToneMap, LogAverageAgreesWithTheSumOfLogs) {
+    std::mt19937 rng(5);
+    int scale_changes = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        std::lognormal_distribution<float> radiance(float(trial % 7) - 3.0f, 0.5f + float(trial % 5));
+        std::vector<glm::vec3> px(std::size_t(1 + trial * 997 % 70001));
+        for (auto& c : px) c = glm::vec3(radiance(rng), radiance(rng), radiance(rng));
+        px[0] = glm::vec3(0.0f);                        // black: delta keeps the log finite
+        if (px.size() > 3) px[1] = glm::vec3(NAN);      // skipped
+        if (px.size() > 3) px[2] = glm::vec3(-1.0f);    // clamped to 0
+        if (px.size() > 9) px[7] = glm::vec3(3e38f);    // a huge finite pixel (a sun disc, and more)
+        if (px.size() > 9) px[8] = glm::vec3(INFINITY); // skipped
+        const double want = log_average_by_logs(px), got = log_average_luminance(px.data(), px.size());
+        ASSERT_NEAR(got, want, 1e-13 * want) << trial;
+        // What the pictures see: the float scale the tone map multiplies by.
+        scale_changes += float(exposure_scale(Exposure{}, got)) != float(exposure_scale(Exposure{}, want));
+    }
+    EXPECT_EQ(scale_changes, 0);
+    EXPECT_EQ(log_average_luminance(nullptr, 0), 0.0);
+    const std::vector<glm::vec3> nan(5, glm::vec3(NAN));
+    EXPECT_EQ(log_average_luminance(nan.data(), nan.size()), 0.0);
+}
+
 TEST(ToneMap, FixedEvFollowsSaturationSpeed) {
     const Exposure e = parse_exposure("15");
     EXPECT_FALSE(e.automatic);
@@ -136,13 +173,23 @@ TEST(ToneMap, LargeImagesUseTheTable) {
     std::lognormal_distribution<float> radiance(0.0f, 1.5f);
     for (auto& c : px) c = glm::vec3(radiance(rng), radiance(rng), radiance(rng));
     px[17] = glm::vec3(NAN);
-    const double scale = 0.3;
-    const auto b = tone_map_to_srgb8(px.data(), px.size(), scale, {9, 8, 7});
-    const Srgb8Encoder encoder;    for (std::size_t i = 0; i < px.size(); ++i)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint8_t want = i == 17 ? std::uint8_t(9 - k) : encoder(float(scale) * px[i][k]);
-            ASSERT_EQ(b[3 * i + std::size_t(k)], want) << i << " " << k;
-        }
+    // The table's edges and beyond: 0, negative, below 2^-14, 8 and above, the largest floats.
+    const float edges[] = {0.0f, -0.0f, -2.0f, 0x1p-15f, 0x1p-14f, 0x1.000002p-14f, 7.9999995f, 8.0f, 26.0f, 3e38f};
+    for (std::size_t k = 0; k < std::size(edges); ++k)
+        px[100 + k] = glm::vec3(edges[k], 0.5f * edges[k], -edges[k]);
+    px[200] = glm::vec3(1.0f, INFINITY, 1.0f);
+    px[201] = glm::vec3(-INFINITY, 1.0f, 1.0f);
+    const Srgb8Encoder encoder;
+    // 1e30: most products overflow to infinity (code 255).
+    for (const double scale : {0.3, 1.0, 1e30}) {
+        const auto b = tone_map_to_srgb8(px.data(), px.size(), scale, {9, 8, 7});
+        for (std::size_t i = 0; i < px.size(); ++i)
+            for (int k = 0; k < 3; ++k) {
+                const bool nan_colour = i == 17 || i == 200 || i == 201;
+                const std::uint8_t want = nan_colour ? std::uint8_t(9 - k) : encoder(float(scale) * px[i][k]);
+                ASSERT_EQ(b[3 * i + std::size_t(k)], want) << scale << " " << i << " " << k;
+            }
+    }
 }
 
 }  // namespace

@@ -155,7 +155,7 @@ void compare_devices(const BenchRelightArgs& a, const dem::Dem& dem, const rende
         p.frames_s = seconds_since(t0);
         t0 = Clock::now();
         {
-            render::BackgroundWriter writer(a.write_queue);
+            render::BackgroundWriter writer(a.write_queue, a.writer_threads);
             for (int k = 0; k < a.frames; ++k) {
                 scene.render(sun_of_frame(k, a.frames), image);
                 writer.write((dir / ("frame_" + std::to_string(k) + ".png")).string(), image, exposure, nullptr);

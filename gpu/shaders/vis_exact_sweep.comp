@@ -5,13 +5,14 @@
 // row, plus the blocker-only points of add_segment_blockers), keeping the upper convex hull of
 // the curvature-corrected profile behind it (ProfileHull) with the near field held back in a
 // queue (DelayedHull). Every sample inside the receiver window's span writes its far-field
-// slope (NaN if nothing lies far enough behind) and its position across the sweep to
-// far[line][along]; vis_exact_finish.comp does the CPU's splat as a gather.
+// slope (-infinity if nothing lies far enough behind) and its position across the sweep to
+// far[line][along], which stays NaN where the line has no sample (off the grid, in a void);
+// vis_exact_finish.comp does the CPU's splat as a gather.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
 struct RowInfo { float dx, dy, g_hi, near_steps, g_lo, dg, pad0, pad1; };
-struct FarEntry { float slope; float frac; int whole; int pad; };  // slope NaN: no sample
+struct FarEntry { float slope; float frac; int whole; int pad; };  // slope NaN: no sample; -inf: no far field
 // Per line: the first position walked and how many, decided in double on the CPU exactly as
 // the CPU sweep decides whether a line is on the grid (a float test would keep or drop lines
 // that graze the grid's edge differently), and the line's invariant n * h as a double-float.
@@ -133,12 +134,13 @@ float hull_query(float s, float u) {
     return (t.y - u) / (s - t.x);
 }
 
-// far_horizon_at: tangent of the far-field elevation, then the sample joins the blockers.
+// far_horizon_at: tangent of the far-field elevation (kNone if nothing lies far enough
+// behind), then the sample joins the blockers.
 float far_horizon_at(float s, float zz) {
     float u = zz - p.curvature * s * s;
     float slope = hull_query(s, u);
     queue_add(s, u, 0.0);
-    if (slope == kNone) return kNaN;
+    if (slope == kNone) return kNone;
     return slope - 2.0 * p.curvature * s;
 }
 

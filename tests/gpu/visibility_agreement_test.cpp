@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "core/terrain/grid_crop.hpp"
 #include "core/dem/read_dem.hpp"
@@ -339,6 +340,53 @@ TEST_F(GpuVisibilityTest, EveryTexelAgreesUpToTheGridEdgesAndAlongVoidsThatTouch
         EXPECT_LE(h.rms, kEdgeHorizonRms);
         EXPECT_LE(max_svf, kEdgeSvfTol);
         EXPECT_LE(max_sky, kEdgeSvfTol);
+    }
+}
+
+// A projected grid: N00E010 warped to UTM 32N at 92 m as gdalwarp does it (a rotated
+// footprint: row 0 void west of column 117), receivers in windows at its two northern corners.
+// Blockers come from the whole grid, so every line through a window is walked in full: in the
+// north-east window that includes lines of 1200 samples with Earth curvature whose far hull
+// holds vertices a decimetre apart 35 km back, where a bisection of the hull goes wrong in
+// float (vis_exact_sweep.comp's hull_query). Every texel of both windows, the edge rows
+// included, agrees. A few seconds: only the lines through the windows are walked.
+TEST_F(GpuVisibilityTest, ProjectedTileCornersAgreeOnEveryTexel) {
+    const std::filesystem::path utm =
+        std::filesystem::temp_directory_path() / ("ts_gpu_edges_utm_" + std::to_string(::getpid()) + ".tif");
+    const std::string cmd = "gdalwarp -q -overwrite -t_srs EPSG:32632 -tr 92 92 -r bilinear -ot Int16 " +
+                            (std::filesystem::path(TS_SHARED_DATA) / "dem" / "N00E010.hgt").string() + " " +
+                            utm.string();
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    const dem::Dem dem = dem::read_dem(utm);
+    std::filesystem::remove(utm);
+    const vis::VisibilityGrid full(dem);
+    const terrain::HeightGrid& g = full.view();
+    ASSERT_EQ(g.width, 1211);
+    ASSERT_EQ(g.height, 1203);
+    ASSERT_TRUE(std::isnan(g.at(116, 0)) && !std::isnan(g.at(117, 0)));  // the footprint's corner
+    for (const vis::ReceiverWindow win : {vis::ReceiverWindow{100, 0, 24, 4}, vis::ReceiverWindow{1195, 0, 16, 16}}) {
+        SCOPED_TRACE(std::to_string(win.col0) + "," + std::to_string(win.row0));
+        vis::HorizonOptions options;
+        options.directions = 32;
+        options.window = win;
+        const CpuRun cpu = run_cpu(g, options);
+        const auto gpu = visibility::compute(*context_, g, {.horizon = options});
+        const test_support::HorizonAgreement a =
+            test_support::compare_horizons(cpu.horizons, gpu.horizons, kHorizonTol, "TS_GPU_VISIBILITY_VERBOSE");
+        double max_svf = 0;
+        std::size_t nan_mismatches = a.nan_mismatches;
+        for (std::size_t t = 0; t < cpu.svf.size(); ++t) {
+            nan_mismatches += std::isnan(cpu.svf[t]) != std::isnan(gpu.svf[t]);
+            if (!std::isnan(cpu.svf[t]) && !std::isnan(gpu.svf[t]))
+                max_svf = std::max(max_svf, abs_diff(cpu.svf[t], gpu.svf[t]));
+        }
+        std::printf("UTM window %d,%d %dx%d: horizon max %.1e rms %.1e rad, flips %zu/%zu; svf max %.1e\n", win.col0,
+                    win.row0, win.width, win.height, a.max, a.rms, a.flips, a.compared, max_svf);
+        EXPECT_EQ(nan_mismatches, 0u);
+        EXPECT_EQ(a.flips, 0u);
+        EXPECT_LE(a.max, kHorizonTol);
+        EXPECT_LE(a.rms, kEdgeHorizonRms);
+        EXPECT_LE(max_svf, kEdgeSvfTol);
     }
 }
 

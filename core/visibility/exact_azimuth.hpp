@@ -18,17 +18,35 @@
 
 namespace ts::visibility {
 
-// Per-worker scratch: weighted sums of far-field horizon tangents over the receiver window.
+// Per-worker scratch over the receiver window: the tent-weighted sums of the far-field horizon
+// tangents of the line samples that have a far field, and the tent weight of the samples that
+// have none (nothing lies near-field far behind them: their line entered the grid, or left a
+// void, less than that before them).
 struct FarFieldSums {
-    std::vector<float> sum, weight;
+    std::vector<float> sum, weight, empty_weight;
     DelayedHull hull;
-    // One line sample's tent-weighted tangent into texel i (every splat goes through here, so
-    // the layout of the sums is this struct's business).
+    // One line sample's tent-weighted tangent into texel i, -infinity for a sample without a far
+    // field (every splat goes through here, so the layout of the sums is this struct's business).
     void add(std::size_t i, float w, float slope) {
+        if (slope == -std::numeric_limits<float>::infinity()) {
+            empty_weight[i] += w;
+            return;
+        }
         sum[i] += w * slope;
         weight[i] += w;
     }
 };
+
+// Whether a texel's far field is the mean of its samples that have one: only where those carry
+// at least as much of its tent weight as the samples without one, i.e. where the nearer lines
+// have a far field. Beside the grid's (or a void's) upwind edge a texel's own line has none
+// while the next line, one spacing away, has; that line's weight there is 0 but for rounding,
+// and taking its far field at any weight > 0 would make the texel's horizon hinge on the
+// rounding (a texel on the edge facing out would see the terrain of the row behind it).
+// The vis_exact_finish.comp shader takes the same decision.
+inline bool has_far_field(float weight, float empty_weight) {
+    return weight > 0 && weight >= empty_weight;
+}
 
 // Which family of lines sweeps azimuth phi and the numbers of the lines that can reach the window.
 struct SweepPlan {
@@ -50,14 +68,14 @@ public:
     FarFieldSums make_sums() const;
     // Stage 1 for lines n in [n_begin, n_end) of the plan, adding into `sums` (not cleared).
     void sweep_far_field(const SweepPlan& plan, long n_begin, long n_end, FarFieldSums& sums) const;
-    // Stage 2 for window rows [lr_begin, lr_end): the horizon angle (radians) of each receiver
-    // into plane[lr * width + lc]; void receivers are left untouched.
+    // Stage 2 for window rows [lr_begin, lr_end), from the arrays of a FarFieldSums: the horizon
+    // angle (radians) of each receiver into plane[lr * width + lc]; void receivers are left untouched.
     // [band_lo, band_hi] (tangents of elevation): only horizons inside it matter to the caller
     // (the sun's disc), so the near-field march stops once the horizon is known to be above
     // band_hi or cannot rise above band_lo; the stored angle is then exact only in that it stays
     // on the same side of the band. The default band keeps every angle exact.
-    void finish_rows(double phi, const float* sum, const float* weight, int lr_begin, int lr_end, float* plane,
-                     double band_lo = -std::numeric_limits<double>::infinity(),
+    void finish_rows(double phi, const float* sum, const float* weight, const float* empty_weight, int lr_begin,
+                     int lr_end, float* plane, double band_lo = -std::numeric_limits<double>::infinity(),
                      double band_hi = std::numeric_limits<double>::infinity()) const;
 
 private:

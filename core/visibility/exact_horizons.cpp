@@ -14,7 +14,8 @@
 // near_field_texels behind it (DelayedHull: amortised O(1) insertion; the query walks from the
 // previous tangent vertex), and each texel takes the tent-weighted mean of the far horizons
 // of the line samples within one line spacing of it (tangents are averaged: exact on a plane;
-// second order in the lateral offset elsewhere).
+// second order in the lateral offset elsewhere), if the samples that have a far field carry at
+// least as much of its weight as those with nothing that far behind them (has_far_field).
 //
 // Near field: a texel centre is a crease of the bilinear surface, so the slope of the first
 // texel or two changes abruptly with a lateral offset of a fraction of a texel; interpolating
@@ -126,13 +127,13 @@ double row_line_spacing(const SweepContext& cx, double sn) {
 }
 
 // Far-field horizon (its tangent) of a line sample at distance s with height z, then add the
-// sample itself as a blocker; NaN if nothing lies far enough behind it (not splatted: the near
-// field or the texel's other line decides).
+// sample itself as a blocker; -infinity if nothing lies far enough behind it (splatted all the
+// same: its weight counts against the far field of the texels beside it, has_far_field).
 [[gnu::always_inline]] inline float far_horizon_at(DelayedHull::Line& hull, double s, float z, double curvature) {
     const double u = double(z) - curvature * s * s;
     const double slope = hull.query(s, u);
     hull.add(s, u);
-    if (slope == ProfileHull::kNone) return std::numeric_limits<float>::quiet_NaN();
+    if (slope == ProfileHull::kNone) return -std::numeric_limits<float>::infinity();
     // tan(elevation): texels average tangents (equal to averaging angles to second order, and
     // exact on a plane), so the one atan per texel comes at the end.
     return float(slope - 2.0 * curvature * s);
@@ -281,7 +282,7 @@ template <bool kVoidFree>
                 r0 + 1 < g.height ? sample_height<kVoidFree>(g.at(c, r0), g.at(c, r0 + 1), fr) : g.at(c, r0);
             if (std::isnan(z)) continue;  // inside a void: neither blocks nor receives
             const float slope = far_horizon_at(hull, s, z, curvature);
-            if (std::isnan(slope) || c < first_col(cx) || c > last_col(cx)) continue;
+            if (c < first_col(cx) || c > last_col(cx)) continue;
             splat<true>(acc, cx.win, c, row, slope, abs_cs_over_h * metrics.rho(row));
         }
     }
@@ -326,7 +327,7 @@ template <bool kVoidFree>
             const float z = c0 + 1 < g.width ? sample_height<kVoidFree>(g.at(c0, r), g.at(c0 + 1, r), fc) : g.at(c0, r);
             if (std::isnan(z)) continue;
             const float slope = far_horizon_at(hull, s, z, curvature);
-            if (std::isnan(slope) || r < first_row(cx) || r > last_row(cx)) continue;
+            if (r < first_row(cx) || r > last_row(cx)) continue;
             splat<false>(acc, cx.win, r, col, slope, inv_spacing);
         }
     }
@@ -390,9 +391,10 @@ SweepPlan ExactAzimuthSweep::plan(double phi) const {
 }
 
 FarFieldSums ExactAzimuthSweep::make_sums() const {
-    FarFieldSums s{{}, {}, DelayedHull(near_m_)};
+    FarFieldSums s{{}, {}, {}, DelayedHull(near_m_)};
     s.sum.assign(texels(), 0.0f);
     s.weight.assign(texels(), 0.0f);
+    s.empty_weight.assign(texels(), 0.0f);
     return s;
 }
 
@@ -414,8 +416,8 @@ void ExactAzimuthSweep::sweep_far_field(const SweepPlan& plan, long n_begin, lon
                   : sweep_rows<false>(cx, plan.phi, n_begin, n_end, sums);
 }
 
-void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* weight, int lr_begin, int lr_end,
-                                    float* plane, double band_lo, double band_hi) const {
+void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* weight, const float* empty_weight,
+                                    int lr_begin, int lr_end, float* plane, double band_lo, double band_hi) const {
     const auto& grid = grid_;
     const auto& metrics = metrics_;
     const auto& win = win_;
@@ -493,9 +495,11 @@ void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* w
             float* __restrict best = row_best.data();
             const float* __restrict s_row = sum + i_row;
             const float* __restrict w_row = weight + i_row;
+            const float* __restrict e_row = empty_weight + i_row;
             const float* __restrict z0 = z + std::size_t(row) * w + win.col0;
             for (int lc = v_begin; lc < v_end; ++lc)
-                best[lc] = w_row[lc] > 0 ? s_row[lc] / w_row[lc] : -std::numeric_limits<float>::infinity();
+                best[lc] = has_far_field(w_row[lc], e_row[lc]) ? s_row[lc] / w_row[lc]
+                                                               : -std::numeric_limits<float>::infinity();
             for (const NearStep& st : near_steps)
                 near_step_row(z + std::size_t(row + st.row0) * w + win.col0 + st.col0, w, z0, st, v_begin, v_end, best);
             for (int lc = v_begin; lc < v_end; ++lc) {
@@ -511,7 +515,8 @@ void ExactAzimuthSweep::finish_rows(double phi, const float* sum, const float* w
                 plane[i] = std::numeric_limits<float>::quiet_NaN();
                 continue;
             }
-            const double far = weight[i] > 0 ? double(sum[i] / weight[i]) : ProfileHull::kNone;
+            const double far =
+                has_far_field(weight[i], empty_weight[i]) ? double(sum[i] / weight[i]) : ProfileHull::kNone;
             const double best = march_texel(lr, lc, far);
             plane[i] = best == ProfileHull::kNone ? 0.0f : float(fast_atan(best));
         }
@@ -540,8 +545,10 @@ HorizonSet exact_horizons(const terrain::HeightGrid& grid, const HorizonOptions&
         FarFieldSums& acc = scratch[std::size_t(worker)];
         std::fill(acc.sum.begin(), acc.sum.end(), 0.0f);
         std::fill(acc.weight.begin(), acc.weight.end(), 0.0f);
+        std::fill(acc.empty_weight.begin(), acc.empty_weight.end(), 0.0f);
         sweep.sweep_far_field(plan, plan.n_min, plan.n_max + 1, acc);
-        sweep.finish_rows(plan.phi, acc.sum.data(), acc.weight.data(), 0, out.height, out.plane(d));
+        sweep.finish_rows(plan.phi, acc.sum.data(), acc.weight.data(), acc.empty_weight.data(), 0, out.height,
+                          out.plane(d));
         if (options.progress) options.progress->advance(out.texels());
     });
     return out;

@@ -59,11 +59,13 @@ std::vector<float> horizon_in_azimuth(const terrain::HeightGrid& grid, double ph
         const std::size_t i0 = std::size_t(lr0) * win.width, i1 = std::size_t(lr1) * win.width;
         float* sum = sums[0].sum.data();
         float* weight = sums[0].weight.data();
+        float* empty_weight = sums[0].empty_weight.data();
         for (int k = 1; k < threads; ++k) {
             const FarFieldSums& other = sums[std::size_t(k)];
-            for (std::size_t i = i0; i < i1; ++i) sum[i] += other.sum[i], weight[i] += other.weight[i];
+            for (std::size_t i = i0; i < i1; ++i)
+                sum[i] += other.sum[i], weight[i] += other.weight[i], empty_weight[i] += other.empty_weight[i];
         }
-        sweep.finish_rows(plan.phi, sum, weight, lr0, lr1, plane.data(), band_lo, band_hi);
+        sweep.finish_rows(plan.phi, sum, weight, empty_weight, lr0, lr1, plane.data(), band_lo, band_hi);
     });
     return plane;
 }

@@ -13,12 +13,17 @@ namespace ts::visibility {
 
 constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
 
-// Linear interpolation between two heights, either of which may be NaN (a void).
+// Linear interpolation between two heights, either of which may be NaN (a void): the surface
+// along a texel row or column, so the same as bilinear_valid there (blend_valid_corners with
+// weights 1 - t and t): a valid height with weight only up to rounding (t within 1e-6 of the
+// void's own centre) is no surface. Else a sample at a void's centre would take the height
+// of the texel beside it on whichever side a rounding of t put it, a whole texel from there.
+// A valid height keeps its exact value (no renormalising division).
 inline float lerp_valid(float a, float b, float t) {
     const bool va = !std::isnan(a), vb = !std::isnan(b);
     if (va && vb) return a + t * (b - a);
-    if (va) return a;
-    if (vb) return b;
+    if (va && 1.0f - t > 1e-6f) return a;
+    if (vb && t > 1e-6f) return b;
     return kNoHeight;
 }
 

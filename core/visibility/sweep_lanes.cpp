@@ -305,8 +305,13 @@ struct LaneGrid {
         const VF a = gather(m, ia, z), b = gather(m & has_b, ib, z);
         const Mask va = valid(a), vb = valid(b);
         const VF both = _mm256_add_ps(a, _mm256_mul_ps(t, _mm256_sub_ps(b, a)));
-        // lerp_valid: both valid -> blend; one valid -> it; none -> NaN (a is NaN then).
-        VF out = _mm256_mask_mov_ps(a, vb & Mask(~va), b);
+        // lerp_valid: both valid -> blend; one valid -> it, if it has weight (1 - t > 1e-6 for
+        // a, t > 1e-6 for b); else NaN.
+        const VF eps = _mm256_set1_ps(1e-6f);
+        const Mask a_weighs = _mm256_cmp_ps_mask(_mm256_sub_ps(_mm256_set1_ps(1.0f), t), eps, _CMP_GT_OQ);
+        const Mask b_weighs = _mm256_cmp_ps_mask(t, eps, _CMP_GT_OQ);
+        VF out = _mm256_mask_mov_ps(_mm256_set1_ps(std::numeric_limits<float>::quiet_NaN()), va & a_weighs, a);
+        out = _mm256_mask_mov_ps(out, vb & Mask(~va) & b_weighs, b);
         out = _mm256_mask_mov_ps(out, va & vb, both);
         return _mm256_mask_mov_ps(a, has_b, out);
     }
@@ -486,11 +491,10 @@ void LaneGroup::run(long n0, FarFieldSums& acc) {
         const VD u = _mm512_sub_pd(_mm512_cvtps_pd(z), _mm512_mul_pd(_mm512_mul_pd(curv, s), s));
         const VD slope = hulls_.max_slope_from(live, s, u);
         hulls_.add(live, s, u);
-        const Mask none =
-            _mm512_cmp_pd_mask(slope, _mm512_set1_pd(-std::numeric_limits<double>::infinity()), _CMP_EQ_OQ);
-        VF tangent = _mm512_cvtpd_ps(_mm512_sub_pd(slope, _mm512_mul_pd(two_curv, s)));
-        tangent = _mm256_mask_mov_ps(tangent, none, _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN()));
-        splat_lanes(acc, live & valid(tangent), a, across, tangent);
+        // No far field (slope -infinity) stays -infinity here, and is splatted as the scalar
+        // sweep splats it (FarFieldSums::add).
+        const VF tangent = _mm512_cvtpd_ps(_mm512_sub_pd(slope, _mm512_mul_pd(two_curv, s)));
+        splat_lanes(acc, live, a, across, tangent);
     }
 }
 

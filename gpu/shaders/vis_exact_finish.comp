@@ -2,13 +2,15 @@
 // Exact horizons, per receiver texel and one azimuth (the end of the CPU's exact_horizons):
 // the tent-weighted mean of the far-field slopes of the sweep lines passing within one line
 // spacing of the texel (the CPU splats them; here each texel gathers the same lines with the
-// same weights), then the receiver's own near field marched from the texel centre in 1/4-texel
-// steps, and the elevation angle. NaN for void receivers, 0 where nothing lies that way.
+// same weights), where the lines with a far field carry at least as much of the weight as those
+// without (exact_azimuth.hpp, has_far_field), then the receiver's own near field marched from
+// the texel centre in 1/4-texel steps, and the elevation angle. NaN for void receivers, 0 where
+// nothing lies that way.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 8, local_size_y = 8) in;
 
 struct RowInfo { float dx, dy, g_hi, near_steps, g_lo, dg, pad0, pad1; };
-struct FarEntry { float slope; float frac; int whole; int pad; };
+struct FarEntry { float slope; float frac; int whole; int pad; };  // slope NaN: no sample; -inf: no far field
 
 layout(std430, set = 0, binding = 0) readonly buffer Heights { float z[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Rows { RowInfo rows[]; };
@@ -55,7 +57,7 @@ void main() {
     int along_len = p.columns == 1 ? p.win_w : p.win_h;
     int along = p.columns == 1 ? lc : lr;
     int t = p.columns == 1 ? row : col;
-    float sum = 0.0, wsum = 0.0;
+    float sum = 0.0, wsum = 0.0, empty = 0.0;
     for (int n = int(floor(center)) - 2; n <= int(ceil(center)) + 2; ++n) {
         int line = n - p.n_min;
         if (line < 0 || line >= p.total_lines) continue;
@@ -64,10 +66,14 @@ void main() {
         float spacing = p.columns == 1 ? p.h / abs(p.cs) / rho_at(e.whole, e.frac) : p.row_spacing;
         float w = 1.0 - abs(float(e.whole - t) + e.frac) / spacing;
         if (w <= 0.0) continue;
+        if (e.slope == kNone) {
+            empty += w;
+            continue;
+        }
         sum += w * e.slope;
         wsum += w;
     }
-    float best = wsum > 0.0 ? sum / wsum : kNone;
+    float best = wsum > 0.0 && wsum >= empty ? sum / wsum : kNone;
 
     // Near field, marched as the reference marches it.
     RowInfo rm = rows[row];

@@ -5,13 +5,14 @@
 // row, plus the blocker-only points of add_segment_blockers), keeping the upper convex hull of
 // the curvature-corrected profile behind it (ProfileHull) with the near field held back in a
 // queue (DelayedHull). Every sample inside the receiver window's span writes its far-field
-// slope (NaN if nothing lies far enough behind) and its position across the sweep to
-// far[line][along]; vis_exact_finish.comp does the CPU's splat as a gather.
+// slope (-infinity if nothing lies far enough behind) and its position across the sweep to
+// far[line][along], which stays NaN where the line has no sample (off the grid, in a void);
+// vis_exact_finish.comp does the CPU's splat as a gather.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
 
 struct RowInfo { float dx, dy, g_hi, near_steps, g_lo, dg, pad0, pad1; };
-struct FarEntry { float slope; float frac; int whole; int pad; };  // slope NaN: no sample
+struct FarEntry { float slope; float frac; int whole; int pad; };  // slope NaN: no sample; -inf: no far field
 // Per line: the first position walked and how many, decided in double on the CPU exactly as
 // the CPU sweep decides whether a line is on the grid (a float test would keep or drop lines
 // that graze the grid's edge differently), and the line's invariant n * h as a double-float.
@@ -23,7 +24,7 @@ layout(std430, set = 0, binding = 2) buffer Hull { vec2 hull_pts[]; };   // chun
 layout(std430, set = 0, binding = 3) writeonly buffer Far { FarEntry far[]; };  // [line][along]
 layout(std430, set = 0, binding = 4) readonly buffer Lines { LineInfo lines[]; };
 // A line's walk continued from the previous pass (see main).
-struct WalkState { float s; int prev_whole; float prev_frac; int hull_n; int q_count; int pad0, pad1, pad2; vec4 queue[64]; };
+struct WalkState { float s; int prev_whole; float prev_frac; int hull_n; int q_count; int hint; int pad1, pad2; vec4 queue[64]; };
 layout(std430, set = 0, binding = 5) buffer States { WalkState states[]; };  // chunk_lines
 
 layout(push_constant) uniform Push {
@@ -56,6 +57,7 @@ const int kRebaseEvery = 16;  // line samples between moves of the distance orig
 
 uint hull_base;
 int hull_n;
+int hint;  // the last query's tangent vertex (hull_query)
 // DelayedHull's pending points: (s, u, distance behind the newest line sample). The distance is
 // kept small and exact enough for the delay test: s itself reaches ~1e4..1e5 m, where a float
 // cannot tell the delay (2 texels) from 2 texels of a slightly narrower row.
@@ -113,7 +115,21 @@ void queue_add(float s, float u, float behind) {
     ++q_count;
 }
 
-// DelayedHull::query: largest slope from (s, u) to the points at least `delay` behind.
+// Whether the slope from (s, u) to hull vertex k + 1 is at least the slope to vertex k.
+bool rises(int k, float s, float u) {
+    vec2 a = hull_pts[hull_base + uint(k)];
+    vec2 b = hull_pts[hull_base + uint(k + 1)];
+    return (b.y - u) * (s - a.x) >= (a.y - u) * (s - b.x);
+}
+
+// DelayedHull::query: largest slope from (s, u) to the points at least `delay` behind, found
+// as ProfileHull::max_slope_from finds it: walking from the previous tangent vertex to where
+// the slopes stop rising. Not by bisection: a crossing just past kMinCrossing puts a sample,
+// the midpoint and the crossing a decimetre apart, and after rebase has moved them tens of
+// kilometres back their heights carry ~1e-4 m of float rounding, which can dent the chain
+// there (seen on a UTM tile: three vertices 0.14 m apart, 35 km back, the middle one below the
+// chord of the other two). A bisection that tests that pair can end in the dent, degrees below
+// the tangent (the exact method's CPU hull is in double); the walk stays near the tangent.
 float hull_query(float s, float u) {
     while (q_count > 0 && queue[q_head].z >= p.delay) {
         hull_insert(queue[q_head].xy);
@@ -121,24 +137,25 @@ float hull_query(float s, float u) {
         --q_count;
     }
     if (hull_n == 0) return kNone;
-    int lo = 0, hi = hull_n - 1;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        vec2 a = hull_pts[hull_base + uint(mid)];
-        vec2 b = hull_pts[hull_base + uint(mid + 1)];
-        if ((b.y - u) * (s - a.x) >= (a.y - u) * (s - b.x)) lo = mid + 1;
-        else hi = mid;
+    int i = min(hint, hull_n - 1);
+    if (i + 1 < hull_n && rises(i, s, u)) {
+        do ++i;
+        while (i + 1 < hull_n && rises(i, s, u));
+    } else {
+        while (i > 0 && !rises(i - 1, s, u)) --i;
     }
-    vec2 t = hull_pts[hull_base + uint(lo)];
+    hint = i;
+    vec2 t = hull_pts[hull_base + uint(i)];
     return (t.y - u) / (s - t.x);
 }
 
-// far_horizon_at: tangent of the far-field elevation, then the sample joins the blockers.
+// far_horizon_at: tangent of the far-field elevation (kNone if nothing lies far enough
+// behind), then the sample joins the blockers.
 float far_horizon_at(float s, float zz) {
     float u = zz - p.curvature * s * s;
     float slope = hull_query(s, u);
     queue_add(s, u, 0.0);
-    if (slope == kNone) return kNaN;
+    if (slope == kNone) return kNone;
     return slope - 2.0 * p.curvature * s;
 }
 
@@ -189,12 +206,14 @@ void main() {
     float prev_frac = 0.0;
     q_head = 0;
     hull_n = 0;
+    hint = 0;
     q_count = 0;
     if (k_begin > 0) {
         s = states[local].s;
         prev_whole = states[local].prev_whole;
         prev_frac = states[local].prev_frac;
         hull_n = states[local].hull_n;
+        hint = states[local].hint;
         q_count = states[local].q_count;
         for (int i = 0; i < q_count; ++i) queue[i] = states[local].queue[i].xyz;
     }
@@ -255,6 +274,7 @@ void main() {
     states[local].prev_whole = prev_whole;
     states[local].prev_frac = prev_frac;
     states[local].hull_n = hull_n;
+    states[local].hint = hint;
     states[local].q_count = q_count;
     for (int i = 0; i < q_count; ++i) states[local].queue[i] = vec4(queue[(q_head + i) % kQueue], 0.0);
 }

@@ -14,11 +14,12 @@
 #define kNaN uintBitsToFloat(0x7fc00000u)
 #define kNone uintBitsToFloat(0xff800000u)  // -infinity: no blocker
 
+// surface_sampling.hpp's lerp_valid: a valid height with weight only up to rounding is no surface.
 float lerp_valid(float a, float b, float t) {
     bool va = !isnan(a), vb = !isnan(b);
     if (va && vb) return a + t * (b - a);
-    if (va) return a;
-    if (vb) return b;
+    if (va && 1.0 - t > 1e-6) return a;
+    if (vb && t > 1e-6) return b;
     return kNaN;
 }
 

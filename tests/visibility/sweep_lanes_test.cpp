@@ -75,8 +75,10 @@ void expect_same_sums(const ts::terrain::HeightGrid& grid, const HorizonOptions&
         scalar_sweep.sweep_far_field(plan, plan.n_min, plan.n_max + 1, scalar);
         lane_lines += (plan.lines() / 8) * 8;
         const Mismatch ms = compare_bits(lanes.sum, scalar.sum), mw = compare_bits(lanes.weight, scalar.weight);
+        const Mismatch me = compare_bits(lanes.empty_weight, scalar.empty_weight);
         EXPECT_EQ(ms.count, 0) << what << " azimuth " << d << ": sums differ first at " << ms.first;
         EXPECT_EQ(mw.count, 0) << what << " azimuth " << d << ": weights differ first at " << mw.first;
+        EXPECT_EQ(me.count, 0) << what << " azimuth " << d << ": empty weights differ first at " << me.first;
     }
     if (sweep_lanes_supported()) {
         EXPECT_GT(lane_lines, 0) << what;
@@ -190,5 +192,6 @@ TEST(SweepLanes, DirectCallTakesWholeGroups) {
         scalar.sweep_far_field(plan, plan.n_min, plan.n_max + 1, reference);
         EXPECT_EQ(compare_bits(lanes.sum, reference.sum).count, 0) << "azimuth " << d;
         EXPECT_EQ(compare_bits(lanes.weight, reference.weight).count, 0) << "azimuth " << d;
+        EXPECT_EQ(compare_bits(lanes.empty_weight, reference.empty_weight).count, 0) << "azimuth " << d;
     }
 }

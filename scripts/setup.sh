@@ -33,6 +33,7 @@ TEST_PKGS=(
   xvfb xauth                # window tests
   python3-matplotlib python3-numpy  # charts in docs/
   unzip
+  clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
 
 need=()

@@ -3,12 +3,12 @@
 // sit on whole degrees, so the raster's outer edges lie half a cell outside them.
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <regex>
 
 #include <zip.h>
 
+#include "core/dem/decode_limits.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/util/error.hpp"
 
@@ -35,14 +35,21 @@ bool parse_hgt_corner(const std::string& name, int& lon, int& lat) {
     return lat >= -90 && lat < 90 && lon >= -180 && lon < 180;
 }
 
+// The error for a byte count that is no tile, from the size alone: callers check it before
+// they read (or inflate) anything.
+void require_hgt_size(std::uint64_t bytes, const std::string& source) {
+    if (bytes == 0) throw input_error(source, "empty file");
+    if (bytes <= std::numeric_limits<std::size_t>::max() && hgt_side(std::size_t(bytes)) != 0) return;
+    throw input_error(source, "not an SRTM .hgt tile: " + std::to_string(bytes) +
+                                  " bytes, expected 2884802 (1201x1201) or 25934402 (3601x3601); truncated?");
+}
+
 }  // namespace
 
 Dem read_hgt_bytes(const std::string& bytes, const std::string& name, const std::string& source) {
-    if (bytes.empty()) throw input_error(source, "empty file");
+    require_hgt_size(bytes.size(), source);
     const int side = hgt_side(bytes.size());
-    if (side == 0)
-        throw input_error(source, "not an SRTM .hgt tile: " + std::to_string(bytes.size()) +
-                                      " bytes, expected 2884802 (1201x1201) or 25934402 (3601x3601); truncated?");
+    require_memory_for(source, "decoding", std::uint64_t(side), std::uint64_t(side));
     int lon = 0, lat = 0;
     if (!parse_hgt_corner(std::filesystem::path(name).filename().string(), lon, lat))
         throw input_error(source, "an .hgt file name must give its south-west corner, like N45E006.hgt");
@@ -74,10 +81,17 @@ Dem read_hgt_bytes(const std::string& bytes, const std::string& name, const std:
 }
 
 Dem read_hgt(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    std::error_code ec;
+    const std::uint64_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw input_error(source, "cannot read (" + ec.message() + ")");
+    require_hgt_size(size, source);  // a mislabelled multi-gigabyte file is not read first
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw input_error(path.string(), "cannot open");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return read_hgt_bytes(bytes, path.filename().string(), path.string());
+    if (!in) throw input_error(source, "cannot open");
+    std::string bytes(std::size_t(size), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    bytes.resize(std::size_t(in.gcount()));  // shrank while read: read_hgt_bytes says so
+    return read_hgt_bytes(bytes, path.filename().string(), source);
 }
 
 Dem read_hgt_zip(const std::filesystem::path& path) {
@@ -99,8 +113,8 @@ Dem read_hgt_zip(const std::filesystem::path& path) {
         for (auto& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
         if (lower.size() < 4 || lower.compare(lower.size() - 4, 4, ".hgt") != 0) continue;
         const std::string where = source + " (" + entry + ")";
-        if (!(st.valid & ZIP_STAT_SIZE) || st.size > 64u * 1024 * 1024)
-            throw input_error(where, "entry too large for an SRTM tile");
+        if (!(st.valid & ZIP_STAT_SIZE)) throw input_error(where, "zip entry without a size");
+        require_hgt_size(st.size, where);  // before anything is inflated
         zip_file_t* f = zip_fopen_index(archive, zip_uint64_t(i), 0);
         if (!f) throw input_error(where, "cannot read the zip entry");
         std::string bytes(st.size, '\0');

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/dem/decode_limits.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::dem {
@@ -50,6 +51,8 @@ Dem mosaic(std::vector<Dem> parts) {
     }
     const long width = max_c - min_c, height = max_r - min_r;
     if (width * height > (long(1) << 31)) throw input_error(first.source, "mosaic too large");
+    // Tiles far apart on one grid span a large, mostly empty box.
+    require_memory_for(first.source, "a mosaic of", std::uint64_t(width), std::uint64_t(height));
 
     Dem out;
     out.width = int(width);

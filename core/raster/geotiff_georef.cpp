@@ -126,6 +126,12 @@ GeoTiffGeoref read_geotiff_georef(TIFF* tif, int width, int height, const std::s
         throw input_error(path, "TIFF without georeferencing (no GeoTIFF tiepoint, scale or GeoKeys)");
     if (!has_transform) throw input_error(path, "GeoTIFF without ModelTiepoint+ModelPixelScale or ModelTransformation");
     if (!has_keys || !gt.gt) throw input_error(path, "GeoTIFF without GeoKeys: unknown coordinate reference system");
+    // A zero or non-finite scale maps every cell to one point or to NaN, and every later
+    // pixel <-> map conversion (crop, info's corners) with it.
+    const geo::GeoTransform& r = raster_space;
+    const double det = r.dx_col * r.dy_row - r.dx_row * r.dy_col;
+    if (!std::isfinite(r.x0) || !std::isfinite(r.y0) || !std::isfinite(det) || det == 0)
+        throw input_error(path, "degenerate GeoTIFF georeferencing (a zero, infinite or NaN pixel scale or transformation)");
 
     const auto raster_type = short_key(gt.gt, GTRasterTypeGeoKey);
     const bool pixel_is_area = raster_type != RasterPixelIsPoint;

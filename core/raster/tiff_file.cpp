@@ -1,12 +1,16 @@
 #include "core/raster/tiff_file.hpp"
 
+#include <algorithm>
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 
 #include <xtiffio.h>
 
 #include "core/util/error.hpp"
+#include "core/util/memory.hpp"
 
 namespace ts::raster {
 
@@ -20,7 +24,16 @@ int keep_error(TIFF*, void* user_data, const char* module, const char* fmt, va_l
     return 1;  // handled: libtiff must not print it
 }
 
-int drop_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
+// Warnings are kept, not printed: most are noise (GeoTIFF tags libtiff itself does not know),
+// but some tell a reader that libtiff repaired a corrupt header (TiffFile::warnings()).
+int keep_warning(TIFF*, void* user_data, const char* module, const char* fmt, va_list ap) {
+    auto* out = static_cast<std::vector<std::string>*>(user_data);
+    if (out->size() >= 64) return 1;  // a corrupt file can warn once per tag
+    char buffer[512];
+    std::vsnprintf(buffer, sizeof buffer, fmt, ap);
+    out->push_back((module && *module ? std::string(module) + ": " : std::string()) + buffer);
+    return 1;
+}
 
 // GDAL's private tags as GDAL itself declares them (plain ASCII, no count argument); libtiff
 // would otherwise register them as anonymous fields with a different calling convention.
@@ -47,12 +60,19 @@ void register_tiff_tags() {
 }
 
 TiffFile::TiffFile(const std::filesystem::path& path, const char* mode)
-    : path_(path.string()), last_error_(std::make_unique<std::string>()) {
+    : path_(path.string()),
+      last_error_(std::make_unique<std::string>()),
+      warnings_(std::make_unique<std::vector<std::string>>()) {
     register_tiff_tags();
 
     TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
     TIFFOpenOptionsSetErrorHandlerExtR(options, keep_error, last_error_.get());
-    TIFFOpenOptionsSetWarningHandlerExtR(options, drop_warning, nullptr);
+    TIFFOpenOptionsSetWarningHandlerExtR(options, keep_warning, warnings_.get());
+    // No single libtiff allocation (tag arrays, codec buffers) larger than the memory there is:
+    // a corrupt count then fails as an error instead of swapping or being OOM-killed.
+    if (mode[0] == 'r')
+        TIFFOpenOptionsSetMaxSingleMemAlloc(
+            options, tmsize_t(std::min<std::uint64_t>(available_memory(), std::uint64_t(std::numeric_limits<tmsize_t>::max()))));
     tif_ = TIFFOpenExt(path_.c_str(), mode, options);
     TIFFOpenOptionsFree(options);
     if (!tif_) {

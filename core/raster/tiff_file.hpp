@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <tiffio.h>
 
@@ -25,12 +26,15 @@ public:
     const std::string& path() const { return path_; }
     // libtiff's last error message for this file ("" if none).
     const std::string& last_error() const { return *last_error_; }
+    // libtiff's warnings for this file so far, "module: message", at most 64.
+    const std::vector<std::string>& warnings() const { return *warnings_; }
     // Flushes and closes; throws ts::InputError if libtiff reports a write error.
     void close();
 
 private:
     std::string path_;
     std::unique_ptr<std::string> last_error_;  // heap: libtiff keeps a pointer to it
+    std::unique_ptr<std::vector<std::string>> warnings_;  // likewise
     TIFF* tif_ = nullptr;
 };
 

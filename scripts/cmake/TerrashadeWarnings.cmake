@@ -5,6 +5,16 @@ if(TERRASHADE_SANITIZE)
   target_compile_options(ts_warnings INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(ts_warnings INTERFACE -fsanitize=address,undefined)
 endif()
+# Fuzzing: our code gets libFuzzer's coverage instrumentation (the targets in tests/fuzz link
+# the fuzzer's main) and ASan + UBSan, so a bad read is a crash the fuzzer keeps.
+if(TERRASHADE_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "TERRASHADE_FUZZ needs clang with libFuzzer: -DCMAKE_CXX_COMPILER=clang++-14 (scripts/fuzz.sh)")
+  endif()
+  target_compile_options(ts_warnings INTERFACE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                                               -fno-sanitize-recover=undefined)
+  target_link_options(ts_warnings INTERFACE -fsanitize=address,undefined)
+endif()
 
 # ts_add_library(name SOURCES ... DEPS ...): one core module = one static library.
 function(ts_add_library name)

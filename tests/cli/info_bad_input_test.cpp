@@ -1,9 +1,12 @@
-// Each bad input of issue 2 through the real command: exit code 2, exactly one line on
+// Each bad input through the real command: exit code 2, exactly one line on
 // stderr naming the file, no crash. Also the happy paths a user types first.
+#include <sys/resource.h>
+
 #include <gtest/gtest.h>
 #include <zip.h>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/dem/dem_test_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace ts::cli_test;
@@ -46,7 +49,64 @@ void write_unknown_crs_tiff(const fs::path& out) {
     write_all(out, bytes);
 }
 
+// The largest resident set of any child this process has waited for, MB.
+long children_peak_rss_mb() {
+    rusage usage{};
+    getrusage(RUSAGE_CHILDREN, &usage);
+    return usage.ru_maxrss / 1024;
+}
+
 }  // namespace
+
+// A 4x4 GeoTIFF (a few hundred bytes) whose header is edited to claim 40000x40000 cells, as
+// a truncated download or a corrupt header would: refused from the file size in one line,
+// the command never growing towards the 8 GB the header implies.
+TEST(InfoBadInput, LyingHeaderIsRefusedBeforeItsRasterIsAllocated) {
+    const fs::path dir = temp_dir("info_lying");
+    const fs::path small = dir / "small.tif";
+    ASSERT_EQ(run("gdal_create -q -of GTiff -outsize 4 4 -ot Int16 -a_srs EPSG:4326 -a_ullr 10 1 11 0 " +
+                  quote(small.string())).exit_code, 0);
+    std::string bytes = read_all(small);
+    ASSERT_TRUE(ts::dem::test_files::patch_tiff_tag(bytes, 256, 40000));  // ImageWidth
+    ASSERT_TRUE(ts::dem::test_files::patch_tiff_tag(bytes, 257, 40000));  // ImageLength
+    ASSERT_TRUE(ts::dem::test_files::patch_tiff_tag(bytes, 278, 40000));  // RowsPerStrip: one strip of all rows
+    write_all(dir / "lying.tif", bytes);
+    ASSERT_LT(bytes.size(), 1000u);
+    expect_one_line_error(dir / "lying.tif", "truncated");
+    EXPECT_LT(children_peak_rss_mb(), 500);
+}
+
+// +Inf and -Inf heights in a float32 GeoTIFF are voids, like NaN: counted as voids, not in
+// the height statistics.
+TEST(Info, InfiniteHeightsAreVoids) {
+    const fs::path dir = temp_dir("info_inf");
+    const fs::path plain = dir / "plain.tif";
+    ASSERT_EQ(run("gdal_create -q -of GTiff -outsize 4 3 -ot Float32 -burn 1234.5 -a_srs EPSG:4326 -a_ullr 10 1 11 0 " +
+                  quote(plain.string())).exit_code, 0);
+    std::string bytes = read_all(plain);
+    const std::string value{'\x00', '\x50', '\x9a', '\x44'};  // 1234.5f, little-endian
+    const auto first = bytes.find(value);
+    ASSERT_NE(first, std::string::npos);
+    ASSERT_EQ(bytes.compare(first + 11 * 4, 4, value), 0);  // the 12 samples, one after another
+    bytes.replace(first, 4, std::string{'\x00', '\x00', '\x80', '\x7f'});           // +Inf
+    bytes.replace(first + 11 * 4, 4, std::string{'\x00', '\x00', '\x80', '\xff'});  // -Inf
+    write_all(dir / "inf.tif", bytes);
+
+    const Result r = run(quote(terrashade()) + " info --json " + quote((dir / "inf.tif").string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["nodata_count"], 2);
+    EXPECT_EQ(j["height_min"], 1234.5);
+    EXPECT_EQ(j["height_max"], 1234.5);
+
+    const Result all = run("gdal_create -q -of GTiff -outsize 4 3 -ot Float32 -burn -inf -a_srs EPSG:4326 -a_ullr 10 1 11 0 " +
+                           quote((dir / "minus_inf.tif").string()));
+    ASSERT_EQ(all.exit_code, 0);
+    const Result text = run(quote(terrashade()) + " info " + quote((dir / "minus_inf.tif").string()));
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("none (every cell is a void)"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("voids        12 of 12"), std::string::npos) << text.out;
+}
 
 TEST(InfoBadInput, EachCaseExitsTwoWithOneLineNamingTheFile) {
     const fs::path dir = temp_dir("info_bad");

@@ -87,6 +87,11 @@ TEST(BadInput, EachCaseIsOneLineNamingTheFile) {
     test_files::write_tiff(dir / "keyless.tif", keyless, test_files::as_bytes(std::vector<std::int16_t>(12, 1)));
     expect_error(dir / "keyless.tif", "coordinate reference system");
 
+    test_files::TiffSpec flat;  // a pixel scale of 0: every cell on one point
+    flat.cell = 0;
+    test_files::write_tiff(dir / "zero_scale.tif", flat, test_files::as_bytes(std::vector<std::int16_t>(12, 1)));
+    expect_error(dir / "zero_scale.tif", "degenerate GeoTIFF georeferencing");
+
     test_files::write_bytes(dir / "truncated.tif", [&] {
         std::ifstream in(fs::path(TS_SHARED_DATA) / "dem" / "srtm3_N39E040_1000px.tif", std::ios::binary);
         std::string head(50000, '\0');

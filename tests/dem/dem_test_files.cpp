@@ -80,4 +80,39 @@ void write_tiff(const std::filesystem::path& path, const TiffSpec& s, const std:
     XTIFFClose(tif);
 }
 
+void write_lying_tiff(const std::filesystem::path& path, int width, int height, int compression, int tile,
+                      const std::string& payload) {
+    raster::register_tiff_tags();
+    TIFF* tif = XTIFFOpen(path.string().c_str(), "w");
+    if (!tif) throw std::runtime_error("cannot write " + path.string());
+    TIFFSetField(tif, TIFFTAG_IMAGEWIDTH, std::uint32_t(width));
+    TIFFSetField(tif, TIFFTAG_IMAGELENGTH, std::uint32_t(height));
+    TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, 16);
+    TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_INT);
+    TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, 1);
+    TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+    TIFFSetField(tif, TIFFTAG_COMPRESSION, compression);
+    double tie[6] = {0, 0, 0, 10, 1, 0};
+    double scale[3] = {1.0 / 3600, 1.0 / 3600, 0};
+    TIFFSetField(tif, TIFFTAG_GEOTIEPOINTS, 6, tie);
+    TIFFSetField(tif, TIFFTAG_GEOPIXELSCALE, 3, scale);
+    GTIF* gt = GTIFNew(tif);
+    GTIFKeySet(gt, GTModelTypeGeoKey, TYPE_SHORT, 1, ModelTypeGeographic);
+    GTIFKeySet(gt, GeographicTypeGeoKey, TYPE_SHORT, 1, 4326);
+    GTIFWriteKeys(gt);
+    GTIFFree(gt);
+    auto* data = reinterpret_cast<std::uint8_t*>(const_cast<char*>(payload.data()));
+    if (tile > 0) {
+        TIFFSetField(tif, TIFFTAG_TILEWIDTH, std::uint32_t(tile));
+        TIFFSetField(tif, TIFFTAG_TILELENGTH, std::uint32_t(tile));
+        const std::uint32_t n = TIFFNumberOfTiles(tif);
+        for (std::uint32_t i = 0; i < n; ++i) TIFFWriteRawTile(tif, i, data, tmsize_t(payload.size()));
+    } else {
+        TIFFSetField(tif, TIFFTAG_ROWSPERSTRIP, std::uint32_t(height));
+        TIFFWriteRawStrip(tif, 0, data, tmsize_t(payload.size()));
+    }
+    XTIFFClose(tif);
+}
+
 }  // namespace ts::dem::test_files

@@ -46,6 +46,37 @@ struct TiffSpec {
 };
 void write_tiff(const std::filesystem::path& path, const TiffSpec& spec, const std::vector<std::uint8_t>& samples);
 
+// A georeferenced int16 TIFF whose header claims width x height cells while its blocks hold
+// only `payload` bytes each (raw, whatever `compression` says): one strip of all rows, or
+// tiles of `tile` x `tile` cells when tile > 0. The file is a few hundred bytes (strip) or
+// a few hundred KB (tiles) while the raster it claims is gigabytes.
+void write_lying_tiff(const std::filesystem::path& path, int width, int height, int compression, int tile,
+                      const std::string& payload);
+
+// Sets tag `tag` (SHORT or LONG, count 1) in the first IFD of a classic little-endian TIFF
+// held in `bytes`, as a corrupt header would have it; false if the tag is not there.
+// Header-only, so the CLI tests use it too.
+inline bool patch_tiff_tag(std::string& bytes, std::uint16_t tag, std::uint32_t value) {
+    auto u16 = [&](std::size_t at) { return std::uint16_t(std::uint8_t(bytes[at]) | std::uint8_t(bytes[at + 1]) << 8); };
+    if (bytes.size() < 8 || bytes.compare(0, 2, "II") != 0) return false;
+    std::uint32_t ifd = 0;
+    std::memcpy(&ifd, bytes.data() + 4, 4);
+    if (std::size_t(ifd) + 2 > bytes.size()) return false;
+    const int n = u16(ifd);
+    for (int i = 0; i < n && ifd + 2 + std::size_t(i + 1) * 12 <= bytes.size(); ++i) {
+        const std::size_t e = ifd + 2 + std::size_t(i) * 12;
+        if (u16(e) != tag) continue;
+        if (u16(e + 2) == 3) {
+            bytes[e + 8] = char(value & 0xff);
+            bytes[e + 9] = char(value >> 8);
+        } else {
+            std::memcpy(bytes.data() + e + 8, &value, 4);
+        }
+        return true;
+    }
+    return false;
+}
+
 // Samples as bytes, native byte order (libtiff writes them as the host's order).
 template <typename T>
 std::vector<std::uint8_t> as_bytes(const std::vector<T>& v) {

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Fuzzes the DEM readers: configures build/fuzz with clang (TERRASHADE_FUZZ=ON: libFuzzer,
+# ASan, UBSan), builds the targets of tests/fuzz and runs each for a bounded time from its
+# seed corpus. Exits non-zero when any target finds a crash (or a leak, an out-of-memory or
+# a timeout); libFuzzer then leaves the input as build/fuzz/artifacts/<reader>/crash-*: fix
+# the reader, copy the input to tests/fuzz/regressions/<reader>/ (tests/dem replays it).
+#
+#   scripts/fuzz.sh [seconds per target, default 60] [reader ...]   (hgt hgt_zip geotiff)
+#
+# New inputs that reach new code are written to build/fuzz/corpus/<reader>/, not to the
+# committed seeds. FUZZ_JOBS=N runs N processes per target (default 1).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECONDS_PER_TARGET="${1:-60}"
+shift || true
+READERS=("$@")
+[ "${#READERS[@]}" -gt 0 ] || READERS=(hgt hgt_zip geotiff)
+JOBS="${FUZZ_JOBS:-1}"
+CC_BIN="${FUZZ_CC:-clang-14}"
+CXX_BIN="${FUZZ_CXX:-clang++-14}"
+command -v "$CXX_BIN" >/dev/null || { echo "fuzz: $CXX_BIN not found (scripts/setup.sh installs clang-14)" >&2; exit 1; }
+
+ROOT="$PWD"
+BUILD="$ROOT/build/fuzz"
+cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER="$CC_BIN" -DCMAKE_CXX_COMPILER="$CXX_BIN" \
+  -DTERRASHADE_FUZZ=ON -DTERRASHADE_BUILD_GPU=OFF -DTERRASHADE_BUILD_TESTS=OFF >/dev/null
+targets=()
+for r in "${READERS[@]}"; do targets+=("fuzz_$r"); done
+cmake --build "$BUILD" --target "${targets[@]}" -j"${FUZZ_BUILD_JOBS:-2}"
+
+status=0
+for r in "${READERS[@]}"; do
+  corpus="$BUILD/corpus/$r"
+  artifacts="$BUILD/artifacts/$r"
+  mkdir -p "$corpus" "$artifacts"
+  log="$BUILD/fuzz_$r.log"
+  echo "fuzz: $r for ${SECONDS_PER_TARGET}s (log $log)"
+  # -timeout: one input taking over 10 s is a hang. The readers' memory guard is capped at
+  # 32 MB while fuzzing (dem_fuzz_inputs.hpp), so one allocation over 128 MB is a reader
+  # spending before it checked (-malloc_limit_mb), and 2 GB resident a leak (-rss_limit_mb).
+  args=(-max_total_time="$SECONDS_PER_TARGET" -timeout=10 -malloc_limit_mb=128 -rss_limit_mb=2048 -print_final_stats=1
+        -artifact_prefix="$artifacts/")
+  # Several jobs log to fuzz-N.log in the current folder: run them from the artifacts folder.
+  if [ -f "tests/fuzz/$r.dict" ]; then args+=(-dict="$ROOT/tests/fuzz/$r.dict"); fi
+  if [ "$JOBS" -gt 1 ]; then args+=(-jobs="$JOBS" -workers="$JOBS"); fi
+  if ! (cd "$artifacts" && "$BUILD/tests/fuzz/fuzz_$r" "${args[@]}" "$corpus" "$ROOT/tests/fuzz/corpus/$r") \
+      >"$log" 2>&1; then
+    echo "fuzz: $r FAILED; inputs in $artifacts:" >&2
+    ls -1 "$artifacts" | grep -E "^(crash|leak|oom|timeout|slow-unit)-" >&2 || true
+    grep -m1 -E "ERROR: |runtime error" "$log" >&2 || tail -5 "$log" >&2
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|cov: " "$log" | tail -2 | sed "s/^/fuzz: $r: /"
+  fi
+done
+exit "$status"

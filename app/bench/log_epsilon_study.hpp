@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace ts::sh {
+namespace ts::bench {
 
 struct LogEpsilonRow {
     std::string lobe;  // "diffuse", "phong10", "phong100", or "sphere" (a 20 deg sphere blocker)
@@ -28,4 +28,4 @@ std::vector<LogEpsilonRow> run_visibility_epsilon_study(const std::vector<double
                                                         const std::vector<int>& blocker_counts, int scenes);
 std::string log_epsilon_csv(const std::vector<LogEpsilonRow>& rows);
 
-}  // namespace ts::sh
+}  // namespace ts::bench

@@ -14,7 +14,7 @@
 #include <memory>
 #include <string>
 
-#include "app/command.hpp"
+#include "app/bench/bench_command.hpp"
 #include "app/render_device.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "app/command.hpp"
-#include "app/csv_number.hpp"
+#include "app/bench/bench_command.hpp"
+#include "app/bench/csv_number.hpp"
 #include "app/dem_input.hpp"
 #include "core/terrain/grid_crop.hpp"
 #include "core/util/atomic_file.hpp"

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "app/csv_number.hpp"
-#include "app/command.hpp"
+#include "app/bench/bench_command.hpp"
+#include "app/bench/csv_number.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/util/atomic_file.hpp"

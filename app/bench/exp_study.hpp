@@ -8,17 +8,17 @@
 #include "core/sh/exp_method.hpp"
 #include "core/sh/sh_exp.hpp"
 
-namespace ts::sh {
+namespace ts::bench {
 
 // One method with its parameters, and a label naming them ("order=8", "threshold=1").
 struct ExpConfig {
-    ExpMethod method;
-    ExpOptions options;
+    sh::ExpMethod method;
+    sh::ExpOptions options;
     std::string param;
 };
 
 // Every method with default options (param "default").
-std::vector<ExpConfig> default_exp_configs(const ExpOptions& options = {});
+std::vector<ExpConfig> default_exp_configs(const sh::ExpOptions& options = {});
 // A sweep of each method's accuracy knob: Taylor order 2..12 (taylor, dc_isolation),
 // thresholds 0.125..4 (scaling_squaring, hybrid) and optimal_linear once.
 std::vector<ExpConfig> sweep_exp_configs();
@@ -65,4 +65,4 @@ std::vector<ExpStudyRow> run_exp_study(const ExpStudyOptions& options);
 // CSV with a header line; the columns are the fields of ExpStudyRow.
 std::string exp_study_csv(const std::vector<ExpStudyRow>& rows);
 
-}  // namespace ts::sh
+}  // namespace ts::bench

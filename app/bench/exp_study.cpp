@@ -1,4 +1,4 @@
-#include "core/sh/exp_study.hpp"
+#include "app/bench/exp_study.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,10 @@
 #include "core/sh/exact_exp.hpp"
 #include "core/sh/log_scenes.hpp"
 
-namespace ts::sh {
+namespace ts::bench {
+
+using namespace ts::sh;
+
 namespace {
 
 struct Case {
@@ -171,4 +174,4 @@ std::string exp_study_csv(const std::vector<ExpStudyRow>& rows) {
     return s;
 }
 
-}  // namespace ts::sh
+}  // namespace ts::bench

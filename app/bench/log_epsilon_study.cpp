@@ -1,15 +1,18 @@
-#include "core/sh/log_epsilon_study.hpp"
+#include "app/bench/log_epsilon_study.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-#include "core/sh/exp_study.hpp"
+#include "app/bench/exp_study.hpp"
 #include "core/sh/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sphere_blocker.hpp"
 #include "core/sh/sphere_quadrature.hpp"
 
-namespace ts::sh {
+namespace ts::bench {
+
+using namespace ts::sh;
+
 namespace {
 
 LogEpsilonRow evaluate(const std::string& name, double eps, const ShVec& f_log, const ShVec& truth, double albedo_true,
@@ -88,4 +91,4 @@ std::string log_epsilon_csv(const std::vector<LogEpsilonRow>& rows) {
     return s;
 }
 
-}  // namespace ts::sh
+}  // namespace ts::bench

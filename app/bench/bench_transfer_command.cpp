@@ -16,7 +16,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "app/command.hpp"
+#include "app/bench/bench_command.hpp"
 #include "app/dem_input.hpp"
 #include "core/render/terrain_normals.hpp"
 #include "core/render/transfer.hpp"

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "app/csv_number.hpp"
-#include "app/command.hpp"
+#include "app/bench/bench_command.hpp"
+#include "app/bench/csv_number.hpp"
 #include "app/dem_input.hpp"
 #include "core/light/sky.hpp"
 #include "core/light/sun_position.hpp"

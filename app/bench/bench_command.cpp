@@ -1,16 +1,17 @@
 // `terrashade bench <what>`: measurements behind the charts in docs/. Each measured area is
 // one subcommand of `bench`; this file holds `bench sh` (SH exponentiation error and cost,
 // log-epsilon trade-off, the optimal-linear fit). Another area adds itself by declaring
-// `void add_bench_<area>_command(CLI::App& bench);` in app/command.hpp and calling it from
-// add_bench_command below.
+// `void add_bench_<area>_command(CLI::App& bench);` in app/bench/bench_command.hpp and calling
+// it from add_bench_command below.
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_command.hpp"
+#include "app/bench/exp_study.hpp"
+#include "app/bench/log_epsilon_study.hpp"
 #include "app/command.hpp"
-#include "core/sh/exp_study.hpp"
-#include "core/sh/log_epsilon_study.hpp"
 #include "core/sh/optimal_linear_fit.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
@@ -45,32 +46,32 @@ void run_bench_sh(const BenchShOptions& o) {
         std::printf("optimal-linear table: %zu rows -> %s\n", rows.size(), o.fit_table.c_str());
         return;
     }
-    sh::ExpStudyOptions so;
+    bench::ExpStudyOptions so;
     so.scenes = o.scenes;
     so.log_eps = o.log_eps;
-    so.configs = o.sweep ? sh::sweep_exp_configs() : sh::default_exp_configs(o.exp);
+    so.configs = o.sweep ? bench::sweep_exp_configs() : bench::default_exp_configs(o.exp);
     if (!o.methods.empty()) {
-        std::vector<sh::ExpConfig> kept;
+        std::vector<bench::ExpConfig> kept;
         for (const auto& c : so.configs)
             for (const auto& m : o.methods)
                 if (c.method == sh::parse_exp_method(m)) kept.push_back(c);
         so.configs = kept;
     }
-    const auto rows = sh::run_exp_study(so);
+    const auto rows = bench::run_exp_study(so);
     std::printf("%-6s %-17s %-14s %8s %9s %9s %10s %10s %10s %8s %9s %9s %4s\n", "kind", "method", "param", "blockers",
                 "magnitude", "dc", "rms_error", "rms_errmax", "vs_truth", "ns/exp", "min", "max", "nan");
     for (const auto& r : rows)
         std::printf("%-6s %-17s %-14s %8d %9.3g %9.3g %10.3g %10.3g %10.3g %8.1f %9.3g %9.3g %4d\n", r.kind.c_str(),
                     r.method.c_str(), r.param.c_str(), r.blockers, r.magnitude, r.dc, r.rms_error, r.rms_error_max,
                     r.truth_rms_error, r.ns_per_exp, r.min_value, r.max_value, r.nonfinite);
-    if (!o.csv.empty()) write_text(o.csv, sh::exp_study_csv(rows));
+    if (!o.csv.empty()) write_text(o.csv, bench::exp_study_csv(rows));
     if (!o.eps_csv.empty()) {
         const std::vector<double> eps = {0.3, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 1e-4, 1e-5, 1e-6};
-        auto rows_eps = sh::run_log_epsilon_study(eps);
-        const auto vis = sh::run_visibility_epsilon_study(
+        auto rows_eps = bench::run_log_epsilon_study(eps);
+        const auto vis = bench::run_visibility_epsilon_study(
             {0.3, 0.1, 0.05, 0.02, 0.01, 1e-3, 1e-5}, {0, 4, 16, 64, 256, 500}, o.scenes / 2 > 0 ? o.scenes / 2 : 1);
         rows_eps.insert(rows_eps.end(), vis.begin(), vis.end());
-        write_text(o.eps_csv, sh::log_epsilon_csv(rows_eps));
+        write_text(o.eps_csv, bench::log_epsilon_csv(rows_eps));
     }
 }
 
@@ -116,7 +117,7 @@ void add_bench_command(CLI::App& root) {
     add_bench_relight_command(*bench);
     add_bench_transfer_command(*bench);
     add_bench_sun_command(*bench);
-    // Further areas: add_bench_<area>_command(*bench); declared in app/command.hpp.
+    // Further areas: add_bench_<area>_command(*bench); declared in app/bench/bench_command.hpp.
 }
 
 }  // namespace ts::app

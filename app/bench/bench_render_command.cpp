@@ -21,6 +21,7 @@
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
+#include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
 #include "core/light/sky.hpp"
 #include "core/light/sun_position.hpp"
@@ -82,33 +83,6 @@ std::string label_of(double hours) {
     if (hours < 11.0) return "morning";
     if (hours <= 13.0) return "noon";
     return "evening";
-}
-
-struct RelativeError {
-    double rmse = kNaN, p99 = kNaN, bias = kNaN;
-};
-// RMSE and bias over the reference's mean; p99 of |error| / reference per texel.
-RelativeError relative_error(const std::vector<double>& got, const std::vector<double>& ref) {
-    double se = 0, sum_ref = 0, sum_err = 0;
-    std::vector<double> rel;
-    for (std::size_t i = 0; i < got.size(); ++i) {
-        const double e = got[i] - ref[i];
-        se += e * e;
-        sum_err += e;
-        sum_ref += ref[i];
-        if (ref[i] > 0) rel.push_back(std::abs(e) / ref[i]);
-    }
-    RelativeError r;
-    if (got.empty() || !(sum_ref > 0)) return r;
-    const double n = double(got.size()), mean = sum_ref / n;
-    r.rmse = std::sqrt(se / n) / mean;
-    r.bias = sum_err / n / mean;
-    if (!rel.empty()) {
-        const std::size_t k = std::min(rel.size() - 1, std::size_t(0.99 * double(rel.size())));
-        std::nth_element(rel.begin(), rel.begin() + std::ptrdiff_t(k), rel.end());
-        r.p99 = rel[k];
-    }
-    return r;
 }
 
 void print_row(const Row& r) {
@@ -228,10 +202,10 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
             (lit ? want_lit : want_shadow).push_back(b);
         }
         row.samples = int(got.size());
-        const RelativeError all = relative_error(got, want);
+        const bench::RelativeErrors all = bench::relative_errors(got, want);
         row.rel_rmse = all.rmse, row.rel_p99 = all.p99, row.rel_bias = all.bias;
-        row.sun_lit_rel_rmse = relative_error(got_lit, want_lit).rmse;
-        row.shadow_rel_rmse = relative_error(got_shadow, want_shadow).rmse;
+        row.sun_lit_rel_rmse = bench::relative_errors(got_lit, want_lit).rmse;
+        row.shadow_rel_rmse = bench::relative_errors(got_shadow, want_shadow).rmse;
 
         // Shadow masks over every texel.
         const light::SunDisc disc = sky->sun();
@@ -242,23 +216,15 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
         const std::vector<float>& ren_sun = renderer.sun_visibility();
         const bool sun_up = (disc.irradiance.x > 0 || disc.irradiance.y > 0 || disc.irradiance.z > 0) &&
                             sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
-        long inter = 0, uni = 0, differ = 0, shadowed = 0, n = 0;
-        double abs_sum = 0;
+        bench::MaskAgreement masks;
         for (std::size_t i = 0; i < ref_sun.size(); ++i) {
             if (std::isnan(ref_sun[i]) || std::isnan(ren_sun[i])) continue;
-            const float rs = sun_up ? ref_sun[i] : 0.0f;
-            const bool a = ren_sun[i] < 0.5f, b = rs < 0.5f;
-            inter += a && b;
-            uni += a || b;
-            differ += a != b;
-            shadowed += b;
-            abs_sum += std::abs(double(ren_sun[i]) - rs);
-            ++n;
+            masks.add(sun_up ? ref_sun[i] : 0.0f, ren_sun[i]);  // the sun below the horizon: all shadow
         }
-        row.iou = uni > 0 ? double(inter) / double(uni) : 1.0;
-        row.mask_disagree = n > 0 ? double(differ) / double(n) : kNaN;
-        row.sun_fraction_mae = n > 0 ? abs_sum / double(n) : kNaN;
-        row.shadow_share = n > 0 ? double(shadowed) / double(n) : kNaN;
+        row.iou = masks.iou();
+        row.mask_disagree = masks.disagreement();
+        row.sun_fraction_mae = masks.mean_abs_difference();
+        row.shadow_share = masks.reference_shadow_share();
         rows.push_back(row);
         print_row(row);
     }

@@ -14,6 +14,7 @@
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
+#include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
 #include "core/terrain/grid_crop.hpp"
 #include "core/util/atomic_file.hpp"
@@ -51,31 +52,10 @@ double ms_since(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-struct Agreement {
-    double iou = 1, mae = 0;
-    long nan_mismatch = 0;
-    long shadow_exact = 0, shadow_sweep = 0;
-};
-
 // Shadow masks (fraction < 0.5) and fractions of the sweep against the exact path.
-Agreement compare(const std::vector<float>& exact, const std::vector<float>& sweep) {
-    long inter = 0, uni = 0, n = 0;
-    double abs_sum = 0;
-    Agreement a;
-    for (std::size_t i = 0; i < exact.size(); ++i) {
-        const bool ne = std::isnan(exact[i]), ns = std::isnan(sweep[i]);
-        if (ne != ns) ++a.nan_mismatch;
-        if (ne || ns) continue;
-        const bool se = exact[i] < 0.5f, ss = sweep[i] < 0.5f;
-        inter += se && ss;
-        a.shadow_exact += se;
-        a.shadow_sweep += ss;
-        uni += se || ss;
-        abs_sum += std::abs(double(exact[i]) - sweep[i]);
-        ++n;
-    }
-    a.iou = uni > 0 ? double(inter) / double(uni) : 1.0;
-    a.mae = n > 0 ? abs_sum / double(n) : 0.0;
+bench::MaskAgreement compare(const std::vector<float>& exact, const std::vector<float>& sweep) {
+    bench::MaskAgreement a;
+    for (std::size_t i = 0; i < exact.size(); ++i) a.add(exact[i], sweep[i]);
     return a;
 }
 
@@ -100,11 +80,11 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
     visibility::SunShadowSweep sweep(grid, so);
     const double setup_ms = ms_since(t0);
 
-    double exact_ms = 0, sweep_ms = 0, iou_sum = 0, mae_sum = 0, iou_min = 2, mae_max = -1;
+    double exact_ms = 0, sweep_ms = 0, iou_min = 2;
     double worst_az = 0, worst_el = 0;
     long worst_exact = 0, worst_sweep = 0;
     long nan_mismatch = 0;
-    int positions = 0;
+    std::vector<double> all_iou, all_mae;  // one per sun position
     std::vector<float> fast;
     sweep.compute(180.0, 30.0, fast);  // warm-up (first touch), not timed
     std::printf("%s: %dx%d (of %dx%d), sweep setup %.2f ms, near field %.1f texels (1/4 steps to %.1f, then %.2f), %d threads\n",
@@ -113,7 +93,8 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
     std::printf("  %6s %10s %10s %7s %9s %9s %10s\n", "elev", "exact_ms", "sweep_ms", "ratio", "iou_min", "iou_mean",
                 "mae_mean");
     for (double el : o.elevations) {
-        double e_ms = 0, s_ms = 0, imin = 2, isum = 0, msum = 0;
+        double e_ms = 0, s_ms = 0;
+        std::vector<double> iou, mae;  // one per azimuth
         for (double az : o.azimuths) {
             t0 = Clock::now();
             const std::vector<float> exact = visibility::sun_visibility(grid, az, el, eo);
@@ -121,29 +102,31 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
             t0 = Clock::now();
             for (int k = 0; k < o.frames; ++k) sweep.compute(az, el, fast);
             s_ms += ms_since(t0) / o.frames;
-            const Agreement a = compare(exact, fast);
+            const bench::MaskAgreement a = compare(exact, fast);
             nan_mismatch += a.nan_mismatch;
-            if (a.iou < iou_min)
-                iou_min = a.iou, worst_az = az, worst_el = el, worst_exact = a.shadow_exact,
-                worst_sweep = a.shadow_sweep;
-            imin = std::min(imin, a.iou);
-            isum += a.iou;
-            msum += a.mae;
-            mae_max = std::max(mae_max, a.mae);
+            if (a.iou() < iou_min)
+                iou_min = a.iou(), worst_az = az, worst_el = el, worst_exact = a.reference_shadow,
+                worst_sweep = a.test_shadow;
+            iou.push_back(a.iou());
+            mae.push_back(a.compared > 0 ? a.mean_abs_difference() : 0.0);  // all void: counts 0
         }
         const double n = double(o.azimuths.size());
+        const double imin = bench::min_value(iou), imean = bench::mean(iou), mmean = bench::mean(mae);
         rows.push_back({std::filesystem::path(path).filename().string(), near_field, el, e_ms / n, s_ms / n, imin,
-                        isum / n, msum / n});
+                        imean, mmean});
         std::printf("  %6.1f %10.2f %10.3f %7.1f %9.4f %9.4f %10.5f\n", el, e_ms / n, s_ms / n, e_ms / s_ms, imin,
-                    isum / n, msum / n);
-        exact_ms += e_ms, sweep_ms += s_ms, iou_sum += isum, mae_sum += msum;
-        positions += int(o.azimuths.size());
+                    imean, mmean);
+        exact_ms += e_ms, sweep_ms += s_ms;
+        all_iou.insert(all_iou.end(), iou.begin(), iou.end());
+        all_mae.insert(all_mae.end(), mae.begin(), mae.end());
     }
+    const int positions = int(all_iou.size());
     std::printf("  all %d sun positions: exact %.2f ms, sweep %.3f ms per frame (%.1fx faster); shadow-mask IoU "
                 "mean %.4f, min %.4f (az %.1f, el %.1f: %ld shadowed texels exact, %ld sweep); mean |fraction diff| %.5f (worst position %.5f); "
                 "void mismatches %ld\n",
-                positions, exact_ms / positions, sweep_ms / positions, exact_ms / sweep_ms, iou_sum / positions,
-                iou_min, worst_az, worst_el, worst_exact, worst_sweep, mae_sum / positions, mae_max, nan_mismatch);
+                positions, exact_ms / positions, sweep_ms / positions, exact_ms / sweep_ms, bench::mean(all_iou),
+                iou_min, worst_az, worst_el, worst_exact, worst_sweep, bench::mean(all_mae), bench::max_value(all_mae),
+                nan_mismatch);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/bench/bench_command.hpp"
+#include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
 #include "core/render/terrain_normals.hpp"
 #include "core/render/transfer.hpp"
@@ -217,21 +218,19 @@ void run_bench_transfer(const BenchTransferOptions& o) {
         double worst_t = 0, worst_rgb = 0;
         std::size_t beyond = 0;
         for (std::size_t t = 0; t < texels; ++t) {
-            double norm = 0, diff = 0;
+            std::array<double, 16> c, g;  // the texel's T on each path ([coefficient][texel] planes)
+            double norm = 0;
             for (std::size_t i = 0; i < 16; ++i) {
-                const double c = t_cpu[i * texels + t], g = t_gpu[i * texels + t];
-                norm += c * c;
-                diff = std::max(diff, std::abs(c - g));
+                c[i] = t_cpu[i * texels + t], g[i] = t_gpu[i * texels + t];
+                norm += c[i] * c[i];
             }
             if (std::isnan(norm)) continue;
-            const double rel = diff / std::max(std::sqrt(norm), 1e-30);
+            const double rel = bench::max_abs_difference(c, g) / std::max(std::sqrt(norm), 1e-30);
             if (rel > 1e-4) ++beyond;
             else worst_t = std::max(worst_t, rel);
-            for (int c = 0; c < 3; ++c) {
-                const double ref = rgb_cpu[t][c];
-                if (std::abs(ref) > 1e-6)
-                    worst_rgb = std::max(worst_rgb, std::abs(double(rgb_gpu[t][c]) - ref) / std::abs(ref));
-            }
+            const std::array<double, 3> ref = {rgb_cpu[t].x, rgb_cpu[t].y, rgb_cpu[t].z};
+            const std::array<double, 3> got = {rgb_gpu[t].x, rgb_gpu[t].y, rgb_gpu[t].z};
+            worst_rgb = std::max(worst_rgb, bench::max_relative_error(got, ref, 1e-6));
         }
         std::printf("agreement: T within %.1e of each texel's norm (%zu texels beyond 1e-4), rgb within %.1e "
                     "relative\n",

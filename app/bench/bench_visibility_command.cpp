@@ -21,6 +21,7 @@
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
+#include "app/bench/error_stats.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/util/atomic_file.hpp"
@@ -78,35 +79,24 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Interior texels (the outermost ring has no terrain beyond it in some directions; its
-// horizon is a convention) where both rasters are valid.
-struct ErrorStats {
-    double rmse = kNaN, p99 = kNaN;
-};
-ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b, int w, int h, double scale = 1.0) {
+// Absolute errors (RMSE, 99th percentile) over the interior texels (the outermost ring has no
+// terrain beyond it in some directions; its horizon is a convention) where both rasters are valid.
+bench::AbsoluteErrors compare(const std::vector<float>& a, const std::vector<float>& b, int w, int h) {
     std::vector<double> err;
     for (int r = 1; r + 1 < h; ++r)
         for (int c = 1; c + 1 < w; ++c) {
             const std::size_t i = std::size_t(r) * w + c;
             if (std::isnan(a[i]) || std::isnan(b[i])) continue;
-            err.push_back(std::abs(double(a[i]) - b[i]) * scale);
+            err.push_back(std::abs(double(a[i]) - b[i]));
         }
-    if (err.empty()) return {};
-    double se = 0;
-    for (double e : err) se += e * e;
-    const std::size_t k = std::min(err.size() - 1, std::size_t(0.99 * double(err.size())));
-    std::nth_element(err.begin(), err.begin() + std::ptrdiff_t(k), err.end());
-    return {std::sqrt(se / double(err.size())), err[k]};
+    return bench::absolute_errors(std::move(err));
 }
 
-ErrorStats compare_horizons(const visibility::HorizonSet& ref, const visibility::HorizonSet& set) {
+// The same for horizon angles in degrees, the D planes of `set` against the planes of `ref`
+// at the same azimuths, stacked as one sample.
+bench::AbsoluteErrors compare_horizons(const visibility::HorizonSet& ref, const visibility::HorizonSet& set) {
     const int step = ref.directions / set.directions;
-    std::vector<float> a, b;
-    a.reserve(set.angle.size());
-    b.reserve(set.angle.size());
-    // Stack the planes so compare() sees one long raster with the same ring excluded per plane.
     std::vector<double> err;
-    double se = 0;
     for (int d = 0; d < set.directions; ++d) {
         const float* pr = ref.plane(d * step);
         const float* ps = set.plane(d);
@@ -114,15 +104,10 @@ ErrorStats compare_horizons(const visibility::HorizonSet& ref, const visibility:
             for (int c = 1; c + 1 < set.width; ++c) {
                 const std::size_t i = std::size_t(r) * set.width + c;
                 if (std::isnan(pr[i]) || std::isnan(ps[i])) continue;
-                const double e = std::abs(double(pr[i]) - ps[i]) * 180.0 / kPi;
-                err.push_back(e);
-                se += e * e;
+                err.push_back(std::abs(double(pr[i]) - ps[i]) * 180.0 / kPi);
             }
     }
-    if (err.empty()) return {};
-    const std::size_t k = std::min(err.size() - 1, std::size_t(0.99 * double(err.size())));
-    std::nth_element(err.begin(), err.begin() + std::ptrdiff_t(k), err.end());
-    return {std::sqrt(se / double(err.size())), err[k]};
+    return bench::absolute_errors(std::move(err));
 }
 
 // A centred window of at most n x n texels (the raymarch reference is slow).
@@ -294,11 +279,9 @@ bool have_program(const char* name) {
     return std::system(("command -v " + std::string(name) + " > /dev/null 2>&1").c_str()) == 0;
 }
 
-// The median of a few timings (the machine is shared: one run can be 2x another).
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? kNaN : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+// Timings are the median of a few runs (bench::median): the machine is shared, one run can be
+// 2x another.
+using bench::median;
 
 // svf RMSE of `svf` (whole-grid layout) against `ref` (the window's layout), interior of the window.
 double window_svf_rmse(std::span<const float> svf, int grid_w, const visibility::ReceiverWindow& w,
@@ -544,10 +527,10 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
                     r.width = win.width;
                     r.height = win.height;
                     r.directions = d;
-                    const ErrorStats hz = compare_horizons(ref, set);
+                    const bench::AbsoluteErrors hz = compare_horizons(ref, set);
                     r.horizon_rmse_deg = hz.rmse;
                     r.horizon_p99_deg = hz.p99;
-                    const ErrorStats sv = compare(visibility::svf_raster(set, visibility::WedgeRule::linear, o.threads),
+                    const bench::AbsoluteErrors sv = compare(visibility::svf_raster(set, visibility::WedgeRule::linear, o.threads),
                                                   svf_ref, win.width, win.height);
                     r.svf_rmse = sv.rmse;
                     r.svf_p99 = sv.p99;
@@ -555,7 +538,7 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
                         compare(visibility::svf_raster(set, visibility::WedgeRule::constant, o.threads), svf_ref,
                                 win.width, win.height)
                             .rmse;
-                    const ErrorStats sk =
+                    const bench::AbsoluteErrors sk =
                         compare(visibility::sky_visible_raster(set, visibility::WedgeRule::linear, o.threads), sky_ref,
                                 win.width, win.height);
                     r.sky_rmse = sk.rmse;

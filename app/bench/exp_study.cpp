@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "app/bench/error_stats.hpp"
 #include "core/sh/exact_exp.hpp"
 #include "core/sh/log_scenes.hpp"
 
@@ -50,12 +51,17 @@ ExpStudyRow evaluate(const Case& c, const ExpConfig& config, const ExactExp& exa
     row.method = std::string(to_string(method));
     row.param = config.param;
     row.blockers = c.blockers;
-    row.truth_rms_error = row.exact_truth_rms_error = row.binary_rms_error = 0.0;
     row.min_value = std::numeric_limits<double>::infinity();
     row.max_value = -std::numeric_limits<double>::infinity();
     row.exact_min = row.min_value;
     row.exact_max = row.max_value;
-    const double n = static_cast<double>(c.logs.size());
+    // Per vector of the case (at least one: scenes >= 1); the row reports their means and the
+    // largest RMS error. A vector with a non-finite coefficient is counted in `nonfinite` and
+    // weighs 0 in the means.
+    std::vector<double> magnitude, dc, rms, rel, truth_rms, exact_truth_rms, binary_rms;
+    const auto weigh_zero = [&] {
+        for (auto* v : {&magnitude, &dc, &rms, &rel, &truth_rms, &exact_truth_rms, &binary_rms}) v->push_back(0.0);
+    };
     for (std::size_t v = 0; v < c.logs.size(); ++v) {
         float in[kCount], out[kCount];
         for (int i = 0; i < kCount; ++i) in[i] = static_cast<float>(c.logs[v][i]);
@@ -68,14 +74,15 @@ ExpStudyRow evaluate(const Case& c, const ExpConfig& config, const ExactExp& exa
         }
         if (!finite) {
             ++row.nonfinite;
+            weigh_zero();
             continue;
         }
+        // |a - b| / sqrt(4 pi) is the RMS over the sphere of the difference (orthonormal basis).
         const double err = norm(approx - c.exact[v]);
-        row.magnitude += non_dc_norm(c.logs[v]) / n;
-        row.dc += c.logs[v][0] / n;
-        row.rms_error += err / kSqrt4Pi / n;
-        row.rms_error_max = std::max(row.rms_error_max, err / kSqrt4Pi);
-        row.rel_error += err / std::max(norm(c.exact[v]), 1e-300) / n;
+        magnitude.push_back(non_dc_norm(c.logs[v]));
+        dc.push_back(c.logs[v][0]);
+        rms.push_back(err / kSqrt4Pi);
+        rel.push_back(err / std::max(norm(c.exact[v]), 1e-300));
         const ExactExp::Range r = exact.range(approx);
         row.min_value = std::min(row.min_value, r.min);
         row.max_value = std::max(row.max_value, r.max);
@@ -83,12 +90,21 @@ ExpStudyRow evaluate(const Case& c, const ExpConfig& config, const ExactExp& exa
         row.exact_min = std::min(row.exact_min, e.min);
         row.exact_max = std::max(row.exact_max, e.max);
         if (!c.truth.empty()) {
-            row.truth_rms_error += norm(approx - c.truth[v]) / kSqrt4Pi / n;
-            row.exact_truth_rms_error += norm(c.exact[v] - c.truth[v]) / kSqrt4Pi / n;
-            row.binary_rms_error += norm(approx - c.binary[v]) / kSqrt4Pi / n;
+            truth_rms.push_back(norm(approx - c.truth[v]) / kSqrt4Pi);
+            exact_truth_rms.push_back(norm(c.exact[v] - c.truth[v]) / kSqrt4Pi);
+            binary_rms.push_back(norm(approx - c.binary[v]) / kSqrt4Pi);
         }
     }
-    if (c.truth.empty()) row.truth_rms_error = row.exact_truth_rms_error = row.binary_rms_error = -1.0;
+    row.magnitude = mean(magnitude);
+    row.dc = mean(dc);
+    row.rms_error = mean(rms);
+    row.rms_error_max = max_value(rms);
+    row.rel_error = mean(rel);
+    if (!c.truth.empty()) {
+        row.truth_rms_error = mean(truth_rms);
+        row.exact_truth_rms_error = mean(exact_truth_rms);
+        row.binary_rms_error = mean(binary_rms);
+    }
     row.ns_per_exp = time_method(method, c.logs, opt, min_seconds);
     return row;
 }

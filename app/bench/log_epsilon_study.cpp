@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "app/bench/exp_study.hpp"
+#include "core/blockers/sphere_blocker.hpp"
 #include "core/sh/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
-#include "core/sh/sphere_blocker.hpp"
 #include "core/sh/sphere_quadrature.hpp"
 
 namespace ts::bench {
@@ -51,8 +51,8 @@ std::vector<LogEpsilonRow> run_log_epsilon_study(const std::vector<double>& eps_
     const double tb = 20.0 * kPi / 180.0;
     const ShVec vis = q.project([&](const glm::dvec3& d) { return d.z > std::cos(tb) ? 0.0 : 1.0; });
     for (double eps : eps_values) {
-        const ShVec f = zh_rotate(sphere_log_zh(tb, std::log(eps)), {0, 0, 1});
-        rows.push_back(evaluate("sphere", eps, f, vis, 4.0 * kPi - cap_solid_angle(tb), q));
+        const ShVec f = zh_rotate(blockers::sphere_log_zh(tb, std::log(eps)), {0, 0, 1});
+        rows.push_back(evaluate("sphere", eps, f, vis, 4.0 * kPi - blockers::cap_solid_angle(tb), q));
     }
     return rows;
 }

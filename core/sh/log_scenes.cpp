@@ -5,8 +5,8 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "core/sh/sh_shared.hpp"
 #include "core/sh/slice_projector.hpp"
-#include "core/sh/sphere_blocker.hpp"
 
 namespace ts::sh {
 
@@ -49,7 +49,13 @@ LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
 
 ShVec LogScene::log_sh() const {
     ShVec f{};
-    for (const Cap& c : caps) f = f + zh_rotate(sphere_log_zh(c.theta_b, log_eps), c.axis);
+    for (const Cap& c : caps) {
+        // A cap's log-ZH straight from the shared formula (core/blockers/sphere_blocker.hpp wraps
+        // the same one; ts_sh cannot depend on ts_blockers, which depends on ts_sh).
+        double zh[kBands];
+        shared::ts_sphere_log_zh(c.theta_b, log_eps, zh);
+        f = f + zh_rotate({zh[0], zh[1], zh[2], zh[3]}, c.axis);
+    }
     if (!horizons.empty()) {
         const SliceProjector projector(static_cast<int>(horizons.size()));
         const auto hf = projector.project_horizons(horizons.data(), static_cast<float>(log_eps));

@@ -1,4 +1,4 @@
-#include "core/sh/sphere_blocker.hpp"
+#include "core/blockers/sphere_blocker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "core/sh/gauss_legendre.hpp"
-#include "sh_test_util.hpp"
+#include "tests/sh/sh_test_util.hpp"
 
-namespace ts::sh {
+namespace ts::blockers {
 namespace {
+
+using namespace ts::sh;
 
 constexpr double kLogEps = -6.907755278982137;
 
@@ -89,4 +91,4 @@ TEST(SphereBlocker, RatioAttenuationCullsAndCapsTheSolidAngle) {
 }
 
 }  // namespace
-}  // namespace ts::sh
+}  // namespace ts::blockers

@@ -1,14 +1,20 @@
-#include "core/sh/sphere_blocker.hpp"
+#include "core/blockers/sphere_blocker.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>
 
 #include "core/sh/sh_shared.hpp"
 
-namespace ts::sh {
+namespace ts::blockers {
+
+using sh::kPi;
+using sh::ShVec;
+using sh::ZhVec;
+using sh::operator+;  // ShVec is a std::array: its operators are found by name, not ADL
+using sh::operator*;
 
 double sphere_theta_b(double radius, double distance) {
-    return shared::ts_sphere_theta_b(radius, distance);
+    return sh::shared::ts_sphere_theta_b(radius, distance);
 }
 
 double cap_solid_angle(double theta_b) {
@@ -17,7 +23,7 @@ double cap_solid_angle(double theta_b) {
 
 ZhVec sphere_log_zh(double theta_b, double log_eps) {
     double c[4];
-    shared::ts_sphere_log_zh(theta_b, log_eps, c);
+    sh::shared::ts_sphere_log_zh(theta_b, log_eps, c);
     return {c[0], c[1], c[2], c[3]};
 }
 
@@ -27,7 +33,7 @@ ShVec sphere_log_sh(const Sphere& sphere, const glm::dvec3& receiver, double log
     const double tb = sphere_theta_b(sphere.radius, d);
     // Inside the sphere the cap is the whole sphere: any axis will do.
     const glm::dvec3 dir = d > 0.0 ? v / d : glm::dvec3(0.0, 0.0, 1.0);
-    return zh_rotate(sphere_log_zh(tb, log_eps), dir);
+    return sh::zh_rotate(sphere_log_zh(tb, log_eps), dir);
 }
 
 std::vector<double> ratio_attenuation_weights(std::span<const Sphere> spheres, const glm::dvec3& receiver,
@@ -67,4 +73,4 @@ ShVec accumulate_blockers(std::span<const Sphere> spheres, const glm::dvec3& rec
     return f;
 }
 
-}  // namespace ts::sh
+}  // namespace ts::blockers

@@ -29,7 +29,7 @@
 #include "core/render/frame_renderer.hpp"
 #include "core/render/material.hpp"
 #include "core/render/reference_shading.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"

@@ -19,7 +19,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/render/transfer.hpp"
 #include "core/sh/exp_method.hpp"
 #include "core/sh/log_brdf.hpp"

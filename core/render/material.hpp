@@ -15,7 +15,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {

@@ -6,8 +6,8 @@
 
 #include "core/dem/read_dem.hpp"
 #include "core/raster/geotiff_georef.hpp"
+#include "core/raster/srgb.hpp"
 #include "core/raster/tiff_file.hpp"
-#include "core/render/tone_map.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::render {
@@ -63,7 +63,7 @@ std::vector<glm::vec3> read_orthophoto_albedo(const std::filesystem::path& path,
         throw input_error(shown, "cannot decode the orthophoto" +
                                      (file.last_error().empty() ? std::string() : " (" + file.last_error() + ")"));
     float lut[256];
-    for (int i = 0; i < 256; ++i) lut[i] = srgb_eotf(float(i) / 255.0f);
+    for (int i = 0; i < 256; ++i) lut[i] = raster::srgb_eotf(float(i) / 255.0f);
     auto texel = [&](int x, int y) {
         const std::uint32_t p = pixels[std::size_t(y) * w + std::size_t(x)];
         return glm::vec3(lut[TIFFGetR(p)], lut[TIFFGetG(p)], lut[TIFFGetB(p)]);

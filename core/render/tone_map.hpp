@@ -43,12 +43,8 @@ double exposure_scale(const Exposure& e, double log_average);
 // ACES filmic curve fitted by Narkowicz (2015): x(2.51x+0.03) / (x(2.43x+0.59)+0.14), clamped
 // to [0, 1]; per channel. Input 0.18 maps to ~0.27 (before the OETF).
 float filmic(float x);
-// sRGB OETF (IEC 61966-2-1): linear [0, 1] -> encoded [0, 1].
-float srgb_oetf(float linear);
-// Its inverse (8-bit orthophotos -> linear albedo).
-float srgb_eotf(float encoded);
-
-// The 8-bit code of one exposed channel value: lround(255 srgb_oetf(filmic(x))).
+// The 8-bit code of one exposed channel value: lround(255 srgb_oetf(filmic(x))), with the sRGB
+// OETF of core/raster/srgb.hpp.
 std::uint8_t srgb8_code(float exposed);
 
 // srgb8_code without a pow per call. The code is monotone in x, so a table over [2^-14, 8) in

@@ -18,7 +18,7 @@
 #include "core/render/frame_renderer.hpp"
 #include "core/render/material.hpp"
 #include "core/render/render_backend.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/sh/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_squaring_shared.hpp"

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 
 namespace ts::render {
 namespace {

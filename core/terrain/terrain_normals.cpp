@@ -1,4 +1,4 @@
-#include "core/render/terrain_normals.hpp"
+#include "core/terrain/terrain_normals.hpp"
 
 #include <algorithm>
 #include <cmath>

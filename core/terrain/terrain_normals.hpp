@@ -4,6 +4,10 @@
 // geographic DEM's slopes are right at every latitude. One-sided differences on the edges;
 // a hole (NaN) neighbour is skipped the same way; a texel with no valid neighbour on an axis
 // gets slope 0 on it; a hole texel itself gets (0, 0, 1).
+//
+// Geometry of the height grid, so it lives in core/terrain, below the materials and the
+// renderer that both use it. Its names stay in ts::render for now: the renderer's files name
+// them unqualified (docs/architecture.md, "Namespaces").
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"

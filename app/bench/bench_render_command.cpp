@@ -27,7 +27,7 @@
 #include "core/light/sun_position.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/render/frame_renderer.hpp"
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 #include "core/render/reference_shading.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/util/atomic_file.hpp"

@@ -22,7 +22,7 @@
 #include "core/terrain/terrain_normals.hpp"
 #include "core/render/transfer.hpp"
 #include "core/sh/exp_method.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/compute_horizons.hpp"

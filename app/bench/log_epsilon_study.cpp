@@ -5,7 +5,7 @@
 
 #include "app/bench/exp_study.hpp"
 #include "core/blockers/sphere_blocker.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sphere_quadrature.hpp"
 

@@ -9,7 +9,7 @@
 #include "core/material/fresnel.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/sun_sweep.hpp"

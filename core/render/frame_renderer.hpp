@@ -23,7 +23,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/diffuse_shading.hpp"
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 #include "core/render/sky_table.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/sh/exp_method.hpp"

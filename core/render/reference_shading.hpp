@@ -23,7 +23,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/frame_renderer.hpp"
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/visibility/row_metrics.hpp"

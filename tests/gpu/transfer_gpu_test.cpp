@@ -13,7 +13,7 @@
 
 #include "core/dem/read_dem.hpp"
 #include "core/render/transfer.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"

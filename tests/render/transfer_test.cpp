@@ -12,7 +12,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/sh/log_scenes.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_shared.hpp"

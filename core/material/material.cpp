@@ -1,4 +1,4 @@
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,6 +8,7 @@
 //  - a land-cover raster: ESA WorldCover class codes (10 tree cover ... 100 moss and lichen);
 // and the albedo may be replaced by an orthophoto (material_sources.hpp). Water is always
 // decided here: a DEM void, or a flat texel at or below sea level, or WorldCover class 80.
+// (Namespace ts::render until the renderer's files say material::, docs/architecture.md.)
 #include <cstdint>
 #include <string>
 #include <string_view>

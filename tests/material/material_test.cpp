@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 
 namespace ts::render {
 namespace {

@@ -2,6 +2,7 @@
 // Material inputs read from other rasters and put on the DEM's grid by georeferencing: each
 // DEM texel centre is carried to the source raster's pixel coordinates (directly when both
 // share a CRS, else through WGS84 lon/lat), so the sources may have any CRS and resolution.
+// (Namespace ts::render until the renderer's files say material::, docs/architecture.md.)
 #include <cstdint>
 #include <filesystem>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "core/render/material_sources.hpp"
+#include "core/material/material_sources.hpp"
 
 #include <algorithm>
 #include <cmath>

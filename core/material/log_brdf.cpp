@@ -1,4 +1,4 @@
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sphere_quadrature.hpp"
-#include "sh_test_util.hpp"
+#include "tests/sh/sh_test_util.hpp"
 
 namespace ts::sh {
 namespace {

@@ -11,6 +11,7 @@
 // Gauss-Legendre elsewhere (exact to ~1e-12); the table holds exponents 1..1000 and is
 // interpolated linearly in log alpha. Rotate with zh_rotate to the normal (diffuse) or the
 // mirror direction (Phong).
+// (Namespace ts::sh until the renderer's files say material::, docs/architecture.md.)
 #include <vector>
 
 #include "core/sh/sh_basis.hpp"

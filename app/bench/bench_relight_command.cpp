@@ -18,8 +18,8 @@
 #include "app/render_device.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
+#include "core/render/hillshade.hpp"
 #include "core/render/render_backend.hpp"
-#include "core/shading/hillshade.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
@@ -172,14 +172,14 @@ void run_bench_relight(const BenchRelightArgs& a) {
 
     // Baseline in the same run: the classic hillshade, one light, no shadows, no sky.
     const terrain::HeightGrid grid = terrain::metric_view(dem);
-    shading::HillshadeOptions ho;
+    render::HillshadeOptions ho;
     ho.threads = a.render.threads;
-    shading::hillshade(grid, ho);
+    render::hillshade(grid, ho);
     t0 = Clock::now();
     for (int k = 0; k < a.frames; ++k) {
         ho.azimuth_deg = sun_of_frame(k, a.frames).azimuth_deg;
         ho.altitude_deg = sun_of_frame(k, a.frames).elevation_deg;
-        shading::hillshade(grid, ho);
+        render::hillshade(grid, ho);
     }
     const double hill_s = seconds_since(t0);
 

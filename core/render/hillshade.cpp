@@ -1,4 +1,4 @@
-#include "core/shading/hillshade.hpp"
+#include "core/render/hillshade.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "core/util/parallel_for.hpp"
 #include "core/util/error.hpp"
 
-namespace ts::shading {
+namespace ts::render {
 using geo::azimuth_cw_from_north_to_phi;
 using geo::enu_direction;
 
@@ -73,4 +73,4 @@ std::vector<std::uint8_t> hillshade(const terrain::HeightGrid& grid, const Hills
     return out;
 }
 
-}  // namespace ts::shading
+}  // namespace ts::render

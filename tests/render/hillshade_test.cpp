@@ -1,5 +1,5 @@
 // Hillshade on planes with known slope and aspect: the exact value of 1 + 254 cos(incidence).
-#include "core/shading/hillshade.hpp"
+#include "core/render/hillshade.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,13 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/geo/azimuth.hpp"
 #include "core/util/error.hpp"
 
-namespace ts::shading {
-using geo::azimuth_cw_from_north_to_phi;
-using geo::enu_direction;
-using geo::phi_to_azimuth_cw_from_north;
+namespace ts::render {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -133,17 +129,5 @@ TEST(Hillshade, RejectsBadOptions) {
     EXPECT_THROW(hillshade(g, {.z_factor = INFINITY}), InputError);
 }
 
-TEST(Azimuth, ClockwiseFromNorthToPhi) {
-    EXPECT_NEAR(azimuth_cw_from_north_to_phi(0), std::numbers::pi / 2, 1e-15);   // north = +y
-    EXPECT_NEAR(azimuth_cw_from_north_to_phi(90), 0, 1e-15);                     // east = +x
-    EXPECT_NEAR(std::cos(azimuth_cw_from_north_to_phi(180)), 0, 1e-15);
-    EXPECT_NEAR(std::sin(azimuth_cw_from_north_to_phi(180)), -1, 1e-15);         // south = -y
-    EXPECT_NEAR(std::cos(azimuth_cw_from_north_to_phi(270)), -1, 1e-15);         // west = -x
-    for (double az : {0.0, 10.0, 135.0, 315.0, 359.5}) EXPECT_NEAR(phi_to_azimuth_cw_from_north(azimuth_cw_from_north_to_phi(az)), az, 1e-12);
-    const glm::dvec3 nw = enu_direction(azimuth_cw_from_north_to_phi(315), 0);
-    EXPECT_LT(nw.x, 0);
-    EXPECT_GT(nw.y, 0);
-}
-
 }  // namespace
-}  // namespace ts::shading
+}  // namespace ts::render

@@ -12,12 +12,15 @@
 // Border pixels have no full 3x3 window and are 0 (nodata), as gdaldem without
 // -compute_edges. A pixel is 0 too when any texel of its window is a hole (NaN height) or when
 // the source had no data there (void mask), even if the void was filled since.
+//
+// The baseline the renderer is compared with (bench relight). It needs only the height grid:
+// the `hillshade` command and its test use none of the rest of ts_render.
 #include <cstdint>
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"
 
-namespace ts::shading {
+namespace ts::render {
 
 struct HillshadeOptions {
     double azimuth_deg = 315.0;   // light direction, degrees clockwise from north
@@ -38,4 +41,4 @@ std::vector<std::uint8_t> hillshade(const terrain::HeightGrid& grid, const Hills
 // including the z-factor; light: unit ENU vector towards the light.
 std::uint8_t shade_value(double dz_de, double dz_dn, double light_e, double light_n, double light_u);
 
-}  // namespace ts::shading
+}  // namespace ts::render

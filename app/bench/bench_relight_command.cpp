@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,8 +20,10 @@
 #include "core/render/hillshade.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/terrain/dem_height_grid.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::app {
 namespace {
@@ -36,17 +37,11 @@ struct BenchRelightArgs {
     bool compare_unfused = false;  // --compare-unfused: the shading stage against the CPU backend's
 };
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 // A day's arc for frame k of n: the sun from east (azimuth 90) over the south to west (270),
 // elevation 8 -> 60 -> 8 degrees, so frames have long and short shadows alike.
 render::SunState sun_of_frame(int k, int n) {
     const double u = n > 1 ? double(k) / (n - 1) : 0.5;
-    const double pi = 3.14159265358979323846;
-    return {90.0 + 180.0 * u, 8.0 + 52.0 * std::sin(pi * u)};
+    return {90.0 + 180.0 * u, 8.0 + 52.0 * std::sin(kPi * u)};
 }
 
 // --compare-cpu: the one-time stages and the per-frame work of the CPU path (no backend: the
@@ -55,9 +50,9 @@ render::SunState sun_of_frame(int k, int n) {
 struct FrameSums {
     double sky_s = 0, sun_s = 0, shade_s = 0, total_s = 0;
     void add(render::Scene& scene, const render::SunState& sun, render::LinearImage& image) {
-        const auto t0 = Clock::now();
+        const Stopwatch t0;
         scene.render(sun, image);
-        total_s += seconds_since(t0);
+        total_s += t0.seconds();
         const auto& t = scene.renderer().last_timings();
         sky_s += t.sky_s, sun_s += t.sun_visibility_s, shade_s += t.shading_s;
     }
@@ -66,9 +61,9 @@ struct FrameSums {
 void compare_with_cpu(const dem::Dem& dem, render::SceneOptions options, int frames, render::Scene& device_scene,
                       double device_setup_s) {
     options.renderer.backend = nullptr;
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     render::Scene scene(dem, options);
-    const double setup_s = seconds_since(t0);
+    const double setup_s = t0.seconds();
     render::LinearImage image;
     scene.render(sun_of_frame(0, frames), image);  // warm-up, as for the device
     FrameSums dev, cpu;
@@ -123,9 +118,9 @@ void run_bench_relight(const BenchRelightArgs& a) {
     device.apply(options);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 
-    auto t0 = Clock::now();
+    Stopwatch t0;
     render::Scene scene(dem, options);
-    const double setup_s = seconds_since(t0);
+    const double setup_s = t0.seconds();
 
     // Warm-up frame (first-touch page faults, lazy tables), not timed.
     render::LinearImage image;
@@ -133,13 +128,13 @@ void run_bench_relight(const BenchRelightArgs& a) {
     const double pixels = double(image.width) * image.height;
 
     double sky_s = 0, sun_s = 0, shade_s = 0;
-    t0 = Clock::now();
+    t0.restart();
     for (int k = 0; k < a.frames; ++k) {
         scene.render(sun_of_frame(k, a.frames), image);
         const auto& t = scene.renderer().last_timings();
         sky_s += t.sky_s, sun_s += t.sun_visibility_s, shade_s += t.shading_s;
     }
-    const double frames_s = seconds_since(t0);
+    const double frames_s = t0.seconds();
 
     const std::filesystem::path dir =
         a.out_dir.empty() ? std::filesystem::temp_directory_path() / ("ts_bench_relight_" + std::to_string(::getpid()))
@@ -151,7 +146,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
         return (dir / name).string();
     };
     // As `relight` writes: frame k encoded on the writer thread while frame k+1 renders.
-    t0 = Clock::now();
+    t0.restart();
     {
         render::BackgroundWriter writer(a.write_queue);
         for (int k = 0; k < a.frames; ++k) {
@@ -160,14 +155,14 @@ void run_bench_relight(const BenchRelightArgs& a) {
         }
         writer.finish();
     }
-    const double files_s = seconds_since(t0);
+    const double files_s = t0.seconds();
     // The same frames rendered and written one after the other (the overlap's baseline).
-    t0 = Clock::now();
+    t0.restart();
     for (int k = 0; k < a.frames; ++k) {
         scene.render(sun_of_frame(k, a.frames), image);
         render::write_image(frame_path(k), image, exposure, nullptr);
     }
-    const double files_serial_s = seconds_since(t0);
+    const double files_serial_s = t0.seconds();
     if (a.out_dir.empty()) std::filesystem::remove_all(dir);
 
     // Baseline in the same run: the classic hillshade, one light, no shadows, no sky.
@@ -175,13 +170,13 @@ void run_bench_relight(const BenchRelightArgs& a) {
     render::HillshadeOptions ho;
     ho.threads = a.render.threads;
     render::hillshade(grid, ho);
-    t0 = Clock::now();
+    t0.restart();
     for (int k = 0; k < a.frames; ++k) {
         ho.azimuth_deg = sun_of_frame(k, a.frames).azimuth_deg;
         ho.altitude_deg = sun_of_frame(k, a.frames).elevation_deg;
         render::hillshade(grid, ho);
     }
-    const double hill_s = seconds_since(t0);
+    const double hill_s = t0.seconds();
 
     const double n = a.frames;
     std::printf("DEM %dx%d (%zu texels), %s view %dx%d, %d frames, %d threads\n", dem.width, dem.height, texels,

@@ -30,8 +30,10 @@
 #include "core/material/material.hpp"
 #include "core/render/reference_shading.hpp"
 #include "core/terrain/terrain_normals.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/visibility_grid.hpp"
 
 namespace ts::app {
@@ -63,10 +65,6 @@ struct Row {
     double iou = kNaN, mask_disagree = kNaN, sun_fraction_mae = kNaN, shadow_share = kNaN;
     double frame_ms = kNaN, sun_visibility_ms = kNaN, reference_sun_ms = kNaN, reference_s = kNaN;
 };
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 double luminance(const glm::vec3& c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
@@ -150,10 +148,10 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
     refo.azimuths = o.azimuths;
     refo.curvature = !o.no_curvature;
     refo.threads = o.threads;
-    auto t0 = std::chrono::steady_clock::now();
+    Stopwatch t0;
     // The renderer's own normals (water flattened) and materials: only lighting differs.
     const render::ReferenceShader reference(grid, renderer.materials(), renderer.normals(), view, texels, refo);
-    const double horizons_s = ms_since(t0) / 1000.0;
+    const double horizons_s = t0.seconds();
 
     std::vector<std::pair<std::string, light::UtcTime>> times;
     if (!o.times.empty()) {
@@ -183,14 +181,14 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
         row.azimuth_deg = sun.azimuth_deg;
         row.elevation_deg = sun.elevation_deg;
 
-        t0 = std::chrono::steady_clock::now();
+        t0.restart();
         renderer.render(*sky, sun, frame);
-        row.frame_ms = ms_since(t0);
+        row.frame_ms = t0.milliseconds();
         row.sun_visibility_ms = renderer.last_timings().sun_visibility_s * 1000.0;
 
-        t0 = std::chrono::steady_clock::now();
+        t0.restart();
         const std::vector<render::ReferenceSample> ref = reference.render(*sky, sun);
-        row.reference_s = ms_since(t0) / 1000.0 + horizons_s / double(times.size());
+        row.reference_s = t0.seconds() + horizons_s / double(times.size());
 
         std::vector<double> got, want, got_lit, want_lit, got_shadow, want_shadow;
         for (std::size_t k = 0; k < texels.size(); ++k) {
@@ -209,13 +207,13 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
 
         // Shadow masks over every texel.
         const light::SunDisc disc = sky->sun();
-        t0 = std::chrono::steady_clock::now();
+        t0.restart();
         const std::vector<float> ref_sun = render::reference_sun_visibility(
             grid, sun.azimuth_deg, sun.elevation_deg, disc.angular_radius_rad, !o.no_curvature, o.threads);
-        row.reference_sun_ms = ms_since(t0);
+        row.reference_sun_ms = t0.milliseconds();
         const std::vector<float>& ren_sun = renderer.sun_visibility();
         const bool sun_up = (disc.irradiance.x > 0 || disc.irradiance.y > 0 || disc.irradiance.z > 0) &&
-                            sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
+                            sun.elevation_deg > -disc.angular_radius_rad * 180.0 / kPi;
         bench::MaskAgreement masks;
         for (std::size_t i = 0; i < ref_sun.size(); ++i) {
             if (std::isnan(ref_sun[i]) || std::isnan(ren_sun[i])) continue;

@@ -3,7 +3,6 @@
 // ms per frame of each and their ratio, and the sweep's error over a set of sun positions
 // from grazing to high: IoU of the shadow masks (fraction < 0.5) and mean |fraction difference|.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +19,7 @@
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/sun_visibility.hpp"
 #include "core/visibility/visibility_grid.hpp"
@@ -47,11 +47,6 @@ struct CsvRow {
     double near_field, elevation, exact_ms, sweep_ms, iou_min, iou_mean, mae_mean;
 };
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
 // Shadow masks (fraction < 0.5) and fractions of the sweep against the exact path.
 bench::MaskAgreement compare(const std::vector<float>& exact, const std::vector<float>& sweep) {
     bench::MaskAgreement a;
@@ -76,9 +71,9 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
     so.near_field_texels = near_field;
     so.near_field_fine_texels = o.near_fine;
     so.near_field_step_texels = o.near_step;
-    auto t0 = Clock::now();
+    Stopwatch t0;
     visibility::SunShadowSweep sweep(grid, so);
-    const double setup_ms = ms_since(t0);
+    const double setup_ms = t0.milliseconds();
 
     double exact_ms = 0, sweep_ms = 0, iou_min = 2;
     double worst_az = 0, worst_el = 0;
@@ -96,12 +91,12 @@ void run_dem(const BenchSunOptions& o, const std::string& path, double near_fiel
         double e_ms = 0, s_ms = 0;
         std::vector<double> iou, mae;  // one per azimuth
         for (double az : o.azimuths) {
-            t0 = Clock::now();
+            t0.restart();
             const std::vector<float> exact = visibility::sun_visibility(grid, az, el, eo);
-            e_ms += ms_since(t0);
-            t0 = Clock::now();
+            e_ms += t0.milliseconds();
+            t0.restart();
             for (int k = 0; k < o.frames; ++k) sweep.compute(az, el, fast);
-            s_ms += ms_since(t0) / o.frames;
+            s_ms += t0.milliseconds() / o.frames;
             const bench::MaskAgreement a = compare(exact, fast);
             nan_mismatch += a.nan_mismatch;
             if (a.iou() < iou_min)

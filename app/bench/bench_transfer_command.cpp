@@ -5,7 +5,6 @@
 // when there is one) and is not part of the measurement.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -25,6 +24,7 @@
 #include "core/material/log_brdf.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/visibility_grid.hpp"
@@ -49,11 +49,6 @@ struct BenchTransferOptions {
     std::optional<std::uint32_t> device;
     std::string exp_method = "hybrid";  // hybrid or scaling_squaring (both run on the GPU)
 };
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // A sky-like light for the relight frames: bright zenith, a warm side, some higher-band detail.
 std::array<glm::vec3, 16> frame_light(int frame) {
@@ -117,7 +112,7 @@ void run_bench_transfer(const BenchTransferOptions& o) {
 
     // The input: log-SH visibility (exact horizons), normals, the lobe.
     std::vector<float> log_vis;
-    const auto t_vis = Clock::now();
+    const Stopwatch t_vis;
     std::string vis_where = "CPU";
     visibility::HorizonOptions ho;
     ho.method = visibility::HorizonMethod::exact;
@@ -133,7 +128,7 @@ void run_bench_transfer(const BenchTransferOptions& o) {
     }
 #endif
     if (log_vis.empty()) log_vis = visibility::log_sh_raster(visibility::compute_horizons(grid, ho), visibility::kDefaultVisibilityLogEps, o.threads);
-    const double vis_ms = ms_since(t_vis);
+    const double vis_ms = t_vis.milliseconds();
 
     const render::NormalField normals = render::terrain_normals(grid, o.threads);
     std::vector<float> axis(3 * texels);
@@ -165,16 +160,16 @@ void run_bench_transfer(const BenchTransferOptions& o) {
 
     // CPU.
     std::vector<float> t_cpu(16 * texels);
-    auto t0 = Clock::now();
+    Stopwatch t0;
     render::transfer_vectors(in, t_cpu.data());
-    const double cpu_transfer_ms = ms_since(t0);
+    const double cpu_transfer_ms = t0.milliseconds();
     std::vector<glm::vec3> rgb_cpu(texels);
     render::shade_transfer(t_cpu.data(), texels, frame_light(0), rgb_cpu.data(), o.threads);  // warm-up
     double cpu_shade_ms = INFINITY;
     for (int f = 0; f < o.frames; ++f) {
-        t0 = Clock::now();
+        t0.restart();
         render::shade_transfer(t_cpu.data(), texels, frame_light(f), rgb_cpu.data(), o.threads);
-        cpu_shade_ms = std::min(cpu_shade_ms, ms_since(t0));
+        cpu_shade_ms = std::min(cpu_shade_ms, t0.milliseconds());
     }
     // Frame 0's light again, for the agreement check below.
     render::shade_transfer(t_cpu.data(), texels, frame_light(0), rgb_cpu.data(), o.threads);
@@ -182,9 +177,9 @@ void run_bench_transfer(const BenchTransferOptions& o) {
     std::vector<Row> rows;
 #ifdef TERRASHADE_HAS_GPU
     if (context) {
-        t0 = Clock::now();
+        t0.restart();
         gpu::render::TransferField field(*context, in);
-        const double gpu_build_ms = ms_since(t0);  // includes the two pipelines' compilation
+        const double gpu_build_ms = t0.milliseconds();  // includes the two pipelines' compilation
         const auto build = field.stages();
         const double gpu_compute_wall = field.wall_ms();
         std::vector<float> t_gpu(16 * texels);

@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,7 +11,6 @@
 #include <fstream>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <span>
@@ -24,8 +22,10 @@
 #include "app/bench/error_stats.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/sky_integrals.hpp"
 #include "core/visibility/horizon_sh.hpp"
@@ -40,7 +40,6 @@ namespace ts::app {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPi = std::numbers::pi;
 
 struct BenchVisibilityOptions {
     std::vector<std::string> dems;
@@ -74,10 +73,6 @@ struct Row {
     double sky_rmse = kNaN, sky_p99 = kNaN;
     double saga_visible_rmse = kNaN, saga_svf_rmse = kNaN;  // in SAGA's definitions (see docs/visibility.md)
 };
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Absolute errors (RMSE, 99th percentile) over the interior texels (the outermost ring has no
 // terrain beyond it in some directions; its horizon is a convention) where both rasters are valid.
@@ -205,9 +200,9 @@ void run_saga(const BenchVisibilityOptions& o, const dem::Dem& win, const terrai
                                     "' -NDIRS " + std::to_string(d) + " -RADIUS " + std::to_string(radius) +
                                     " -METHOD " + std::to_string(method) + " > '" + (dir / "saga.log").string() +
                                     "' 2>&1";
-            const auto t0 = std::chrono::steady_clock::now();
+            const Stopwatch t0;
             const int rc = std::system(cmd.c_str());
-            const double ms = ms_since(t0);
+            const double ms = t0.milliseconds();
             if (rc != 0 || !std::filesystem::exists(svf))
                 throw InputError("saga_cmd failed (exit " + std::to_string(rc) + "); see " +
                                  (dir / "saga.log").string());
@@ -232,7 +227,7 @@ void run_saga(const BenchVisibilityOptions& o, const dem::Dem& win, const terrai
         ho.directions = d;
         ho.curvature = !o.no_curvature;
         ho.threads = o.threads;
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch t0;
         const visibility::HorizonSet set = visibility::compute_horizons(grid, ho);
         const SagaQuantities q = saga_quantities(set, grid);
         Row r;
@@ -242,7 +237,7 @@ void run_saga(const BenchVisibilityOptions& o, const dem::Dem& win, const terrai
         r.width = win.width;
         r.height = win.height;
         r.directions = d;
-        r.time_ms = ms_since(t0);
+        r.time_ms = t0.milliseconds();
         r.saga_visible_rmse = compare(q.visible, ref_q.visible, win.width, win.height).rmse;
         r.saga_svf_rmse = compare(q.svf, ref_q.svf, win.width, win.height).rmse;
         rows.push_back(r);
@@ -336,11 +331,11 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
     ref_opts.method = visibility::HorizonMethod::raymarch;
     ref_opts.directions = o.reference_directions;
     ref_opts.window = win;
-    auto t0 = std::chrono::steady_clock::now();
+    Stopwatch t0;
     const visibility::HorizonSet ref = visibility::compute_horizons(grid.view(), ref_opts);
     const auto svf_ref = visibility::svf_raster(ref, visibility::WedgeRule::linear, o.threads);
     std::printf("  reference: raymarch D=%d on the centred %dx%d window, %.0f ms\n", o.reference_directions,
-                win.width, win.height, ms_since(t0));
+                win.width, win.height, t0.milliseconds());
 
     // CPU path, stage by stage: the horizons, then log-SH, svf and sky_visible in one pass.
     std::vector<double> cpu_h, cpu_products, cpu_total;
@@ -348,13 +343,13 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
     visibility::ProductRequest products;
     products.threads = o.threads;
     for (int rep = 0; rep < o.repeats; ++rep) {
-        t0 = std::chrono::steady_clock::now();
+        t0.restart();
         const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
-        cpu_h.push_back(ms_since(t0));
-        const auto t1 = std::chrono::steady_clock::now();
+        cpu_h.push_back(t0.milliseconds());
+        const Stopwatch t1;
         cpu_products_last = visibility::visibility_products(set, products);
-        cpu_products.push_back(ms_since(t1));
-        cpu_total.push_back(ms_since(t0));
+        cpu_products.push_back(t1.milliseconds());
+        cpu_total.push_back(t0.milliseconds());
     }
     const double cpu_ms = median(cpu_total);
     const double cpu_err = window_svf_rmse(cpu_products_last.svf, dem.width, win, svf_ref);
@@ -371,9 +366,9 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
         for (int rep = 0; rep < o.repeats; ++rep) {
             gpu::visibility::Options go;
             go.horizon = ho;
-            t0 = std::chrono::steady_clock::now();
+            t0.restart();
             auto r = gpu::visibility::compute(context, grid.view(), go);
-            total.push_back(ms_since(t0));
+            total.push_back(t0.milliseconds());
             stages.push_back(r.stages);
             gpu_svf = std::move(r.svf);
         }
@@ -417,9 +412,9 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
     std::vector<double> saga_times;
     for (int rep = 0; rep < o.repeats; ++rep) {
         std::filesystem::remove(svf);
-        t0 = std::chrono::steady_clock::now();
+        t0.restart();
         const int rc = std::system(saga.c_str());
-        saga_times.push_back(ms_since(t0));
+        saga_times.push_back(t0.milliseconds());
         if (rc != 0 || !std::filesystem::exists(svf)) throw InputError("saga_cmd failed; see " + log);
     }
     const double saga_ms = median(saga_times);
@@ -487,7 +482,7 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
         ref_opts.directions = o.reference_directions;
         ref_opts.curvature = !o.no_curvature;
         ref_opts.threads = o.threads;
-        auto t0 = std::chrono::steady_clock::now();
+        Stopwatch t0;
         const visibility::HorizonSet ref = visibility::compute_horizons(grid.view(), ref_opts);
         Row ref_row;
         ref_row.dem = name;
@@ -496,7 +491,7 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
         ref_row.width = win.width;
         ref_row.height = win.height;
         ref_row.directions = o.reference_directions;
-        ref_row.time_ms = ms_since(t0);
+        ref_row.time_ms = t0.milliseconds();
         rows.push_back(ref_row);
         print_row(ref_row);
         const auto svf_ref = visibility::svf_raster(ref, visibility::WedgeRule::linear, o.threads);
@@ -517,10 +512,10 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
                     ho.threads = o.threads;
                     if (method == visibility::HorizonMethod::pyramid) ho.pyramid_schedule = variant;
                     if (method == visibility::HorizonMethod::exact) set_exact_variant(ho, variant);
-                    t0 = std::chrono::steady_clock::now();
+                    t0.restart();
                     const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
                     Row r;
-                    r.time_ms = ms_since(t0);
+                    r.time_ms = t0.milliseconds();
                     r.dem = name;
                     r.method = m;
                     r.variant = variant;
@@ -556,10 +551,10 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
                 ho.directions = o.full_directions;
                 ho.curvature = !o.no_curvature;
                 ho.threads = o.threads;
-                t0 = std::chrono::steady_clock::now();
+                t0.restart();
                 (void)visibility::compute_horizons(whole.view(), ho);
                 Row r;
-                r.time_ms = ms_since(t0);
+                r.time_ms = t0.milliseconds();
                 r.dem = name;
                 r.method = m;
                 r.variant = "full-dem";

@@ -1,7 +1,6 @@
 #include "app/bench/exp_study.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -9,6 +8,7 @@
 #include "app/bench/error_stats.hpp"
 #include "core/sh/exact_exp.hpp"
 #include "core/sh/log_scenes.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::bench {
 
@@ -29,16 +29,15 @@ double time_method(ExpMethod method, const std::vector<ShVec>& logs, const ExpOp
     std::vector<float> in(logs.size() * kCount), out(logs.size() * kCount);
     for (std::size_t v = 0; v < logs.size(); ++v)
         for (int i = 0; i < kCount; ++i) in[v * kCount + i] = static_cast<float>(logs[v][i]);
-    using clock = std::chrono::steady_clock;
     long long calls = 0;
     volatile float sink = 0.0f;  // keeps the work observable
-    const auto start = clock::now();
+    const Stopwatch watch;
     double elapsed = 0.0;
     do {
         for (std::size_t v = 0; v < logs.size(); ++v) sh_exp(method, &in[v * kCount], &out[v * kCount], opt);
         sink = sink + out[0];
         calls += static_cast<long long>(logs.size());
-        elapsed = std::chrono::duration<double>(clock::now() - start).count();
+        elapsed = watch.seconds();
     } while (elapsed < min_seconds);
     return elapsed * 1e9 / static_cast<double>(calls);
 }

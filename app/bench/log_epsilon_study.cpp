@@ -8,6 +8,7 @@
 #include "core/material/log_brdf.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sphere_quadrature.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::bench {
 
@@ -48,7 +49,7 @@ std::vector<LogEpsilonRow> run_log_epsilon_study(const std::vector<double>& eps_
         }
     }
     // Visibility: a sphere blocker of 20 deg angular radius overhead.
-    const double tb = 20.0 * kPi / 180.0;
+    const double tb = radians(20.0);  // equal to 20 pi / 180 to the last bit
     const ShVec vis = q.project([&](const glm::dvec3& d) { return d.z > std::cos(tb) ? 0.0 : 1.0; });
     for (double eps : eps_values) {
         const ShVec f = zh_rotate(blockers::sphere_log_zh(tb, std::log(eps)), {0, 0, 1});

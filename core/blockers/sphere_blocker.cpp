@@ -7,7 +7,6 @@
 
 namespace ts::blockers {
 
-using sh::kPi;
 using sh::ShVec;
 using sh::ZhVec;
 using sh::operator+;  // ShVec is a std::array: its operators are found by name, not ADL

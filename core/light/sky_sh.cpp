@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "core/light/hdr_sky.hpp"
 #include "core/sh/sh_basis.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
@@ -42,11 +42,10 @@ struct RingSums {
     void flush(std::array<glm::dvec3, sh::kCount>& acc) const {
         if (std::isnan(z)) return;
         const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        const double pi = std::numbers::pi;
         sh::ShVec a[4];  // a[k]: sh::eval where trig_m = 1 for m = 0 (all m >= 0) and m = -k
         a[0] = sh::eval({r, 0.0, z});
         for (int k = 1; k <= 3; ++k) {
-            const double phi = pi / (2.0 * k);
+            const double phi = kPi / (2.0 * k);
             a[k] = sh::eval({r * std::cos(phi), r * std::sin(phi), z});
         }
         for (int i = 0; i < sh::kCount; ++i) {

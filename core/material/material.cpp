@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/util/angles.hpp"
+
 namespace ts::render {
 namespace {
 
@@ -121,7 +123,7 @@ std::string_view surface_name(Surface s) {
 
 bool is_water(bool was_void, float h, float nz, const MaterialRule& rule) {
     if (was_void) return true;
-    const double cos_max = std::cos(rule.water_max_slope_deg * (3.14159265358979323846 / 180.0));
+    const double cos_max = std::cos(radians(rule.water_max_slope_deg));
     return double(h) <= rule.sea_level_m && double(nz) >= cos_max;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/error.hpp"
 
@@ -45,7 +46,7 @@ std::vector<std::uint8_t> hillshade(const terrain::HeightGrid& grid, const Hills
     std::vector<std::uint8_t> out(std::size_t(w) * std::size_t(h), kHillshadeNodata);
     if (w < 3 || h < 3) return out;
     const glm::dvec3 light =
-        enu_direction(azimuth_cw_from_north_to_phi(options.azimuth_deg), options.altitude_deg * std::numbers::pi / 180.0);
+        enu_direction(azimuth_cw_from_north_to_phi(options.azimuth_deg), options.altitude_deg * kPi / 180.0);
     const double zf = options.z_factor;
     ts::parallel_rows(h - 2, options.threads, w, [&](int begin, int end) {
         for (int r = begin + 1; r < end + 1; ++r) {

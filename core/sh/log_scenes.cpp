@@ -7,6 +7,7 @@
 
 #include "core/sh/sh_shared.hpp"
 #include "core/sh/slice_projector.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::sh {
 
@@ -24,13 +25,12 @@ double SplitMix64::uniform() {
 LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
     LogScene scene;
     scene.log_eps = o.log_eps;
-    const double deg = kPi / 180.0;
     for (int b = 0; b < o.blockers; ++b) {
         // Uniform direction on the upper hemisphere.
         const double z = rng.uniform();
         const double phi = rng.uniform(0.0, 2.0 * kPi);
         const double r = std::sqrt(1.0 - z * z);
-        const double tb = rng.uniform(o.min_theta_b_deg, o.max_theta_b_deg) * deg;
+        const double tb = radians(rng.uniform(o.min_theta_b_deg, o.max_theta_b_deg));
         scene.caps.push_back({glm::dvec3(r * std::cos(phi), r * std::sin(phi), z), tb});
     }
     if (o.height_field) {
@@ -41,7 +41,7 @@ LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
         for (int k = 0; k < o.slices; ++k) {
             const double phi = SliceProjector::azimuth(k, o.slices);
             const double s = base + amp * std::sin(phi + phase) + rng.uniform(-5.0, 5.0);
-            scene.horizons[k] = static_cast<float>(std::clamp(s, -89.0, 89.0) * deg);
+            scene.horizons[k] = static_cast<float>(radians(std::clamp(s, -89.0, 89.0)));
         }
     }
     return scene;

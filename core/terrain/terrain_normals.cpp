@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
 
 namespace ts::render {
@@ -50,7 +50,7 @@ NormalField terrain_normals(const terrain::HeightGrid& g, int threads) {
 }
 
 double slope_deg(float nz) {
-    return std::acos(std::clamp(double(nz), -1.0, 1.0)) * (180.0 / std::numbers::pi);
+    return degrees(std::acos(std::clamp(double(nz), -1.0, 1.0)));
 }
 
 }  // namespace ts::render

@@ -1,15 +1,16 @@
 // `terrashade info --json` against `gdalinfo -json -stats -hist` and `gdaltransform` (GDAL as
 // an oracle only) for every shared DEM and for gdalwarp copies in each CRS issue 2 lists.
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "core/util/angles.hpp"
 #include "tests/cli/cli_support.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace ts::cli_test;
+using ts::radians;
 
 namespace {
 
@@ -76,7 +77,7 @@ fs::path gdal_view(const Case& c, const std::vector<fs::path>& files) {
 }
 
 double metres_between_lonlat(double lon1, double lat1, double lon2, double lat2) {
-    const double lat = std::min(std::abs(lat1), 90.0) * std::numbers::pi / 180;
+    const double lat = radians(std::min(std::abs(lat1), 90.0));
     const double dx = (lon1 - lon2) * kMetresPerDegreeLonAtEquator * std::cos(lat);
     const double dy = (lat1 - lat2) * kMetresPerDegreeLat;
     return std::hypot(dx, dy);

@@ -1,9 +1,9 @@
 // The one place user-facing azimuths (degrees clockwise from north) meet the internal phi
 // (radians counter-clockwise from east): core/geo/azimuth.hpp.
 #include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@ namespace ts::geo {
 namespace {
 
 TEST(Azimuth, ClockwiseFromNorthToPhi) {
-    EXPECT_NEAR(azimuth_cw_from_north_to_phi(0), std::numbers::pi / 2, 1e-15);   // north = +y
+    EXPECT_NEAR(azimuth_cw_from_north_to_phi(0), kPi / 2, 1e-15);   // north = +y
     EXPECT_NEAR(azimuth_cw_from_north_to_phi(90), 0, 1e-15);                     // east = +x
     EXPECT_NEAR(std::cos(azimuth_cw_from_north_to_phi(180)), 0, 1e-15);
     EXPECT_NEAR(std::sin(azimuth_cw_from_north_to_phi(180)), -1, 1e-15);         // south = -y

@@ -5,13 +5,13 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/sh/sh_shared.hpp"
+#include "core/util/angles.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/spirv.hpp"
 #include "tests/gpu/validated_context.hpp"
@@ -24,7 +24,6 @@ namespace ts::gpu {
 namespace {
 
 namespace shared = ts::sh::shared;
-constexpr double kPi = std::numbers::pi;
 
 // Mirrors struct Case in sh_agreement.comp (std430, 48 bytes).
 struct Case {

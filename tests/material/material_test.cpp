@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/material/material.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::render {
 namespace {
@@ -34,7 +35,7 @@ TEST(Material, SteepSlopesAreRockAndForestBelowTheTreeline) {
     for (auto [slope, expected] : {std::pair{45.0, Surface::rock}, std::pair{20.0, Surface::tree_cover}}) {
         std::vector<float> z(25);
         for (int r = 0; r < 5; ++r)
-            for (int c = 0; c < 5; ++c) z[r * 5 + c] = float(1000 + std::tan(slope * 3.14159265 / 180) * 30 * c);
+            for (int c = 0; c < 5; ++c) z[r * 5 + c] = float(1000 + std::tan(radians(slope)) * 30 * c);
         const auto g = terrain::HeightGrid::uniform(5, 5, z, 30, 30);
         const MaterialRaster m = rule_materials(g, terrain_normals(g));
         EXPECT_EQ(m.surface[12], expected) << slope;

@@ -1,8 +1,8 @@
 // Hillshade on planes with known slope and aspect: the exact value of 1 + 254 cos(incidence).
 #include "core/render/hillshade.hpp"
+#include "core/util/angles.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -12,7 +12,6 @@
 namespace ts::render {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A plane z = gx * east + gy * north (metres), on a grid with spacings dx, dy (row 0 = north).
 std::vector<float> plane(int w, int h, double dx, double dy, double gx, double gy) {
@@ -28,9 +27,9 @@ std::vector<float> plane(int w, int h, double dx, double dy, double gx, double g
 int expected_value(double gx, double gy, double azimuth_deg, double altitude_deg) {
     const double slope = std::atan(std::hypot(gx, gy));
     const double aspect = std::atan2(-gx, -gy);  // downhill direction, clockwise from north
-    const double zenith = (90.0 - altitude_deg) * kDeg;
+    const double zenith = radians(90.0 - altitude_deg);
     const double cos_i =
-        std::cos(zenith) * std::cos(slope) + std::sin(zenith) * std::sin(slope) * std::cos(azimuth_deg * kDeg - aspect);
+        std::cos(zenith) * std::cos(slope) + std::sin(zenith) * std::sin(slope) * std::cos(radians(azimuth_deg) - aspect);
     return cos_i <= 0 ? 1 : int(std::lround(1.0 + 254.0 * cos_i));
 }
 

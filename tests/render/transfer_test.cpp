@@ -2,6 +2,7 @@
 // (core/sh/sh_exp_shared.h, core/sh/sh_product_shared.h), against core/sh's own tensor, its
 // exp_hybrid, and the slow triple-product reference.
 #include "core/render/transfer.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
 // A random unit vector, upper hemisphere when `up` (a terrain normal).
 glm::dvec3 random_direction(sh::SplitMix64& rng, bool up) {
     const double z = up ? rng.uniform(0.05, 1.0) : rng.uniform(-1.0, 1.0);
-    const double phi = rng.uniform(0.0, 2.0 * sh::kPi);
+    const double phi = rng.uniform(0.0, 2.0 * kPi);
     const double s = std::sqrt(1.0 - z * z);
     return {s * std::cos(phi), s * std::sin(phi), z};
 }

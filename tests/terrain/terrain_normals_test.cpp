@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/terrain/terrain_normals.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::render {
 namespace {
@@ -23,7 +24,7 @@ TEST(TerrainNormals, PlaneTiltedEastWithMetricSpacing) {
         EXPECT_NEAR(n.y[i], 0.0, 1e-6);
         EXPECT_NEAR(n.z[i], 1.0 / len, 1e-6);
     }
-    EXPECT_NEAR(slope_deg(n.z[0]), std::atan(0.5) * 180 / 3.14159265358979, 1e-4);
+    EXPECT_NEAR(slope_deg(n.z[0]), degrees(std::atan(0.5)), 1e-4);
 }
 
 TEST(TerrainNormals, RowsRunSouthSoHeightRisingNorthFacesSouth) {

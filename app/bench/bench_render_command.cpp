@@ -1,6 +1,6 @@
 // `terrashade bench render`: the renderer's map radiance against the ray-traced reference
 // (core/render/reference_shading.hpp) with the same normals, materials, sky and BRDFs, for a
-// morning, noon and evening sun on each DEM (issue 6, "Accuracy"):
+// morning, noon and evening sun on each DEM (docs/accuracy.md):
 //  - radiance (luminance) on a random subset of texels (fixed seed): relative RMSE, the 99th
 //    percentile of the relative error, and the relative bias;
 //  - the sun-shadow mask (visible fraction < 0.5) over every texel: the renderer's sun

@@ -26,8 +26,7 @@ namespace {
 // sin(|m| phi) for m < 0 (sh_shared.h's ts_sh_eval). So each ring needs only the Fourier sums
 // sum_j w L_j trig_m(phi_j), m = 0..3, and A_lm(z) once: sh::eval at the four azimuths where
 // trig_m = 1. Same nodes and weights as the direct sum_j w L_j Y(d_j), a quarter of the work
-// besides the radiance itself (Preetham, 32 x 128 rule: 0.70 -> ~0.45 ms; equal within
-// rounding, tests/light/sky_sh_test.cpp).
+// besides the radiance itself (equal within rounding, tests/light/sky_sh_test.cpp).
 struct RingSums {
     double z = std::numeric_limits<double>::quiet_NaN();
     glm::dvec3 c[4] = {}, s[4] = {};  // sum w L cos(m phi), sum w L sin(m phi); s[0] unused

@@ -1,6 +1,7 @@
 #pragma once
-// Materials per texel (session-2 BRDFs): Lambert albedo (linear RGB), an optional Phong lobe
-// (ks, alpha) and water (a Fresnel mirror over a dark diffuse body, water_albedo 0.02).
+// Materials per texel, with the BRDFs of brdf.hpp and fresnel.hpp: Lambert albedo (linear
+// RGB), an optional Phong lobe (ks, alpha) and water (a Fresnel mirror over a dark diffuse body,
+// water_albedo 0.02).
 //
 // Where they come from (render --materials):
 //  - rule (default): from height and slope, blended smoothly so class borders do not show as

@@ -53,8 +53,8 @@ std::uint8_t srgb8_code(float exposed);
 // srgb8_code itself. It equals srgb8_code except at isolated floats where srgb8_code's own float
 // rounding steps back by one code (filmic and pow are not monotone to the last ulp right at a
 // code boundary); there it gives the monotone neighbours' code (tests/render/tone_map_test.cpp).
-// Building it costs ~8000 srgb8_code calls (~0.2 ms); a lookup is a few instructions (a
-// 500x500 frame: ~8 ms -> ~1 ms).
+// Building it costs ~8000 srgb8_code calls; a lookup is a few instructions, where
+// srgb8_code costs a pow per channel.
 class Srgb8Encoder {
 public:
     Srgb8Encoder();

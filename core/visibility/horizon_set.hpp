@@ -1,7 +1,8 @@
 #pragma once
 // Horizon elevation angles for a window of receivers and D azimuths.
-// Internal azimuth phi_d = 2 pi d / D, counter-clockwise from east (ARCHITECTURE.md);
-// user_azimuth_deg() converts to degrees clockwise from north, the one place that does.
+// Internal azimuth phi_d = 2 pi d / D, counter-clockwise from east
+// (../shared/design/ARCHITECTURE.md); user_azimuth_deg() converts to degrees clockwise from
+// north, the one place that does.
 #include <cmath>
 #include <cstddef>
 #include <vector>

@@ -1,4 +1,4 @@
-// Each bad input of issue 2 through the real command: exit code 2, exactly one line on
+// Each bad input `info` must reject, through the real command: exit code 2, exactly one line on
 // stderr naming the file, no crash. Also the happy paths a user types first.
 #include <gtest/gtest.h>
 #include <zip.h>

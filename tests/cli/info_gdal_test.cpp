@@ -1,5 +1,5 @@
 // `terrashade info --json` against `gdalinfo -json -stats -hist` and `gdaltransform` (GDAL as
-// an oracle only) for every shared DEM and for gdalwarp copies in each CRS issue 2 lists.
+// an oracle only) for every shared DEM and for gdalwarp copies in each CRS family it supports.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ using ts::radians;
 
 namespace {
 
-// Issue 2: corners within 1 cm.
+// The target: corners within 1 cm.
 constexpr double kCornerToleranceM = 0.01;
 // Metres per degree, generous upper bounds (WGS84 meridian and equator): turn a lon/lat
 // difference into a distance that is never underestimated.
@@ -166,7 +166,7 @@ const Case kCases[] = {
     {"grenoble_point", "copernicus_N45E005_grenoble_500px.tif", ""},
     {"etopo_global", "etopo1_global_1deg.tif", ""},
     {"nodata_3x3", "nodata_3x3.tif", ""},
-    // Reprojected copies, one per CRS family of issue 2.
+    // Reprojected copies, one per supported CRS family.
     {"utm_north_32637", "srtm3_N39E040_1000px.tif", "-t_srs EPSG:32637 -ts 250 250"},
     {"utm_north_32633", "N00E010.hgt", "-t_srs EPSG:32633 -ts 200 200"},
     {"utm_south_32733", "N00E010.hgt", "-t_srs EPSG:32733 -ts 200 200 -ot Float32 -co TILED=YES -co BLOCKXSIZE=64 -co BLOCKYSIZE=64"},

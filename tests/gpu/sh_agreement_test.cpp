@@ -1,6 +1,6 @@
-// Issue 3: GLSL and C++ evaluate the same core/sh/sh_shared.h. A compute shader evaluates every
-// function in float on the Vulkan device (lavapipe here); the C++ side evaluates the same text
-// in double from the same float inputs. The validation layer is on and must stay silent.
+// GLSL and C++ evaluate the same core/sh/sh_shared.h. A compute shader evaluates every
+// function in float on the Vulkan device (lavapipe on a machine without a GPU); the C++ side
+// evaluates the same text in double from the same float inputs. The validation layer is on and must stay silent.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -51,7 +51,7 @@ GridCrop crop_of_file(const char* name, int size) {
 // the RMS over all of them stays below kHorizonTol (measured 2.6e-6 at most).
 constexpr double kHorizonTol = 1e-4;    // rad
 constexpr double kFlipFraction = 1e-4;  // measured 0 on five DEMs, 1e-5 on the 1-degree global grid
-// svf and sky_visible: the aim, 1e-4 absolute, on every texel (measured <= 5e-6, and
+// svf and sky_visible: the target, 1e-4 absolute, on every texel (measured <= 5e-6, and
 // 2.8e-5 with the global grid's flips). log-SH: coefficients up to ~8 summed from 32 slices in
 // float, 1e-4 absolute on texels without a flip (measured 2.8e-5).
 constexpr double kSvfTol = 1e-4;

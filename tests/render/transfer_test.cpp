@@ -172,7 +172,7 @@ TEST(ShExpShared, NonFiniteInputGivesZerosAndHugeInputStaysFinite) {
 TEST(Transfer, FullyVisibleDiffuseTexelUnderAConstantSkyGivesTheSky) {
     // V_log = 0, the diffuse lobe cos/pi: <T, L> for a constant sky radiance c is c times the
     // lobe's integral, 1 for the true lobe. The exponentiated log lobe (default epsilon) keeps
-    // that to ~1% (core/sh's LogBrdf test: ~1.01), whatever the normal (a rotation keeps the DC).
+    // that to ~1% (tests/material/log_brdf_test.cpp: ~1.01), whatever the normal (a rotation keeps the DC).
     // Bound 3%, and all normals must agree with each other to 1e-5 (float rounding only).
     const std::size_t n = 257;
     const sh::LogBrdfTable table;

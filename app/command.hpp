@@ -8,26 +8,16 @@ namespace ts::app {
 
 void add_info_command(CLI::App& root);
 void add_hillshade_command(CLI::App& root);
-// `bench` with its subcommands (bench sh, ...): app/bench_command.cpp.
+// `bench` with its subcommands (bench sh, bench visibility, ...): app/bench/bench_command.cpp.
 void add_bench_command(CLI::App& root);
 void add_visibility_command(CLI::App& root);
-// `terrashade bench visibility` (app/bench_visibility_command.cpp), called by add_bench_command.
-void add_bench_visibility_command(CLI::App& bench);
 // Only in a GPU build (TERRASHADE_HAS_GPU): the Vulkan devices and a compute self-test.
 void add_devices_command(CLI::App& root);
 // `terrashade sun`: the sun's position at a time and place (app/sun_command.cpp).
 void add_sun_command(CLI::App& root);
 
-// `terrashade render` and `terrashade relight` (app/render_command.cpp, app/relight_command.cpp; issue 6).
+// `terrashade render` and `terrashade relight` (app/render_command.cpp, app/relight_command.cpp).
 void add_render_command(CLI::App& root);
 void add_relight_command(CLI::App& root);
-// `terrashade bench relight` (app/bench_relight_command.cpp), called by add_bench_command.
-void add_bench_relight_command(CLI::App& bench);
-// `terrashade bench render` (app/bench_render_command.cpp), called by add_bench_command.
-void add_bench_render_command(CLI::App& bench);
-// `terrashade bench transfer` (app/bench_transfer_command.cpp): exp + relight, CPU vs GPU.
-void add_bench_transfer_command(CLI::App& bench);
-// `terrashade bench sun` (app/bench_sun_command.cpp): sun visibility, sweep vs exact.
-void add_bench_sun_command(CLI::App& bench);
 
 }  // namespace ts::app

@@ -9,7 +9,7 @@
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
 #include "core/raster/raster_writer.hpp"
-#include "core/shading/hillshade.hpp"
+#include "core/render/hillshade.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
 
@@ -19,7 +19,7 @@ namespace {
 struct HillshadeArgs {
     DemInput input;
     std::string out;
-    shading::HillshadeOptions shade;
+    render::HillshadeOptions shade;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -30,15 +30,15 @@ std::string lower_extension(const std::string& path) {
 
 void run_hillshade(const HillshadeArgs& args) {
     // Check everything cheap before reading the DEM.
-    shading::validate(args.shade);
+    render::validate(args.shade);
     const std::string ext = lower_extension(args.out);
     if (ext != ".png" && ext != ".tif" && ext != ".tiff") {
         throw input_error(args.out, "unsupported output format '" + ext + "' (use .png or .tif)");
     }
     const dem::Dem dem = load_dem_input(args.input);
     const terrain::HeightGrid grid = terrain::metric_view(dem);
-    const std::vector<std::uint8_t> shade = shading::hillshade(grid, args.shade);
-    raster::write_u8_image(args.out, dem.width, dem.height, 1, shade.data(), &dem.georef, int(shading::kHillshadeNodata));
+    const std::vector<std::uint8_t> shade = render::hillshade(grid, args.shade);
+    raster::write_u8_image(args.out, dem.width, dem.height, 1, shade.data(), &dem.georef, int(render::kHillshadeNodata));
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // `terrashade relight`: the same DEM under the sun and sky of many instants. Visibility and
 // transfer vectors are computed once; each frame is only the sky's SH, the sun's visibility
 // sweep and the per-texel shading (docs/rendering.md, "Relighting").
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +17,7 @@
 #include "core/light/utc_time.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::app {
 namespace {
@@ -68,7 +68,7 @@ void run_relight(const RelightArgs& a) {
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     std::unique_ptr<render::Scene> scene;
     {
         ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(a.render.directions), "rays");
@@ -76,7 +76,7 @@ void run_relight(const RelightArgs& a) {
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
-    const double setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double setup_s = t0.seconds();
 
     std::vector<render::SunState> suns;
     std::size_t down = 0, brightest = 0;
@@ -99,7 +99,7 @@ void run_relight(const RelightArgs& a) {
         std::printf("exposure: EV100 %.2f for every frame (auto, from %s)\n", exposure.ev100,
                     light::format_utc_time(times[brightest]).c_str());
     }
-    const auto t1 = std::chrono::steady_clock::now();
+    const Stopwatch t1;
     double render_s = 0;
     int width = 0, height = 0;
     {
@@ -108,9 +108,9 @@ void run_relight(const RelightArgs& a) {
         render::BackgroundWriter writer(a.write_queue, a.writer_threads);
         ProgressBar bar("relight", times.size(), "frames");
         for (std::size_t k = 0; k < times.size(); ++k) {
-            const auto tf = std::chrono::steady_clock::now();
+            const Stopwatch tf;
             scene->render(suns[k], image);
-            render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - tf).count();
+            render_s += tf.seconds();
             width = image.width, height = image.height;
             char name[64];
             std::snprintf(name, sizeof name, "frame_%04zu.%s", k, a.format.c_str());
@@ -120,7 +120,7 @@ void run_relight(const RelightArgs& a) {
         }
         writer.finish();
     }
-    const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    const double total_s = t1.seconds();
     const double px = double(width) * height * double(times.size());
     std::printf("relit %zu frames (%dx%d) into %s: visibility + transfer once %.3f s; frames %.3f s rendering "
                 "(%.1f Mpx/s), %.3f s with files written (%.1f Mpx/s)\n",

@@ -1,7 +1,6 @@
 // `terrashade render`: one shaded picture of a DEM under the sun and sky at a time (or a sun
 // position given directly), as a map on the DEM's grid or a perspective camera view.
 // Pipeline and formulas: docs/rendering.md.
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -16,6 +15,7 @@
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/visibility/sun_visibility.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::app {
 namespace {
@@ -27,10 +27,6 @@ struct RenderCommandArgs {
     std::string out;
     std::string sun_visibility;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 void run_render(const RenderCommandArgs& a) {
     // Every check that needs no DEM first.
@@ -66,10 +62,10 @@ void run_render(const RenderCommandArgs& a) {
         std::fprintf(stderr, "terrashade: warning: the sun is below the horizon (elevation %.2f deg): sky light only\n",
                      sun.elevation_deg);
 
-    const auto t1 = std::chrono::steady_clock::now();
+    const Stopwatch t1;
     render::LinearImage image;
     scene->render(sun, image);
-    const double frame_s = seconds_since(t1);
+    const double frame_s = t1.seconds();
 
     const double scale = render::write_image(a.out, image, exposure, scene->target().georef());
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,

@@ -2,7 +2,6 @@
 // from them (sky view factor, visible sky, log-SH and SH visibility), as float32 GeoTIFFs
 // georeferenced like the input.
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +15,7 @@
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
+#include "core/util/angles.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/sh/exp_method.hpp"
 #include "core/terrain/dem_height_grid.hpp"
@@ -26,6 +26,7 @@
 #include "core/visibility/sky_integrals.hpp"
 #include "core/visibility/visibility_backend.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::app {
 namespace {
@@ -41,10 +42,6 @@ struct VisibilityOptions {
     std::string svf, sky_visible, horizons, sh, log_sh;
     DeviceArgs device;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 bool is_png(const std::string& path) {
     return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
@@ -108,7 +105,7 @@ void run_visibility(VisibilityOptions& o) {
 
     if (!o.horizons.empty()) {
         std::vector<float> deg(set.angle.size());
-        for (std::size_t i = 0; i < deg.size(); ++i) deg[i] = float(set.angle[i] * (180.0 / 3.14159265358979323846));
+        for (std::size_t i = 0; i < deg.size(); ++i) deg[i] = float(degrees(set.angle[i]));
         std::vector<std::string> names;
         for (int d = 0; d < set.directions; ++d) {
             char buf[96];
@@ -132,9 +129,9 @@ void run_visibility(VisibilityOptions& o) {
         }
         if (!o.log_sh.empty()) write_raster(o.log_sh, dem, 16, log_sh.data(), names);
         if (!o.sh.empty()) {
-            const auto t1 = std::chrono::steady_clock::now();
+            const Stopwatch t1;
             const auto vis = visibility::exp_sh_raster(log_sh, texels, exp_method, o.horizon.threads);
-            std::printf("exp (%s): %.3f s\n", o.exp_method.c_str(), seconds_since(t1));
+            std::printf("exp (%s): %.3f s\n", o.exp_method.c_str(), t1.seconds());
             write_raster(o.sh, dem, 16, vis.data(), names);
         }
     }

@@ -1,12 +1,12 @@
 #include "gpu/batch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "core/util/stopwatch.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace ts::gpu {
@@ -206,9 +206,9 @@ void Batch::submit_and_wait() {
     commands_.end();
     recording_ = false;
 
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     gpu::submit_and_wait(context_.device().queue(), commands_.get(), fence_);
-    last_run_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    last_run_ms_ = watch.milliseconds();
 
     stage_times_.clear();
     if (!mark_labels_.empty()) {

@@ -7,7 +7,7 @@
 
 namespace ts::gpu {
 
-// One compiled shader: its source file name ("horizon_sweep.comp") and its SPIR-V words.
+// One compiled shader: its source file name ("vis_exact_sweep.comp") and its SPIR-V words.
 struct SpirvBlob {
     const char* name;
     std::span<const std::uint32_t> words;

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "core/geo/azimuth.hpp"
 #include "core/light/sky_sh.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
@@ -25,7 +25,7 @@ HdrSky::HdrSky(raster::FloatImage image, std::string source, double rotation_deg
 
 glm::dvec2 HdrSky::map_coordinates(const glm::dvec3& dir) const {
     const double horizontal = std::hypot(dir.x, dir.y);
-    const double elevation_deg = std::atan2(dir.z, horizontal) * 180.0 / std::numbers::pi;
+    const double elevation_deg = std::atan2(dir.z, horizontal) * 180.0 / kPi;
     const double azimuth_deg = horizontal > 0.0 ? geo::phi_to_azimuth_cw_from_north(std::atan2(dir.y, dir.x)) : 0.0;
     double u = 0.5 + (azimuth_deg - rotation_deg_) / 360.0;
     u -= std::floor(u);
@@ -70,7 +70,7 @@ glm::dvec3 HdrSky::brightest_direction() const {
     const int row = static_cast<int>(best / static_cast<std::size_t>(image_.width));
     const double azimuth = rotation_deg_ + ((col + 0.5) / image_.width - 0.5) * 360.0;
     const double elevation = 90.0 - (row + 0.5) / image_.height * 180.0;
-    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth), elevation * std::numbers::pi / 180.0);
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth), elevation * kPi / 180.0);
 }
 
 const SkySh& HdrSky::cached_sh() const {

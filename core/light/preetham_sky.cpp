@@ -3,16 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "core/light/sky_color.hpp"
 #include "core/light/sky_quadrature.hpp"
 #include "core/light/sun_transmittance.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 // Perez coefficients = a T + b, Preetham et al. 1999, appendix A.2.
 PerezCoefficients linear_in_t(const double (&a)[5], const double (&b)[5], double t) {

@@ -1,7 +1,7 @@
 #pragma once
 // Sky lighting for shading: radiance of the sky dome (without the sun's disc) in the local ENU
-// frame, and the sun treated apart as a disc (METHOD.md: its visibility comes from the exact
-// horizon in its azimuth, so it must not be smeared into the order-4 SH).
+// frame, and the sun treated apart as a disc (../shared/design/METHOD.md: its visibility comes
+// from the exact horizon in its azimuth, so it must not be smeared into the order-4 SH).
 //
 // Units: linear RGB (Rec. 709 / sRGB primaries) radiance in kcd/m^2-like photometric units,
 // the same for every model, so one exposure setting fits clear, overcast and HDR skies alike;

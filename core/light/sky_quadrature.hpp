@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
-#include <numbers>
 #include <vector>
 
 #include "core/sh/gauss_legendre.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
@@ -24,7 +24,7 @@ struct HemisphereRule {
 // lower hemisphere. Weights sum to 2 pi per hemisphere.
 template <class F>
 void for_each_sky_node(const HemisphereRule& rule, bool lower, F&& f) {
-    const double dphi = 2.0 * std::numbers::pi / rule.n_phi;
+    const double dphi = 2.0 * kPi / rule.n_phi;
     // The azimuths are the same on every ring: their cos/sin once, not once per node.
     std::vector<double> cos_phi(std::size_t(std::max(0, rule.n_phi))), sin_phi(cos_phi.size());
     for (int j = 0; j < rule.n_phi; ++j) {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "core/light/hdr_sky.hpp"
 #include "core/sh/sh_basis.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
@@ -26,8 +26,7 @@ namespace {
 // sin(|m| phi) for m < 0 (sh_shared.h's ts_sh_eval). So each ring needs only the Fourier sums
 // sum_j w L_j trig_m(phi_j), m = 0..3, and A_lm(z) once: sh::eval at the four azimuths where
 // trig_m = 1. Same nodes and weights as the direct sum_j w L_j Y(d_j), a quarter of the work
-// besides the radiance itself (Preetham, 32 x 128 rule: 0.70 -> ~0.45 ms; equal within
-// rounding, tests/light/sky_sh_test.cpp).
+// besides the radiance itself (equal within rounding, tests/light/sky_sh_test.cpp).
 struct RingSums {
     double z = std::numeric_limits<double>::quiet_NaN();
     glm::dvec3 c[4] = {}, s[4] = {};  // sum w L cos(m phi), sum w L sin(m phi); s[0] unused
@@ -42,11 +41,10 @@ struct RingSums {
     void flush(std::array<glm::dvec3, sh::kCount>& acc) const {
         if (std::isnan(z)) return;
         const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        const double pi = std::numbers::pi;
         sh::ShVec a[4];  // a[k]: sh::eval where trig_m = 1 for m = 0 (all m >= 0) and m = -k
         a[0] = sh::eval({r, 0.0, z});
         for (int k = 1; k <= 3; ++k) {
-            const double phi = pi / (2.0 * k);
+            const double phi = kPi / (2.0 * k);
             a[k] = sh::eval({r * std::cos(phi), r * std::sin(phi), z});
         }
         for (int i = 0; i < sh::kCount; ++i) {

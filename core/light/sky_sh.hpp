@@ -7,7 +7,7 @@
 namespace ts::light {
 
 // The rule project_sky_sh uses: 32 Gauss-Legendre nodes in z per hemisphere x 128 azimuths
-// (8192 radiance evaluations, ~1 ms) for analytic skies. Measured against a 256 x 1024 rule,
+// (8192 radiance evaluations) for analytic skies. Measured against a 256 x 1024 rule,
 // every coefficient of the Preetham sky is within 3e-5 of the DC term (sun 3..60 degrees up,
 // T 2..8; docs/lighting.md); convergence is algebraic, not spectral, because the Perez
 // exp(D gamma) term has a cone-shaped peak at the sun. For an HDR map: at least one node per

@@ -4,26 +4,25 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "core/geo/azimuth.hpp"
 #include "core/light/delta_t.hpp"
 #include "core/light/spa_tables.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::light {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegPerRad = 180.0 / kPi;
-
+// Degrees to radians as a division by 180 / pi, as this code always did: radians() multiplies
+// by pi / 180, which differs in the last bit for some angles.
 double rad(double deg) {
-    return deg / kDegPerRad;
+    return deg / degrees(1.0);
 }
 double deg(double r) {
-    return r * kDegPerRad;
+    return degrees(r);
 }
 
 // Angle in [0, 360).

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/light/sky_color.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 
 double kasten_young_air_mass(double zenith_deg) {
     const double z = std::clamp(std::isfinite(zenith_deg) ? zenith_deg : 90.0, 0.0, 90.0);
-    const double cos_z = std::cos(z * std::numbers::pi / 180.0);
+    const double cos_z = std::cos(z * kPi / 180.0);
     return 1.0 / (cos_z + 0.50572 * std::pow(96.07995 - z, -1.6364));
 }
 
@@ -43,7 +43,7 @@ Rgb sun_beam_irradiance(double turbidity, const glm::dvec3& sun_direction_enu, d
     if (!(elevation >= -angular_radius_rad)) return Rgb(0.0f);
     const Chromaticity sun = planckian_chromaticity(kSunTemperatureK);
     const Rgb extraterrestrial = xyY_to_linear_srgb(sun.x, sun.y, kSolarIlluminanceKlx);
-    const double zenith_deg = 90.0 - elevation * 180.0 / std::numbers::pi;
+    const double zenith_deg = 90.0 - elevation * 180.0 / kPi;
     return extraterrestrial * sun_transmittance(turbidity, zenith_deg);
 }
 

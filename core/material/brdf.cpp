@@ -5,11 +5,11 @@
 
 #include "core/material/fresnel.hpp"
 #include "core/material/microfacet.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::material {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 glm::dvec3 reflect_about(const glm::dvec3& i, const glm::dvec3& n) {
     return -i + 2.0 * glm::dot(i, n) * n;

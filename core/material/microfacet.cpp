@@ -2,9 +2,10 @@
 
 #include <cmath>
 
+#include "core/util/angles.hpp"
+
 namespace ts::material {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 double beckmann_d(double cos_h, double m) {

@@ -1,21 +1,17 @@
+#include "core/util/angles.hpp"
 #include "core/render/frame_renderer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::render {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 constexpr float kInvPi = 1.0f / std::numbers::pi_v<float>;
 
@@ -28,9 +24,9 @@ FrameRenderer::FrameRenderer(ShadingState& state, const ViewShading& view)
 }
 
 void FrameRenderer::render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out) {
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     const light::SkySh sh = light::project_sky_sh(sky);
-    const double sh_s = seconds_since(t0);
+    const double sh_s = t0.seconds();
     render(sky, sh, sun, out);
     timings_.sky_s += sh_s;
 }
@@ -41,21 +37,21 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     const int threads = state_.options().threads;
     out.resize(texels);
     timings_ = {};
-    auto t0 = Clock::now();
+    Stopwatch t0;
     const light::SunDisc disc = sky.sun();
     const glm::vec3 e_sun = disc.irradiance;
     // The disc's top above the astronomical horizon and some light: sweep for its visibility.
     const bool sun_up = (e_sun.x > 0 || e_sun.y > 0 || e_sun.z > 0) &&
-                        sun.elevation_deg > -disc.angular_radius_rad * (180.0 / std::numbers::pi);
+                        sun.elevation_deg > -degrees(disc.angular_radius_rad);
     const std::vector<std::uint32_t>& water_index = state_.water_index();
     if (!water_index.empty()) sky_table_.update(sky);
-    timings_.sky_s = seconds_since(t0);
+    timings_.sky_s = t0.seconds();
 
-    t0 = Clock::now();
+    t0.restart();
     state_.sun_visibility(sun, sun_up, sun_vis_);
-    timings_.sun_visibility_s = seconds_since(t0);
+    timings_.sun_visibility_s = t0.seconds();
 
-    t0 = Clock::now();
+    t0.restart();
     const std::vector<std::uint32_t>& spec_index = state_.specular_index();
     if (!spec_index.empty()) shade_transfer(view_.t_spec.data(), spec_index.size(), sky_sh, spec_rgb_.data(), threads);
 
@@ -120,7 +116,7 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
         const glm::vec3 body = fused ? out[t] : diffuse_rgb_[t] + v * cos_s * e_diffuse;
         out[t] = f * reflected + (1 - f) * kWaterAlbedo * body;
     }
-    timings_.shading_s = seconds_since(t0);
+    timings_.shading_s = t0.seconds();
 }
 
 }  // namespace ts::render

@@ -4,10 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "core/terrain/height_pyramid.hpp"
 #include "core/terrain/valid_bilinear.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -15,7 +15,6 @@
 namespace ts::render {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr float kNoSurface = -std::numeric_limits<float>::infinity();
 // sin(3 deg): where the air light and the land beyond the DEM are read from the sky.
 constexpr float kHorizonLift = 0.0523f;
@@ -179,12 +178,12 @@ Camera default_camera(const terrain::HeightGrid& g, const geo::Georef& georef) {
     c.pitch_deg = -16.0;
     c.fov_deg = 55.0;
     const double back = 0.62 * extent;  // horizontal distance from the centre
-    const double east = -back * std::sin(c.heading_deg * kDeg), north = -back * std::cos(c.heading_deg * kDeg);
+    const double east = -back * std::sin(radians(c.heading_deg)), north = -back * std::cos(radians(c.heading_deg));
     const double col = (g.width - 1) * 0.5 + east / dx, row = (g.height - 1) * 0.5 - north / dy;
     const glm::dvec2 ll = georef.pixel_to_lonlat(col + 0.5, row + 0.5);
     c.lon_deg = ll.x, c.lat_deg = ll.y;
     // Look down at the centre's mean height, at least 500 m above the highest point.
-    c.height_m = std::max(mean + back * std::tan(-c.pitch_deg * kDeg), top + 500.0);
+    c.height_m = std::max(mean + back * std::tan(radians(-c.pitch_deg)), top + 500.0);
     return c;
 }
 
@@ -204,12 +203,12 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     below_terrain_ = inside && !std::isnan(ground) && cam_.z <= double(ground);
 
     const PatchPyramid pyr(g, options_.threads);
-    const double h = camera.heading_deg * kDeg, p = camera.pitch_deg * kDeg;
+    const double h = radians(camera.heading_deg), p = radians(camera.pitch_deg);
     const glm::dvec3 forward{std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
     const glm::dvec3 right{std::cos(h), -std::sin(h), 0.0};
     const glm::dvec3 up{right.y * forward.z - right.z * forward.y, right.z * forward.x - right.x * forward.z,
                         right.x * forward.y - right.y * forward.x};
-    const double half = std::tan(0.5 * camera.fov_deg * kDeg);
+    const double half = std::tan(radians(0.5 * camera.fov_deg));
     const double aspect = double(options_.height) / options_.width;
     const double nudge = 1e-4 * std::min(dx, dy);
     pixels_.assign(std::size_t(options_.width) * options_.height, Pixel{});

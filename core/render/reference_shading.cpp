@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 
 #include "core/geo/azimuth.hpp"
 #include "core/material/fresnel.hpp"
 #include "core/sh/gauss_legendre.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/bilinear_march.hpp"
@@ -21,7 +21,6 @@
 namespace ts::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -179,7 +178,7 @@ ReferenceSample ReferenceShader::shade(std::size_t k, const light::Sky& sky, con
     const light::SunDisc disc = sky.sun();
     const glm::dvec3 e_sun(disc.irradiance);
     const bool sun_up =
-        (e_sun.x > 0 || e_sun.y > 0 || e_sun.z > 0) && sun.elevation_deg > -disc.angular_radius_rad * (180.0 / kPi);
+        (e_sun.x > 0 || e_sun.y > 0 || e_sun.z > 0) && sun.elevation_deg > -degrees(disc.angular_radius_rad);
     const glm::dvec3 sdir = unit(sun_direction(sun));
     double frac = 0;
     if (sun_up) {

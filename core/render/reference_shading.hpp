@@ -1,6 +1,6 @@
 #pragma once
-// The reference the renderer is measured against (issue 6, "Accuracy"): per receiver texel,
-// the sun and the sky ray-traced with the same BRDFs (session 2's, docs/rendering.md), with
+// The reference the renderer is measured against (docs/accuracy.md): per receiver texel, the
+// sun and the sky ray-traced with the same BRDFs (core/material, docs/rendering.md), with
 // none of the renderer's approximations:
 //  - visibility by marching the bilinear height surface from the texel centre in steps of
 //    1/4 texel out to the grid's edge with Earth curvature (visibility::march_max_slope, the
@@ -23,8 +23,8 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/frame_renderer.hpp"
-#include "core/render/material.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/material/material.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/visibility/row_metrics.hpp"
 

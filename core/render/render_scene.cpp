@@ -9,8 +9,8 @@
 #include "core/light/sun_position.hpp"
 #include "core/raster/image_io_plugin/float_image_io.hpp"
 #include "core/raster/raster_writer.hpp"
-#include "core/render/material_sources.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/material/material_sources.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
 

@@ -13,7 +13,7 @@
 #include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/render/frame_renderer.hpp"
-#include "core/render/material.hpp"
+#include "core/material/material.hpp"
 #include "core/render/perspective_view.hpp"
 #include "core/render/render_target.hpp"
 #include "core/render/shading_state.hpp"

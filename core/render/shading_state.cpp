@@ -1,24 +1,20 @@
+#include "core/util/angles.hpp"
 #include "core/render/shading_state.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
 #include "core/geo/azimuth.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/visibility_backend.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::render {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // RendererOptions::band_correction: scales each SH band of the diffuse transfer t ([16][texels])
 // so that a texel with nothing blocking gets the projected clamped cosine / pi exactly.
@@ -50,7 +46,7 @@ void correct_diffuse_bands(const std::array<float, 4>& lobe, const TransferInput
 
 glm::dvec3 sun_direction(const SunState& sun) {
     return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(sun.azimuth_deg),
-                              sun.elevation_deg * (std::numbers::pi / 180.0));
+                              radians(sun.elevation_deg));
 }
 
 ShadingState::ShadingState(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
@@ -72,7 +68,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     for (std::size_t t = 0; t < texels; ++t)
         if (s.materials_.water[t]) s.normals_.x[t] = 0, s.normals_.y[t] = 0, s.normals_.z[t] = 1;
 
-    auto t0 = Clock::now();
+    Stopwatch t0;
     visibility::VisibilityRequest request;
     request.horizon.directions = options.directions;
     request.horizon.method = visibility::HorizonMethod::exact;
@@ -86,10 +82,10 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     if (!vb) own_cpu = visibility::make_cpu_visibility_backend(), vb = own_cpu.get();
     visibility::VisibilityResult vis = vb->compute(grid, request);
     s.visibility_path_ = vis.path();
-    s.visibility_s_ = seconds_since(t0);
+    s.visibility_s_ = t0.seconds();
     const float* log_sh = vis.log_sh.data();
 
-    t0 = Clock::now();
+    t0.restart();
     RenderBackend* backend = options.backend;
     const sh::LogBrdfTable table(options.brdf_log_eps);
     // Diffuse: the cos/pi lobe about the normal, the same ZH for every texel.
@@ -145,7 +141,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     for (std::size_t k = 0; k < s.water_index_.size(); ++k)
         for (int d = 0; d < d_count; ++d)
             s.water_horizons_[k * std::size_t(d_count) + std::size_t(d)] = vis.horizons.plane(d)[s.water_index_[k]];
-    s.transfer_s_ = seconds_since(t0);
+    s.transfer_s_ = t0.seconds();
     return state;
 }
 

@@ -21,8 +21,8 @@
 #include <glm/vec3.hpp>
 
 #include "core/render/diffuse_shading.hpp"
-#include "core/render/material.hpp"
-#include "core/render/terrain_normals.hpp"
+#include "core/material/material.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/sh/exp_method.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/visibility/horizon_sh.hpp"

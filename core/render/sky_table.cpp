@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+
+#include "core/util/angles.hpp"
 
 namespace ts::render {
 
@@ -10,11 +11,10 @@ SkyTable::SkyTable(int width, int height)
     : width_(std::max(width, 4)), height_(std::max(height, 2)), radiance_(std::size_t(width_) * height_, glm::vec3(0.0f)) {}
 
 void SkyTable::update(const light::Sky& sky) {
-    const double pi = std::numbers::pi;
     for (int j = 0; j < height_; ++j) {
-        const double el = pi / 2 - pi * (j + 0.5) / height_;
+        const double el = kPi / 2 - kPi * (j + 0.5) / height_;
         for (int i = 0; i < width_; ++i) {
-            const double phi = -pi + 2 * pi * (i + 0.5) / width_;
+            const double phi = -kPi + 2 * kPi * (i + 0.5) / width_;
             const glm::dvec3 d{std::cos(el) * std::cos(phi), std::cos(el) * std::sin(phi), std::sin(el)};
             radiance_[std::size_t(j) * width_ + i] = sky.radiance(d);
         }
@@ -22,7 +22,7 @@ void SkyTable::update(const light::Sky& sky) {
 }
 
 glm::vec3 SkyTable::lookup(const glm::vec3& d) const {
-    constexpr float pi = std::numbers::pi_v<float>;
+    constexpr float pi = float(kPi);
     const float phi = std::atan2(d.y, d.x);
     const float el = std::asin(std::clamp(d.z, -1.0f, 1.0f));
     const float u = (phi + pi) / (2 * pi) * float(width_) - 0.5f;

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/raster/srgb.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::render {
@@ -68,18 +69,8 @@ float filmic(float x) {
     return std::clamp(y, 0.0f, 1.0f);
 }
 
-float srgb_oetf(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-}
-
-float srgb_eotf(float v) {
-    v = std::clamp(v, 0.0f, 1.0f);
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
 std::uint8_t srgb8_code(float exposed) {
-    return std::uint8_t(std::lround(255.0f * srgb_oetf(filmic(exposed))));
+    return std::uint8_t(std::lround(255.0f * raster::srgb_oetf(filmic(exposed))));
 }
 
 namespace {

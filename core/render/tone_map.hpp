@@ -46,12 +46,8 @@ double exposure_scale(const Exposure& e, double log_average);
 // ACES filmic curve fitted by Narkowicz (2015): x(2.51x+0.03) / (x(2.43x+0.59)+0.14), clamped
 // to [0, 1]; per channel. Input 0.18 maps to ~0.27 (before the OETF).
 float filmic(float x);
-// sRGB OETF (IEC 61966-2-1): linear [0, 1] -> encoded [0, 1].
-float srgb_oetf(float linear);
-// Its inverse (8-bit orthophotos -> linear albedo).
-float srgb_eotf(float encoded);
-
-// The 8-bit code of one exposed channel value: lround(255 srgb_oetf(filmic(x))).
+// The 8-bit code of one exposed channel value: lround(255 srgb_oetf(filmic(x))), with the sRGB
+// OETF of core/raster/srgb.hpp.
 std::uint8_t srgb8_code(float exposed);
 
 // srgb8_code without a pow per call. The code is monotone in x, so a table over [2^-14, 8) in
@@ -60,8 +56,8 @@ std::uint8_t srgb8_code(float exposed);
 // srgb8_code itself. It equals srgb8_code except at isolated floats where srgb8_code's own float
 // rounding steps back by one code (filmic and pow are not monotone to the last ulp right at a
 // code boundary); there it gives the monotone neighbours' code (tests/render/tone_map_test.cpp).
-// Building it costs ~8000 srgb8_code calls (~0.2 ms); a lookup is a few instructions (a
-// 500x500 frame: ~8 ms -> ~1 ms).
+// Building it costs ~8000 srgb8_code calls; a lookup is a few instructions, where
+// srgb8_code costs a pow per channel.
 class Srgb8Encoder {
 public:
     Srgb8Encoder();

@@ -1,3 +1,4 @@
+#include "core/util/angles.hpp"
 #include "core/render/view_shading.hpp"
 
 #include <algorithm>
@@ -7,7 +8,7 @@
 #include "core/material/fresnel.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 
 namespace ts::render {
 namespace {
@@ -33,7 +34,7 @@ float horizon_visibility(const float* horizons, int d_count, const glm::vec3& r)
     if (std::isnan(h0) || std::isnan(h1)) return 1.0f;
     const double horizon = h0 + f * (h1 - h0);
     const double el = std::asin(std::clamp(double(r.z), -1.0, 1.0));
-    const double soft = 0.5 * std::numbers::pi / 180.0;
+    const double soft = radians(0.5);
     return float(std::clamp((el - horizon + soft) / (2 * soft), 0.0, 1.0));
 }
 

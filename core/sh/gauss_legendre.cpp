@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/util/angles.hpp"
+
 namespace ts::sh {
 
 GaussLegendre gauss_legendre(int n) {
@@ -10,9 +12,8 @@ GaussLegendre gauss_legendre(int n) {
     GaussLegendre rule;
     rule.nodes.resize(n);
     rule.weights.resize(n);
-    const double pi = 3.14159265358979323846;
     for (int i = 0; i < (n + 1) / 2; ++i) {
-        double x = std::cos(pi * (i + 0.75) / (n + 0.5));
+        double x = std::cos(kPi * (i + 0.75) / (n + 0.5));
         double dp = 0.0;
         for (int iter = 0; iter < 100; ++iter) {
             // P_n(x) and P_n'(x) by the three-term recurrence.

@@ -5,8 +5,9 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "core/sh/sh_shared.hpp"
 #include "core/sh/slice_projector.hpp"
-#include "core/sh/sphere_blocker.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::sh {
 
@@ -24,13 +25,12 @@ double SplitMix64::uniform() {
 LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
     LogScene scene;
     scene.log_eps = o.log_eps;
-    const double deg = kPi / 180.0;
     for (int b = 0; b < o.blockers; ++b) {
         // Uniform direction on the upper hemisphere.
         const double z = rng.uniform();
         const double phi = rng.uniform(0.0, 2.0 * kPi);
         const double r = std::sqrt(1.0 - z * z);
-        const double tb = rng.uniform(o.min_theta_b_deg, o.max_theta_b_deg) * deg;
+        const double tb = radians(rng.uniform(o.min_theta_b_deg, o.max_theta_b_deg));
         scene.caps.push_back({glm::dvec3(r * std::cos(phi), r * std::sin(phi), z), tb});
     }
     if (o.height_field) {
@@ -41,7 +41,7 @@ LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
         for (int k = 0; k < o.slices; ++k) {
             const double phi = SliceProjector::azimuth(k, o.slices);
             const double s = base + amp * std::sin(phi + phase) + rng.uniform(-5.0, 5.0);
-            scene.horizons[k] = static_cast<float>(std::clamp(s, -89.0, 89.0) * deg);
+            scene.horizons[k] = static_cast<float>(radians(std::clamp(s, -89.0, 89.0)));
         }
     }
     return scene;
@@ -49,7 +49,13 @@ LogScene random_scene(const SceneOptions& o, SplitMix64& rng) {
 
 ShVec LogScene::log_sh() const {
     ShVec f{};
-    for (const Cap& c : caps) f = f + zh_rotate(sphere_log_zh(c.theta_b, log_eps), c.axis);
+    for (const Cap& c : caps) {
+        // A cap's log-ZH straight from the shared formula (core/blockers/sphere_blocker.hpp wraps
+        // the same one; ts_sh cannot depend on ts_blockers, which depends on ts_sh).
+        double zh[kBands];
+        shared::ts_sphere_log_zh(c.theta_b, log_eps, zh);
+        f = f + zh_rotate({zh[0], zh[1], zh[2], zh[3]}, c.axis);
+    }
     if (!horizons.empty()) {
         const SliceProjector projector(static_cast<int>(horizons.size()));
         const auto hf = projector.project_horizons(horizons.data(), static_cast<float>(log_eps));

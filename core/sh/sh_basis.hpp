@@ -4,13 +4,14 @@
 #include <array>
 #include <glm/vec3.hpp>
 
+#include "core/util/angles.hpp"
+
 namespace ts::sh {
 
 inline constexpr int kBands = 4;
 inline constexpr int kCount = 16;
 // The SH coefficient vector of the constant function 1: only the DC term, sqrt(4 pi).
 inline constexpr double kSqrt4Pi = 3.5449077018110318;
-inline constexpr double kPi = 3.14159265358979323846;
 
 using ShVec = std::array<double, kCount>;
 using ZhVec = std::array<double, kBands>;

@@ -45,7 +45,7 @@ const TsLinearRow kTsLinearTable[TS_LINEAR_ROWS] = {
 // Where the rows are read. C++ reads the array above. A shader #defines these three before
 // including this file to read a storage buffer the host filled from the same array
 // (gpu/render uploads exp_shared::kTsLinearTable): llvmpipe copies a dynamically indexed
-// constant array into every invocation, which made the whole exponentiation up to 9x slower.
+// constant array into every invocation, which slows the whole exponentiation several times.
 #ifndef TS_LINEAR_M
 #define TS_LINEAR_M(i) kTsLinearTable[i].magnitude
 #define TS_LINEAR_A(i) kTsLinearTable[i].a

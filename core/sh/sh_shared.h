@@ -8,9 +8,9 @@
 // namespace ts::sh::shared around it (TS_REAL = double, TS_VEC3 = glm::dvec3).
 // GLSL side: `#define TS_GLSL 1` then `#include "core/sh/sh_shared.h"` (TS_REAL = float).
 //
-// Conventions (ARCHITECTURE.md): real orthonormal SH, l = 0..3, 16 coefficients, index
-// i = l*l + l + m, no Condon-Shortley phase (y_1,1 = +0.4886 x). ENU frame, z up; azimuth phi
-// counter-clockwise from +x (east); theta the polar angle from +z.
+// Conventions (../shared/design/ARCHITECTURE.md): real orthonormal SH, l = 0..3, 16
+// coefficients, index i = l*l + l + m, no Condon-Shortley phase (y_1,1 = +0.4886 x). ENU frame,
+// z up; azimuth phi counter-clockwise from +x (east); theta the polar angle from +z.
 //
 // The function signatures in this file are frozen (the GPU code depends on them).
 #ifndef TS_SH_SHARED_H

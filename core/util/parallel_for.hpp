@@ -39,7 +39,7 @@ void parallel_for(int count, int workers, Body&& body) {
 
 // Calls body(row_begin, row_end) on disjoint bands covering [0, rows), in parallel on
 // thread_count(threads) threads. Jobs below ~128k units of work (work_per_row * rows) run on
-// the calling thread: a thread start costs ~50 us.
+// the calling thread: starting a thread costs more than such a job.
 template <class Body>
 void parallel_rows(int rows, int threads, long long work_per_row, Body&& body) {
     constexpr long long kMinWorkPerThread = 64 * 1024;

@@ -2,7 +2,7 @@
 // A std::vector whose resize() leaves new elements default-initialised (for float: not
 // written), for large outputs that the code fills completely right after: a value-initialising
 // std::vector<float> of the 185 MB horizon planes of a whole SRTM tile is a single-threaded
-// memset plus every page fault on the calling thread (~75 ms here), before any work starts;
+// memset plus every page fault on the calling thread, before any work starts;
 // left unwritten, the pages are first touched by the workers that fill them.
 // assign(n, value) and vector(n, value) still write `value`.
 #include <memory>

@@ -1,12 +1,13 @@
 #pragma once
 // Horizon elevation angles for a window of receivers and D azimuths.
-// Internal azimuth phi_d = 2 pi d / D, counter-clockwise from east (ARCHITECTURE.md);
-// user_azimuth_deg() converts to degrees clockwise from north, the one place that does.
+// Internal azimuth phi_d = 2 pi d / D, counter-clockwise from east
+// (../shared/design/ARCHITECTURE.md); user_azimuth_deg() converts to degrees clockwise from
+// north, the one place that does.
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 #include <vector>
 
+#include "core/util/angles.hpp"
 #include "core/util/uninitialised_vector.hpp"
 
 namespace ts::visibility {
@@ -19,7 +20,7 @@ struct ReceiverWindow {
 };
 
 inline double azimuth_rad(int d, int directions) {
-    return 2.0 * std::numbers::pi * d / directions;
+    return 2.0 * kPi * d / directions;
 }
 
 // Degrees clockwise from north for internal azimuth index d.

@@ -6,12 +6,12 @@
 #include <barrier>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <thread>
 #include <utility>
 
 #include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/bilinear_march.hpp"
@@ -42,7 +42,6 @@ struct SunShadowSweep::Frame {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // One near-field step from a texel centre, shared by every texel of a row (as in the exact
 // path's finish_rows): integer offset, bilinear weights, 1/distance, curvature drop.
@@ -286,15 +285,15 @@ void SunShadowSweep::compute(double sun_azimuth_deg, double sun_elevation_deg, s
     f.cs = std::cos(phi);
     f.sn = std::sin(phi);
     // Straight up or down has no shadows to speak of; keep tan finite.
-    f.tan_e = std::tan(std::clamp(sun_elevation_deg, -89.9, 89.9) * kDeg);
+    f.tan_e = std::tan(radians(std::clamp(sun_elevation_deg, -89.9, 89.9)));
     f.curv = curvature_factor(options_.curvature);
-    f.elevation = sun_elevation_deg * kDeg;
+    f.elevation = radians(sun_elevation_deg);
     f.radius = options_.sun_radius_rad;
     {
         constexpr float kInf = std::numeric_limits<float>::infinity();
         const double lo = f.elevation - f.radius, hi = f.elevation + f.radius;
-        f.tan_lo = lo <= -std::numbers::pi / 2 ? -kInf : float(std::tan(lo));
-        f.tan_hi = hi >= std::numbers::pi / 2 ? kInf : float(std::tan(hi));
+        f.tan_lo = lo <= -kPi / 2 ? -kInf : float(std::tan(lo));
+        f.tan_hi = hi >= kPi / 2 ? kInf : float(std::tan(hi));
     }
     // Sample along the axis the line crosses fastest (as ExactAzimuthSweep::plan).
     f.along_columns = std::abs(f.cs) >= std::abs(f.sn) / metrics_.mean_rho();

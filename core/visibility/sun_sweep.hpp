@@ -1,5 +1,5 @@
 #pragma once
-// Fast per-frame sun visibility (issue 6): the sun's visible fraction per texel, as
+// Fast per-frame sun visibility: the sun's visible fraction per texel, as
 // sun_visibility() computes it, at a fraction of its cost, for relighting many frames of one grid.
 //
 // The exact path sweeps lines of constant azimuth keeping the upper convex hull of each line's
@@ -26,11 +26,9 @@
 // 0.003 per elevation (averaged over 10 azimuths; the worst single position 0.006, Grenoble at
 // 2 deg) on every shared DEM but the global 1-degree grid (there a handful of texels, < 0.2%,
 // are shadowed at 2-3 deg, so the IoU of those swings, mean |diff| 1e-4).
-// Cost (`terrashade bench sun`, 500 px crops, 2 threads, 70 positions): 11-14x less than the
-// exact path measured in the same run (4.5-5x before the changes below); on Grenoble 1.8 ms
-// per 500x500 frame against the exact path's 23.6 ms on an idle machine (1.3 ms for the sun
-// positions of `bench relight`). The near field takes a little over half.
-// What made it so: the hot loops are compiled for x86-64-v3 (AVX2, FMA) besides the baseline
+// Cost: an order of magnitude below the exact path per frame (`terrashade bench sun` measures
+// both in one run; docs/accuracy.md has the figures). The near field takes a little over half.
+// What makes it so: the hot loops are compiled for x86-64-v3 (AVX2, FMA) besides the baseline
 // and picked at load time (target_clones); each sweep step gathers the lines' heights first,
 // then advances every line's shadow height in one branch-free, vectorised pass; column sweeps
 // keep the far field transposed so the texels of a column are contiguous; the near field skips

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <thread>
 
 #include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/compute_horizons.hpp"
@@ -90,7 +90,7 @@ double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, d
     const double x = (sun_elevation_rad - horizon_rad) / sun_radius_rad;
     if (x >= 1.0) return 1.0;
     if (x <= -1.0) return 0.0;
-    const double below = (std::acos(x) - x * std::sqrt(1.0 - x * x)) / std::numbers::pi;
+    const double below = (std::acos(x) - x * std::sqrt(1.0 - x * x)) / kPi;
     return std::clamp(1.0 - below, 0.0, 1.0);
 }
 
@@ -113,13 +113,13 @@ std::vector<float> sun_visibility(const terrain::HeightGrid& grid, double sun_az
     h.exact_lines_per_texel = options.lines_per_texel;
     h.window = options.window;
     h.threads = options.threads;
-    const double e = sun_elevation_deg * (std::numbers::pi / 180.0);
+    const double e = radians(sun_elevation_deg);
     // Only horizons across the disc change the fraction; the band is widened by 1e-5 rad to
     // cover fast_atan's 1.7e-6 rad error, so the fraction is the same as from the full horizon.
     constexpr double kInf = std::numeric_limits<double>::infinity(), kSlack = 1e-5;
     const double lo = e - options.sun_radius_rad - kSlack, hi = e + options.sun_radius_rad + kSlack;
-    const double band_lo = lo <= -std::numbers::pi / 2 ? -kInf : std::tan(lo);
-    const double band_hi = hi >= std::numbers::pi / 2 ? kInf : std::tan(hi);
+    const double band_lo = lo <= -kPi / 2 ? -kInf : std::tan(lo);
+    const double band_hi = hi >= kPi / 2 ? kInf : std::tan(hi);
     std::vector<float> horizon =
         horizon_in_azimuth(grid, geo::azimuth_cw_from_north_to_phi(sun_azimuth_deg), h, band_lo, band_hi);
     for (float& v : horizon)  // NaN (void receiver) stays NaN

@@ -1,6 +1,7 @@
 #pragma once
-// The sun's visible fraction per texel (METHOD.md, "treat the sun apart"): the part of the sun's
-// disc above the exact horizon in the sun's azimuth, so sun shadows are crisp and right.
+// The sun's visible fraction per texel (../shared/design/METHOD.md, "treat the sun apart"): the
+// part of the sun's disc above the exact horizon in the sun's azimuth, so sun shadows are crisp
+// and right.
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@ namespace ts::visibility {
 double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, double sun_radius_rad);
 
 // How a renderer computes the sun's visible fraction each frame: `sweep` (SunShadowSweep,
-// sun_sweep.hpp: shadow heights along the sweep lines, built once per grid, ~5x faster) or
+// sun_sweep.hpp: shadow heights along the sweep lines, built once per grid, much faster) or
 // `exact` (sun_visibility below: the reference).
 enum class SunMethod { sweep, exact };
 // "sweep" | "exact"; anything else throws ts::InputError naming the choices.

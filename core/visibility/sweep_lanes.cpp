@@ -214,7 +214,7 @@ struct LaneGrid {
     double mean_rho;
 
     // z[i] and z[i + 1] in the lanes of m (NaN elsewhere), as 8-byte pairs: eight scalar loads,
-    // measured ~13% faster overall than a hardware gather on the Zen 4 this was tuned on.
+    // faster overall than a hardware gather on the Zen 4 this was tuned on.
     TS_LANE_INLINE void gather_pairs(Mask m, VI i, VF& first, VF& second) const {
         alignas(32) std::int32_t at[kLanes];
         _mm256_store_si256(reinterpret_cast<__m256i*>(at), _mm256_maskz_mov_epi32(m, i));  // off m: z[0]

@@ -1,18 +1,14 @@
 #include "core/visibility/visibility_backend.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/visibility_products.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::visibility {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 const std::string kCpu = "cpu";
 
@@ -22,10 +18,10 @@ public:
     VisibilityResult compute(const terrain::HeightGrid& grid, const VisibilityRequest& request) override {
         check_request(request);
         VisibilityResult result;
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch t0;
         result.horizons = compute_horizons(grid, request.horizon);
         result.stages.push_back({"horizons (" + std::string(method_name(request.horizon.method)) + ")", kCpu,
-                                 seconds_since(t0)});
+                                 t0.seconds()});
         complete_on_cpu(request, result);
         return result;
     }
@@ -55,7 +51,7 @@ void complete_on_cpu(const VisibilityRequest& request, VisibilityResult& result)
     pass.log_eps = request.log_eps;
     pass.threads = threads;
     std::string what;
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     if (pass.log_sh || pass.svf || pass.sky_visible) {
         VisibilityProducts p = visibility_products(set, pass);
         if (pass.log_sh) result.log_sh = std::move(p.log_sh), what += ", log-SH";
@@ -75,7 +71,7 @@ void complete_on_cpu(const VisibilityRequest& request, VisibilityResult& result)
         assign(result.sky_visible, sky_visible_raster(set, request.wedges, threads));
         what += ", sky_visible (constant wedges)";
     }
-    if (!what.empty()) result.stages.push_back({what.substr(2), kCpu, seconds_since(t0)});
+    if (!what.empty()) result.stages.push_back({what.substr(2), kCpu, t0.seconds()});
 }
 
 std::unique_ptr<VisibilityBackend> make_cpu_visibility_backend() { return std::make_unique<CpuVisibilityBackend>(); }

@@ -7,6 +7,7 @@
 
 #include "core/sh/sh_basis.hpp"
 #include "core/sh/sh_shared.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/small_angle_trig.hpp"
@@ -109,7 +110,7 @@ void store(const double* __restrict sum, const double* __restrict probe, double 
 // The D x 16 table of ts_slice_azimuth_weight (the azimuthal part of every coefficient).
 std::vector<double> azimuth_weights(int directions) {
     std::vector<double> w(std::size_t(directions) * kCoeffs);
-    const double delta = 2.0 * std::numbers::pi / directions;
+    const double delta = 2.0 * kPi / directions;
     for (int d = 0; d < directions; ++d)
         for (int i = 0; i < kCoeffs; ++i)
             w[std::size_t(d) * kCoeffs + i] =

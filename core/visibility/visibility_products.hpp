@@ -5,7 +5,7 @@
 //
 // Why one pass: reading the D planes once per block of texels and computing the sines and
 // cosines from short polynomials (small_angle_trig.hpp) in loops vectorised across texels is
-// ~5x faster than per-texel libm calls and strided plane reads (docs/performance.md).
+// several times faster than per-texel libm calls and strided plane reads (docs/performance.md).
 // Same formulas as the per-texel code (ts_slice_sh_integrals_sc of sh_shared.h, the wedge
 // means of sky_shared.h), all in double, rounded to float at the end; the agreement with
 // the per-texel libm code is tested (tests/visibility/visibility_products_test.cpp).
@@ -27,8 +27,8 @@ struct ProductRequest {
 
 // Layouts as log_sh_raster ([coefficient][texel]), svf_raster and sky_visible_raster; a
 // product not requested is left empty. NaN everywhere for void receivers (any NaN horizon).
-// The pass writes every texel, so the buffers are not zero-filled first (~40 ms for the 92 MB
-// log-SH of a whole SRTM tile, on one thread).
+// The pass writes every texel, so the buffers are not zero-filled first (a single-threaded
+// memset of the 92 MB log-SH of a whole SRTM tile, core/util/uninitialised_vector.hpp).
 struct VisibilityProducts {
     UninitialisedVector<float> log_sh, svf, sky_visible;
 };

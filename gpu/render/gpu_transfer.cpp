@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -12,6 +11,7 @@
 #include "core/sh/sh_exp_shared.hpp"
 #include "core/sh/sh_exp_squaring_shared.hpp"
 #include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/render/shade_recording.hpp"
 
@@ -60,10 +60,6 @@ void add_stage_times(std::vector<StageTime>& total, const Batch& batch) {
         if (it == total.end()) total.push_back({label, ms});
         else it->ms += ms;
     }
-}
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <typename T>
@@ -123,7 +119,7 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
     if (band_texels > 0) band = std::min(band, band_texels);
 
     const sh::ExpOptions exp_options;  // the CPU path's hybrid threshold and squaring cap
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch start;
     stages_.clear();
     Batch batch(context);
     static_assert(sizeof(sh::exp_shared::TsLinearRow) == 3 * sizeof(float));
@@ -162,7 +158,7 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
         add_stage_times(stages_, batch);
         bands_.push_back(std::move(b));
     }
-    wall_ms_ = ms_since(start);
+    wall_ms_ = start.milliseconds();
 }
 
 TransferField::TransferField(const Context& context, const float* transfer, std::size_t texels,
@@ -174,7 +170,7 @@ TransferField::TransferField(const Context& context, const float* transfer, std:
     if (!transfer) throw std::invalid_argument("gpu::render::TransferField: null transfer array");
     std::size_t band = max_band_texels(context);
     if (band_texels > 0) band = std::min(band, band_texels);
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch start;
     stages_.clear();
     Batch batch(context);
     for (std::size_t first = 0; first < texels_; first += band) {
@@ -189,13 +185,13 @@ TransferField::TransferField(const Context& context, const float* transfer, std:
         batch.submit_and_wait();
         add_stage_times(stages_, batch);
     }
-    wall_ms_ = ms_since(start);
+    wall_ms_ = start.milliseconds();
 }
 
 void TransferField::download(float* transfer_out) {
     stages_.clear();
     if (texels_ == 0) return;
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch start;
     Batch batch(context_);
     for (std::size_t k = 0; k < bands_.size(); ++k) {
         const Band& b = bands_[k];
@@ -210,7 +206,7 @@ void TransferField::download(float* transfer_out) {
     }
     batch.submit_and_wait();
     add_stage_times(stages_, batch);
-    wall_ms_ = ms_since(start);
+    wall_ms_ = start.milliseconds();
 }
 
 TransferField::~TransferField() = default;
@@ -219,7 +215,7 @@ TransferField::TransferField(TransferField&&) noexcept = default;
 void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) {
     stages_.clear();
     if (texels_ == 0) return;
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch start;
     if (!recording_) {
         std::vector<ShadeRecording::BandInput> inputs;
         for (const Band& b : bands_) inputs.push_back({b.first, b.texels, &b.transfer});
@@ -228,7 +224,7 @@ void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* 
     const auto light = light_vec4(light_sh);
     recording_->run(std::span<const float, kCoeffs * 4>(light), rgb_out);
     stages_ = recording_->stages();
-    wall_ms_ = ms_since(start);
+    wall_ms_ = start.milliseconds();
 }
 
 std::vector<StageTime> transfer_vectors(const Context& context, const ts::render::TransferInputs& inputs,

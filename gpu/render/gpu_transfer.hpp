@@ -36,7 +36,7 @@ struct StageTime {
 };
 
 // The stage's two pipelines, each built on first use and then shared by every TransferField
-// given this object (building one costs ~0.1-0.3 s on llvmpipe: a renderer makes three fields).
+// given this object (building one is slow on llvmpipe, and a renderer makes three fields).
 class TransferKernels {
 public:
     explicit TransferKernels(const Context& context) : context_(context) {}

@@ -1,13 +1,13 @@
 #include "gpu/visibility/gpu_pyramid.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
 
 #include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -212,7 +212,7 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
                         .specialization = {std::uint32_t(layout.parts), std::uint32_t(layout.rows_per_part),
                                            layout.packed ? 1u : 0u}});
 
-    const auto wall_start = std::chrono::steady_clock::now();
+    const Stopwatch wall;
     Batch batch(context);
     Result result;
     HorizonProducts products(context, batch, options, win.width, win.height, result);
@@ -245,7 +245,7 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
 
         products.finish_band(batch, horizons, band_row0, band_texels, result);
     }
-    result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
+    result.wall_ms = wall.milliseconds();
     return result;
 }
 

@@ -1,9 +1,9 @@
 #include "gpu/visibility/gpu_visibility_backend.hpp"
 
-#include <chrono>
 #include <utility>
 
 #include "gpu/visibility/gpu_visibility.hpp"
+#include "core/util/stopwatch.hpp"
 
 namespace ts::gpu::visibility {
 namespace {
@@ -30,7 +30,7 @@ public:
         go.log_sh = request.log_sh;
         go.sky = (request.svf || request.sky_visible) && request.wedges == vis::WedgeRule::linear;
         go.max_band_rows = options_.max_band_rows;
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch t0;
         Result r = gpu::visibility::compute(context_, grid, go);
         vis::VisibilityResult result;
         result.horizons = std::move(r.horizons);
@@ -41,7 +41,7 @@ public:
         if (go.log_sh) label += ", log-SH";
         if (go.sky) label += ", svf, sky_visible";
         result.stages.push_back(
-            {label, name(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
+            {label, name(), t0.seconds()});
         vis::complete_on_cpu(request, result);
         return result;
     }

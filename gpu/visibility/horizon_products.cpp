@@ -5,11 +5,11 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
-#include <numbers>
 #include <span>
 
 #include "core/sh/sh_shared.hpp"
 #include "core/sh/slice_projector.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/progress_bar.hpp"
 
 namespace ts::gpu::visibility {
@@ -34,7 +34,7 @@ std::vector<float> slice_weights(int directions) {
         for (int i = 0; i < 16; ++i) {
             const int l = int(std::sqrt(double(i)));
             w[std::size_t(d) * 16 + std::size_t(i)] = float(sh::shared::ts_slice_azimuth_weight(
-                i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * std::numbers::pi / directions));
+                i - l * l - l, sh::SliceProjector::azimuth(d, directions), 2.0 * kPi / directions));
         }
     return w;
 }

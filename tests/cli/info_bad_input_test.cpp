@@ -1,4 +1,4 @@
-// Each bad input through the real command: exit code 2, exactly one line on
+// Each bad input `info` must reject, through the real command: exit code 2, exactly one line on
 // stderr naming the file, no crash. Also the happy paths a user types first.
 #include <sys/resource.h>
 

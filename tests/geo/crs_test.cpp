@@ -1,7 +1,7 @@
 #include "core/geo/crs.hpp"
+#include "core/util/angles.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <thread>
 #include <vector>
 
@@ -11,6 +11,8 @@
 #include "core/util/error.hpp"
 
 using ts::geo::Crs;
+using ts::kPi;
+using ts::radians;
 
 namespace {
 // PROJ and GeographicLib both implement the Krueger series for transverse Mercator to well
@@ -67,10 +69,9 @@ TEST(Crs, UpsNorthIsNormalisedToEastingNorthing) {
 TEST(Crs, WebMercatorMatchesItsClosedForm) {
     auto crs = Crs::from_epsg(3857);
     const double r = 6378137.0, lon = 5.7, lat = 45.2;
-    const double deg = std::numbers::pi / 180;
     const glm::dvec2 xy = crs->from_lonlat({lon, lat});
-    EXPECT_NEAR(xy.x, r * lon * deg, kProjectionAgreementM);
-    EXPECT_NEAR(xy.y, r * std::log(std::tan(std::numbers::pi / 4 + lat * deg / 2)), kProjectionAgreementM);
+    EXPECT_NEAR(xy.x, r * radians(lon), kProjectionAgreementM);
+    EXPECT_NEAR(xy.y, r * std::log(std::tan(kPi / 4 + radians(lat) / 2)), kProjectionAgreementM);
 }
 
 TEST(Crs, ProjectedCrssRoundTrip) {

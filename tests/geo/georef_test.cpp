@@ -1,18 +1,18 @@
 #include "core/geo/georef.hpp"
+#include "core/util/angles.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
 using namespace ts::geo;
+using ts::radians;
 
 namespace {
 // WGS84 radii of curvature at the equator: east-west = a, north-south = a(1 - e^2).
 constexpr double kA = 6378137.0;
 constexpr double kF = 1 / 298.257223563;
 const double kE2 = kF * (2 - kF);
-constexpr double kDeg = std::numbers::pi / 180;
 // A geodesic across one 3" cell equals the arc of the local radius to ~1e-9 relative; 1 mm
 // is far above that and far below any convention error (half a cell, a wrong radius).
 constexpr double kCellSizeToleranceM = 1e-3;
@@ -50,7 +50,7 @@ TEST(Georef, CellSizeOnAGeographicGridIsTheTrueMetricSpacing) {
     const Georef g = srtm3_equator();
     // Row at the equator: east-west spacing = a * dlon; north-south = meridian radius * dlat.
     const glm::dvec2 at_equator = g.cell_size_m(600.5, 1200.5);
-    const double dlon = kDeg / 1200;
+    const double dlon = radians(1.0) / 1200;
     EXPECT_NEAR(at_equator.x, kA * dlon, kCellSizeToleranceM);
     EXPECT_NEAR(at_equator.y, kA * (1 - kE2) * dlon, kCellSizeToleranceM);
 
@@ -58,7 +58,7 @@ TEST(Georef, CellSizeOnAGeographicGridIsTheTrueMetricSpacing) {
     GeoTransform t = g.transform();
     t.y0 += 60;
     const Georef north(1201, 1201, t, Crs::wgs84(), false);
-    const double phi = 60 * kDeg;
+    const double phi = radians(60);
     const double parallel_radius = kA * std::cos(phi) / std::sqrt(1 - kE2 * std::sin(phi) * std::sin(phi));
     EXPECT_NEAR(north.cell_size_m(600.5, 1200.5).x, parallel_radius * dlon, kCellSizeToleranceM);
 }

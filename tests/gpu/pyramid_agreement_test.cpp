@@ -31,7 +31,7 @@ namespace {
 
 namespace vis = ts::visibility;
 
-// Tolerances (measured figures are printed by the tests; lavapipe, 2026-12-01).
+// Tolerances (the tests print the measured figures; those below are from lavapipe).
 // Levels: the CPU sums a block's (at most four) floats exactly in double and rounds the mean
 // once; the GPU keeps the exact sum as a float pair and rounds once from it. Measured: every
 // texel of every level equal; a mean of three (a block with one void) could in principle land
@@ -43,10 +43,10 @@ constexpr int kLevelUlps = 1;
 // the grid's edge or of a void's edge; there one texel-azimuth could differ by more ("flips").
 // Measured on 200 x 200 crops of the six shared DEMs at D = 32: rms <= 1.1e-6 rad, max 4.9e-6,
 // no flips; svf <= 6e-7, sky_visible <= 1.4e-6, log-SH <= 7.2e-6.
-constexpr double kHorizonRms = 1e-5;   // rad, over all texel-azimuths (the aim)
+constexpr double kHorizonRms = 1e-5;   // rad, over all texel-azimuths (the target)
 constexpr double kHorizonTol = 2e-5;   // rad, per texel-azimuth except flips
 constexpr double kFlipFraction = 1e-5;
-constexpr double kSvfTol = 1e-4;  // svf and sky_visible (the aim), texels without a flip
+constexpr double kSvfTol = 1e-4;  // svf and sky_visible (the target), texels without a flip
 constexpr double kShTol = 1e-4;   // log-SH coefficients, texels without a flip
 
 using terrain::GridCrop;

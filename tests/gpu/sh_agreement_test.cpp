@@ -1,17 +1,17 @@
-// Issue 3: GLSL and C++ evaluate the same core/sh/sh_shared.h. A compute shader evaluates every
-// function in float on the Vulkan device (lavapipe here); the C++ side evaluates the same text
-// in double from the same float inputs. The validation layer is on and must stay silent.
+// GLSL and C++ evaluate the same core/sh/sh_shared.h. A compute shader evaluates every
+// function in float on the Vulkan device (lavapipe on a machine without a GPU); the C++ side
+// evaluates the same text in double from the same float inputs. The validation layer is on and must stay silent.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/sh/sh_shared.hpp"
+#include "core/util/angles.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/spirv.hpp"
 #include "tests/gpu/validated_context.hpp"
@@ -24,7 +24,6 @@ namespace ts::gpu {
 namespace {
 
 namespace shared = ts::sh::shared;
-constexpr double kPi = std::numbers::pi;
 
 // Mirrors struct Case in sh_agreement.comp (std430, 48 bytes).
 struct Case {

@@ -13,7 +13,7 @@
 
 #include "core/dem/read_dem.hpp"
 #include "core/render/transfer.hpp"
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
@@ -118,7 +118,7 @@ cr::TransferInputs phong_inputs(const Scene& s) {
 // differ in the lobe's rotation (double on the CPU, float on the GPU: ~1e-7 of the log), in the
 // order llvmpipe fuses multiply-adds, and in exp/log (llvmpipe within a few ulp). The
 // squarings amplify that by up to 2^k: measured 2e-6 of a texel's norm at worst. Bound 1e-4
-// of the texel's norm (the aim).
+// of the texel's norm (the target).
 // The hybrid method chooses its number of squarings k by comparing the non-DC magnitude with
 // powers of two; a texel whose magnitude lies within rounding (1e-7 relative) of such a
 // boundary can be decided the other way, which changes T by the method's own error (~1e-2).

@@ -2,7 +2,6 @@
 // horizons, svf, sky_visible and log-SH on a 200 x 200 window of every shared DEM, receiver
 // windows and bands of rows, voids; every case with the validation layer on.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +16,7 @@
 #include "core/terrain/grid_crop.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sky_integrals.hpp"
@@ -51,7 +51,7 @@ GridCrop crop_of_file(const char* name, int size) {
 // the RMS over all of them stays below kHorizonTol (measured 2.6e-6 at most).
 constexpr double kHorizonTol = 1e-4;    // rad
 constexpr double kFlipFraction = 1e-4;  // measured 0 on five DEMs, 1e-5 on the 1-degree global grid
-// svf and sky_visible: the aim, 1e-4 absolute, on every texel (measured <= 5e-6, and
+// svf and sky_visible: the target, 1e-4 absolute, on every texel (measured <= 5e-6, and
 // 2.8e-5 with the global grid's flips). log-SH: coefficients up to ~8 summed from 32 slices in
 // float, 1e-4 absolute on texels without a flip (measured 2.8e-5).
 constexpr double kSvfTol = 1e-4;
@@ -72,13 +72,13 @@ struct CpuRun {
 };
 
 CpuRun run_cpu(const terrain::HeightGrid& grid, const vis::HorizonOptions& options) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     CpuRun r;
     r.horizons = vis::compute_horizons(grid, options);
     r.svf = vis::svf_raster(r.horizons);
     r.sky = vis::sky_visible_raster(r.horizons);
     r.log_sh = vis::log_sh_raster(r.horizons);
-    r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    r.ms = t0.milliseconds();
     return r;
 }
 
@@ -143,9 +143,9 @@ TEST_F(GpuVisibilityTest, ExactHorizonsSvfAndShMatchTheCpuOnEverySharedDem) {
         vis::HorizonOptions options;
         options.directions = 32;
         const CpuRun cpu = run_cpu(c.grid, options);
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch t0;
         const auto gpu = visibility::compute(*context_, c.grid, {.horizon = options});
-        const double gpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double gpu_ms = t0.milliseconds();
         const Comparison cmp = compare(cpu, gpu);
         std::printf("%-38s %3dx%-3d D=32 horizon max %.1e rms %.1e rad, flips %zu/%zu; svf %.1e sky %.1e "
                     "log-SH %.1e; cpu %.0f ms, gpu %.0f ms [ms: %s]\n",

@@ -1,6 +1,7 @@
 // HDR maps: the lazily loaded image module (read .hdr/.exr, write .exr atomically), and the
 // equirectangular orientation and bilinear lookup of HdrSky.
 #include "core/light/hdr_sky.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -8,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <numbers>
 #include <string>
 
 #include "core/geo/azimuth.hpp"
@@ -115,7 +115,7 @@ TEST(ImageModule, MissingOrBadFilesAreOneLineInputErrors) {
 }
 
 glm::dvec3 dir_from(double azimuth_deg, double elevation_deg) {
-    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), elevation_deg * std::numbers::pi / 180.0);
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), radians(elevation_deg));
 }
 
 raster::FloatImage indexed_map(int w, int h) {
@@ -186,7 +186,7 @@ TEST(HdrSky, ShippedSyntheticSunsetHasItsSunInTheWest) {
     const glm::dvec3 d = hdr->brightest_direction();
     // One pixel is 1.4 deg: the brightest pixel centre is within 1.5 deg of the blob's centre.
     const double az = geo::phi_to_azimuth_cw_from_north(std::atan2(d.y, d.x));
-    const double el = std::asin(d.z) * 180.0 / std::numbers::pi;
+    const double el = degrees(std::asin(d.z));
     EXPECT_NEAR(az, 265.0, 1.5);
     EXPECT_NEAR(el, 4.0, 1.5);
     // Rotating the map by 90 deg moves the sun to azimuth 355.

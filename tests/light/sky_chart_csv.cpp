@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <string>
 
 #include "core/geo/azimuth.hpp"
@@ -16,11 +15,12 @@
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_color.hpp"
 #include "core/light/sky_sh.hpp"
+#include "core/util/angles.hpp"
 
 using namespace ts::light;
+using ts::radians;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kSunAzimuth = 180.0;
 constexpr double kSunElevation = 30.0;
 
@@ -28,7 +28,7 @@ constexpr double kSunElevation = 30.0;
 glm::dvec3 vertical_dir(double signed_zenith_deg) {
     const double az = signed_zenith_deg >= 0 ? kSunAzimuth : kSunAzimuth + 180.0;
     return ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(az),
-                                  (90.0 - std::abs(signed_zenith_deg)) * kDeg);
+                                  radians(90.0 - std::abs(signed_zenith_deg)));
 }
 }  // namespace
 
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path dir = argv[1];
     const glm::dvec3 sun =
-        ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), kSunElevation * kDeg);
+        ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), radians(kSunElevation));
 
     std::ofstream profile(dir / "sky_profile.csv");
     profile << "sky,turbidity,signed_zenith_deg,luminance,r,g,b\n";
@@ -69,8 +69,8 @@ int main(int argc, char** argv) {
         for (double a = -179.5; a <= 179.5; a += 1.0) {
             const double z = a;  // signed angle from the zenith, beyond +-90 below the horizon
             const double phi = ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth);
-            const glm::dvec3 d(std::sin(z * kDeg) * std::cos(phi), std::sin(z * kDeg) * std::sin(phi),
-                               std::cos(z * kDeg));
+            const glm::dvec3 d(std::sin(radians(z)) * std::cos(phi), std::sin(radians(z)) * std::sin(phi),
+                               std::cos(radians(z)));
             shcsv << names[k] << ',' << z << ',' << luminance(skies[k]->radiance(d)) << ','
                   << luminance(reconstruct_sky_sh(sh, d)) << '\n';
         }

@@ -3,27 +3,26 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "core/geo/azimuth.hpp"
 #include "core/light/overcast_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_color.hpp"
 #include "core/light/sun_transmittance.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::light {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 glm::dvec3 dir_from(double azimuth_deg, double elevation_deg) {
-    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), elevation_deg * kDeg);
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), radians(elevation_deg));
 }
 
 TEST(PreethamZenith, LuminanceMatchesTheFormulaAndIsPhysical) {
     // Hand evaluation of the paper's formula at T = 2, theta_s = 0 (sun at the zenith):
     // chi = (4/9 - 2/120) pi = 1.34390; tan chi = 4.3313; Y_z = 3.1196 * 4.3313 - 0.431 + 2.4192.
-    const double chi = (4.0 / 9.0 - 2.0 / 120.0) * std::numbers::pi;
+    const double chi = (4.0 / 9.0 - 2.0 / 120.0) * kPi;
     const double expected = (4.0453 * 2.0 - 4.9710) * std::tan(chi) - 0.2155 * 2.0 + 2.4192;
     EXPECT_NEAR(preetham_zenith_luminance(2.0, 0.0), expected, 1e-12);
     EXPECT_NEAR(expected, 15.50, 0.01);  // arithmetic check of the line above
@@ -33,20 +32,20 @@ TEST(PreethamZenith, LuminanceMatchesTheFormulaAndIsPhysical) {
     // is the physically sensible 1..25 kcd/m^2, not the measured range.
     for (double t : {2.0, 3.0, 5.0}) {
         for (double elevation : {30.0, 45.0, 60.0}) {
-            const double yz = preetham_zenith_luminance(t, (90.0 - elevation) * kDeg);
+            const double yz = preetham_zenith_luminance(t, radians(90.0 - elevation));
             EXPECT_GT(yz, 1.0) << "T " << t << " elevation " << elevation;
             EXPECT_LT(yz, 25.0) << "T " << t << " elevation " << elevation;
         }
     }
     // The zenith brightens as the sun climbs.
-    EXPECT_LT(preetham_zenith_luminance(3.0, 80.0 * kDeg), preetham_zenith_luminance(3.0, 40.0 * kDeg));
+    EXPECT_LT(preetham_zenith_luminance(3.0, radians(80.0)), preetham_zenith_luminance(3.0, radians(40.0)));
 }
 
 TEST(PreethamZenith, ChromaticityIsAClearSkyBlue) {
     // Clear-sky zenith chromaticities lie near x, y = 0.25..0.32 (bluer than D65 at 0.3127, 0.3290).
     for (double t : {2.0, 3.0, 6.0}) {
         for (double elevation : {10.0, 30.0, 60.0}) {
-            const double theta = (90.0 - elevation) * kDeg;
+            const double theta = radians(90.0 - elevation);
             const double x = preetham_zenith_x(t, theta);
             const double y = preetham_zenith_y(t, theta);
             EXPECT_GT(x, 0.22);
@@ -62,7 +61,7 @@ TEST(PreethamSky, ZenithRadianceIsTheZenithLuminance) {
     const PreethamSky sky(3.0, 0.2, sun);
     const Rgb zenith = sky.radiance({0.0, 0.0, 1.0});
     // Y of the RGB is Y_z up to float rounding and the gamut clamp (none at the zenith).
-    EXPECT_NEAR(luminance(zenith), preetham_zenith_luminance(3.0, 50.0 * kDeg), 1e-4 * luminance(zenith));
+    EXPECT_NEAR(luminance(zenith), preetham_zenith_luminance(3.0, radians(50.0)), 1e-4 * luminance(zenith));
     EXPECT_GT(zenith.b, zenith.r);  // blue sky
 }
 
@@ -118,7 +117,7 @@ TEST(PreethamSky, GroundIsAlbedoTimesIrradianceOverPi) {
     const PreethamSky sky(3.0, 0.3, sun);
     const Rgb e = sky.sky_horizontal_irradiance() + sky.sun().irradiance * static_cast<float>(sun.z);
     const Rgb ground = sky.radiance({0.3, 0.1, -0.9});
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(ground[c], 0.3 * e[c] / std::numbers::pi, 1e-5 * ground[c]);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(ground[c], 0.3 * e[c] / kPi, 1e-5 * ground[c]);
     // Daylight sense: diffuse horizontal illuminance of a clear sky with the sun at 45 degrees
     // is 10..25 klx, the beam 60..110 klx on a normal surface.
     EXPECT_GT(luminance(sky.sky_horizontal_irradiance()), 8.0);
@@ -155,7 +154,7 @@ TEST(PreethamSky, SunAtAndBelowTheHorizonIsFiniteAndFades) {
 
 TEST(SunBeam, AirMassAndTransmittance) {
     EXPECT_NEAR(kasten_young_air_mass(0.0), 1.0, 1e-3);                         // Kasten-Young at the zenith: 0.99973
-    EXPECT_NEAR(kasten_young_air_mass(60.0), 1.0 / std::cos(60 * kDeg), 0.01);  // plane-parallel is good to 60 degrees
+    EXPECT_NEAR(kasten_young_air_mass(60.0), 1.0 / std::cos(radians(60)), 0.01);  // plane-parallel is good to 60 degrees
     EXPECT_NEAR(kasten_young_air_mass(90.0), 37.92, 0.01);                      // Kasten & Young's table at 90 degrees
     EXPECT_TRUE(std::isfinite(kasten_young_air_mass(120.0)));
     // Red passes more than blue, more so through more air and more haze.

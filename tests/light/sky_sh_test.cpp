@@ -1,12 +1,12 @@
 // project_sky_sh: exactness on constants and band-limited skies, agreement with a brute-force
 // fine grid on the real models.
 #include "core/light/sky_sh.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 
 #include "core/geo/azimuth.hpp"
 #include "core/light/overcast_sky.hpp"
@@ -70,8 +70,8 @@ TEST(SkySh, BandLimitedSkyIsReproduced) {
 SkySh brute_force_sh(const Sky& sky, int n_theta) {
     std::array<glm::dvec3, sh::kCount> acc{};
     const int n_phi = 2 * n_theta;
-    const double dt = std::numbers::pi / n_theta;
-    const double dp = 2.0 * std::numbers::pi / n_phi;
+    const double dt = kPi / n_theta;
+    const double dp = 2.0 * kPi / n_phi;
     for (int i = 0; i < n_theta; ++i) {
         const double t = (i + 0.5) * dt;
         const double w = std::sin(t) * dt * dp;
@@ -90,7 +90,7 @@ SkySh brute_force_sh(const Sky& sky, int n_theta) {
 
 TEST(SkySh, AgreesWithABruteForceGridOnRealSkies) {
     const glm::dvec3 sun =
-        geo::enu_direction(geo::azimuth_cw_from_north_to_phi(120.0), 25.0 * std::numbers::pi / 180.0);
+        geo::enu_direction(geo::azimuth_cw_from_north_to_phi(120.0), radians(25.0));
     const PreethamSky clear(3.0, 0.2, sun);
     const OvercastSky overcast(1.0, 0.2, sun);
     for (const Sky* sky : {static_cast<const Sky*>(&clear), static_cast<const Sky*>(&overcast)}) {
@@ -111,7 +111,7 @@ TEST(SkySh, AgreesWithABruteForceGridOnRealSkies) {
 // output is float).
 TEST(SkySh, RingSumsEqualTheDirectSumOverTheSameNodes) {
     const glm::dvec3 sun =
-        geo::enu_direction(geo::azimuth_cw_from_north_to_phi(200.0), 12.0 * std::numbers::pi / 180.0);
+        geo::enu_direction(geo::azimuth_cw_from_north_to_phi(200.0), radians(12.0));
     const PreethamSky clear(2.5, 0.3, sun);
     const auto lumpy = function_sky([](const glm::dvec3& d) {
         const double v = 1.0 + 0.5 * d.x - 0.3 * d.y * d.y * d.x + 0.2 * std::sin(5.0 * d.y) + (d.z < 0 ? 0.4 : 0.0);
@@ -139,13 +139,13 @@ TEST(SkySh, OvercastHasTheClosedFormCoefficients) {
     const double lz = sky.zenith_luminance();
     const double ground = 0.2 * 7.0 / 9.0 * lz;
     const double y00 = 1.0 / sh::kSqrt4Pi;
-    const double dc = y00 * (lz * 4.0 * std::numbers::pi / 3.0 + ground * 2.0 * std::numbers::pi);
+    const double dc = y00 * (lz * 4.0 * kPi / 3.0 + ground * 2.0 * kPi);
     const SkySh s = project_sky_sh(sky);
     EXPECT_NEAR(s[0].g, dc, 1e-5 * dc);
     // The z-band coefficient: Y10 = sqrt(3/4pi) z; integral of z (1+2z)/3 over z>0 is
     // 2 pi (1/2 + 2/3)/3 and of z over z<0 is -pi.
-    const double y10 = std::sqrt(3.0 / (4.0 * std::numbers::pi));
-    const double c10 = y10 * (lz * 2.0 * std::numbers::pi * (0.5 + 2.0 / 3.0) / 3.0 - ground * std::numbers::pi);
+    const double y10 = std::sqrt(3.0 / (4.0 * kPi));
+    const double c10 = y10 * (lz * 2.0 * kPi * (0.5 + 2.0 / 3.0) / 3.0 - ground * kPi);
     EXPECT_NEAR(s[sh::index(1, 0)].g, c10, 1e-5 * dc);
 }
 

@@ -1,6 +1,7 @@
 // The SPA against the example published in Reda & Andreas (NREL/TP-560-34302, table A5.1 and
 // the spa_tester output), then physical sanity cases that do not depend on the paper.
 #include "core/light/sun_position.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -65,11 +66,11 @@ TEST(SunPosition, DirectionMatchesAzimuthAndElevation) {
     const SunPosition s = sun_position(published_example());
     const glm::dvec3 d = sun_direction_enu(s);
     EXPECT_NEAR(d.x * d.x + d.y * d.y + d.z * d.z, 1.0, 1e-12);
-    EXPECT_NEAR(std::asin(d.z) * 180.0 / M_PI, s.elevation_deg, 1e-9);
+    EXPECT_NEAR(degrees(std::asin(d.z)), s.elevation_deg, 1e-9);
     // Azimuth 194 deg: a little west of south, so east < 0 and north < 0.
     EXPECT_LT(d.x, 0.0);
     EXPECT_LT(d.y, 0.0);
-    EXPECT_NEAR(std::atan2(d.x, d.y) * 180.0 / M_PI + 360.0, s.azimuth_deg, 1e-9);
+    EXPECT_NEAR(degrees(std::atan2(d.x, d.y)) + 360.0, s.azimuth_deg, 1e-9);
 }
 
 // At the March equinox 2024 (2024-03-20 03:06 UTC, IMCCE/USNO) the declination is 0, so along

@@ -1,4 +1,5 @@
 #include "core/material/brdf.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,6 @@
 namespace ts::material {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const glm::dvec3 kN(0, 0, 1);
 
 using Brdf = std::function<double(const glm::dvec3&, const glm::dvec3&)>;
@@ -63,7 +63,7 @@ glm::dvec3 random_upper(sh::SplitMix64& rng) {
 }
 
 glm::dvec3 incident(double theta_deg) {
-    const double t = theta_deg * kPi / 180.0;
+    const double t = radians(theta_deg);
     return {std::sin(t), 0.0, std::cos(t)};
 }
 

@@ -1,4 +1,5 @@
 #include "core/material/fresnel.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +8,6 @@
 namespace ts::material {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(Fresnel, DielectricNormalIncidenceAndLimits) {
     EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, 1.5), 0.04, 1e-12);  // ((1.5-1)/(1.5+1))^2

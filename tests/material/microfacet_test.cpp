@@ -1,4 +1,5 @@
 #include "core/material/microfacet.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +10,6 @@
 namespace ts::material {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // int D(h) cos(theta_h) dw_h over the hemisphere, by Gauss-Legendre in cos theta_h (D is
 // azimuth-independent). 400 nodes resolve m >= 0.05 lobes to ~1e-8.

@@ -1,5 +1,4 @@
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -7,6 +6,7 @@
 
 #include "core/render/frame_renderer.hpp"
 #include "core/render/render_backend.hpp"
+#include "core/util/angles.hpp"
 #include "core/visibility/visibility_backend.hpp"
 
 namespace ts::render {
@@ -124,7 +124,7 @@ TEST(FrameRenderer, SunOnAFlatPlaneIsLambertExactly) {
     std::vector<glm::vec3> out;
     r->render(sky, sun, out);
     // No sky light; sun fully visible: L = albedo/pi * E * sin(elevation). Only float rounding.
-    const float expected = float(0.25 / std::numbers::pi * 100.0 * 0.5);
+    const float expected = float(0.25 / kPi * 100.0 * 0.5);
     for (std::size_t i = 0; i < out.size(); ++i) {
         EXPECT_NEAR(r->sun_visibility()[i], 1.0f, 1e-6f) << i;
         EXPECT_NEAR(out[i].x, expected, expected * 1e-4f) << i;

@@ -1,12 +1,12 @@
 // The ray-traced reference against closed forms: what it integrates must be right before the
 // renderer is judged by it (bench render, docs/accuracy.md).
 #include "core/render/reference_shading.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <vector>
 
 #include "core/geo/azimuth.hpp"
@@ -17,8 +17,6 @@
 
 using namespace ts;
 using namespace ts::render;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 
 namespace {
 
@@ -109,7 +107,7 @@ TEST(ReferenceShading, TiltedPlaneSeesExactlyItsHemisphere) {
     // the raymarched horizon is the plane itself in every azimuth, so E = pi exactly; the
     // quadrature's kink at the plane's own horizon is an end point. The horizon is stored as
     // float (1e-7 rad) where the integrand vanishes: 1e-6 relative.
-    const double g = std::tan(25 * kDeg);
+    const double g = std::tan(radians(25));
     Scene s(61, 61, 30, [&](double x, double) { return 1000.0 - g * x; });
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {s.at(30, 30), s.at(20, 41)}, no_curvature());
     const FunctionSky sky([](const glm::dvec3&) { return 1.0; }, {0, 0, 1}, 0.0);
@@ -124,7 +122,7 @@ TEST(ReferenceShading, PhongLobeCutByTheTiltedPlaneMatchesBruteForce) {
     // zenith, so the broad Phong lobe (alpha 2) is cut by the plane (n.w > 0). With radiance 1 from
     // everywhere the sky term is ks * integral over the plane's hemisphere of the lobe; brute
     // force here on a 4000 x 2000 (phi, z) midpoint grid, good to ~1e-5; 1e-4 relative.
-    const double g = std::tan(40 * kDeg);
+    const double g = std::tan(radians(40));
     Scene s(61, 61, 30, [&](double, double y) { return 1000.0 - g * y; });  // faces south
     const std::size_t t = s.at(30, 30);
     s.mat.ks[t] = 1.0f, s.mat.alpha[t] = 2.0f;
@@ -132,7 +130,7 @@ TEST(ReferenceShading, PhongLobeCutByTheTiltedPlaneMatchesBruteForce) {
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {t}, no_curvature());
     const FunctionSky sky([](const glm::dvec3&) { return 1.0; }, {0, 0, 1}, 0.0);
     const glm::dvec3 n(s.normals.x[t], s.normals.y[t], s.normals.z[t]);
-    EXPECT_NEAR(n.z, std::cos(40 * kDeg), 1e-6);
+    EXPECT_NEAR(n.z, std::cos(radians(40)), 1e-6);
     const glm::dvec3 r = 2.0 * n.z * n - glm::dvec3(0, 0, 1);
     double expected = 0;
     const int np = 4000, nz = 2000;
@@ -181,10 +179,10 @@ TEST(ReferenceShading, WallShadowAndSunTerm) {
     const auto out = ref.render(sky, sun);
     for (std::size_t i = 0; i < texels.size(); ++i) {
         const double x = (double(i) + 1) * 10.0;                     // distance east of the wall
-        if (std::abs(x - H / std::tan(30 * kDeg)) < 10.0) continue;  // the shadow's edge texel
-        const double f = x < H / std::tan(30 * kDeg) ? 0.0 : 1.0;
+        if (std::abs(x - H / std::tan(radians(30))) < 10.0) continue;  // the shadow's edge texel
+        const double f = x < H / std::tan(radians(30)) ? 0.0 : 1.0;
         EXPECT_EQ(out[i].sun_fraction, float(f)) << "x=" << x;
-        const double expected = 0.2 * (out[i].sky_irradiance.x + f * 100.0 * std::sin(30 * kDeg)) / kPi;
+        const double expected = 0.2 * (out[i].sky_irradiance.x + f * 100.0 * std::sin(radians(30))) / kPi;
         EXPECT_NEAR(out[i].radiance.x, expected, 1e-5 * expected) << "x=" << x;
     }
     // The wall hides part of the sky from its foot: less than the open ground's 0.5 pi.
@@ -202,7 +200,7 @@ TEST(ReferenceShading, WaterIsAFresnelMirrorOverADarkBody) {
     const SunState sun = sun_at(120, 40);
     const FunctionSky sky([](const glm::dvec3&) { return 1.0; }, sun_direction(sun), 50.0);
     const double f = std::pow((kWaterIor - 1) / (kWaterIor + 1), 2);
-    const double expected = f * 1.0 + (1 - f) * 0.02 * (kPi + 50.0 * std::sin(40 * kDeg)) / kPi;
+    const double expected = f * 1.0 + (1 - f) * 0.02 * (kPi + 50.0 * std::sin(radians(40))) / kPi;
     EXPECT_NEAR(ref.render(sky, sun)[0].radiance.x, expected, 1e-6);
     EXPECT_NEAR(f, material::fresnel_dielectric(1.0, 1.0, kWaterIor), 1e-12);
 }
@@ -226,7 +224,7 @@ TEST(ReferenceShading, SunVisibilityOfEveryTexelMatchesRaymarchedHorizons) {
         const std::vector<float> vis = reference_sun_visibility(s.grid, az, e, 0.004654, true, 2);
         int partial = 0;
         for (std::size_t i = 0; i < vis.size(); ++i) {
-            const double f = visibility::sun_disc_visible_fraction(set.plane(1)[i], e * kDeg, 0.004654);
+            const double f = visibility::sun_disc_visible_fraction(set.plane(1)[i], radians(e), 0.004654);
             ASSERT_NEAR(vis[i], f, 1e-5) << "e=" << e << " i=" << i;
             partial += f < 1;
         }

@@ -2,6 +2,7 @@
 // (core/sh/sh_exp_shared.h, core/sh/sh_product_shared.h), against core/sh's own tensor, its
 // exp_hybrid, and the slow triple-product reference.
 #include "core/render/transfer.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/sh/log_brdf.hpp"
+#include "core/material/log_brdf.hpp"
 #include "core/sh/log_scenes.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/sh/sh_exp_shared.hpp"
@@ -27,7 +28,7 @@ constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
 // A random unit vector, upper hemisphere when `up` (a terrain normal).
 glm::dvec3 random_direction(sh::SplitMix64& rng, bool up) {
     const double z = up ? rng.uniform(0.05, 1.0) : rng.uniform(-1.0, 1.0);
-    const double phi = rng.uniform(0.0, 2.0 * sh::kPi);
+    const double phi = rng.uniform(0.0, 2.0 * kPi);
     const double s = std::sqrt(1.0 - z * z);
     return {s * std::cos(phi), s * std::sin(phi), z};
 }
@@ -171,7 +172,7 @@ TEST(ShExpShared, NonFiniteInputGivesZerosAndHugeInputStaysFinite) {
 TEST(Transfer, FullyVisibleDiffuseTexelUnderAConstantSkyGivesTheSky) {
     // V_log = 0, the diffuse lobe cos/pi: <T, L> for a constant sky radiance c is c times the
     // lobe's integral, 1 for the true lobe. The exponentiated log lobe (default epsilon) keeps
-    // that to ~1% (core/sh's LogBrdf test: ~1.01), whatever the normal (a rotation keeps the DC).
+    // that to ~1% (tests/material/log_brdf_test.cpp: ~1.01), whatever the normal (a rotation keeps the DC).
     // Bound 3%, and all normals must agree with each other to 1e-5 (float rounding only).
     const std::size_t n = 257;
     const sh::LogBrdfTable table;

@@ -1,4 +1,5 @@
 #include "core/sh/slice_projector.hpp"
+#include "core/util/angles.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,18 +10,16 @@
 
 #include "core/sh/gauss_legendre.hpp"
 #include "core/sh/sh_shared.hpp"
-#include "core/sh/sphere_blocker.hpp"
 #include "sh_test_util.hpp"
 
 namespace ts::sh {
 namespace {
 
-constexpr double kDeg = kPi / 180.0;
 constexpr double kLogEps = -6.907755278982137;
 
 TEST(SliceCoefficients, MatchLegendreQuadrature) {
     for (double deg = -90.0; deg <= 90.0; deg += 7.5) {
-        const double sigma = deg * kDeg;
+        const double sigma = radians(deg);
         double c[4];
         shared::ts_slice_log_coeffs(sigma, kLogEps, c);
         // The integrand is a cubic on [-1, sin sigma]: 4 Gauss nodes are exact.
@@ -35,7 +34,7 @@ TEST(SliceCoefficients, MatchLegendreQuadrature) {
 
 TEST(SliceCoefficients, ShIntegralsMatchQuadratureInTheta) {
     for (double deg = -90.0; deg <= 90.0; deg += 7.5) {
-        const double sigma = deg * kDeg;
+        const double sigma = radians(deg);
         double e[10];
         shared::ts_slice_sh_integrals(sigma, kLogEps, e);
         // Blocked part theta in [pi/2 - sigma, pi]; smooth integrand in theta, 40 nodes.
@@ -91,7 +90,7 @@ ShVec model_quadrature(int slices, Profile&& profile, Breaks&& breaks_of_wedge) 
 
 std::vector<float> random_horizons(int slices, SplitMix64& rng) {
     std::vector<float> s(slices);
-    for (float& x : s) x = static_cast<float>(rng.uniform(-30.0, 60.0) * kDeg);
+    for (float& x : s) x = static_cast<float>(radians(rng.uniform(-30.0, 60.0)));
     return s;
 }
 
@@ -175,7 +174,10 @@ TEST(SliceProjector, FlatHorizonIsTheLowerHemisphere) {
     const int slices = 8;
     const std::vector<float> sigma(slices, 0.0f);
     const auto got = SliceProjector(slices).project_horizons(sigma.data(), static_cast<float>(kLogEps));
-    const ShVec expected = zh_rotate(sphere_log_zh(kPi / 2, kLogEps), {0, 0, -1});
+    // The cap of half-angle pi/2 around the nadir (the sphere-cap formula of sh_shared.h).
+    double cap[kBands];
+    shared::ts_sphere_log_zh(kPi / 2, kLogEps, cap);
+    const ShVec expected = zh_rotate({cap[0], cap[1], cap[2], cap[3]}, {0, 0, -1});
     for (int i = 0; i < kCount; ++i) EXPECT_NEAR(got[i], expected[i], 1e-5);
 }
 

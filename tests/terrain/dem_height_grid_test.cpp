@@ -1,8 +1,8 @@
 // metric_view: per-row spacing from the georeferencing, so geographic grids get true metres.
 #include "core/terrain/dem_height_grid.hpp"
+#include "core/util/angles.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -32,13 +32,13 @@ TEST(MetricView, GeographicEastWestSpacingShrinksWithLatitude) {
     // relative (the geodesic between two points of a parallel is shorter by far less than that).
     const double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
     for (int r : {0, 599, 1199}) {
-        const double lat = (60.0 - (r + 0.5) * step) * std::numbers::pi / 180.0;
+        const double lat = radians(60.0 - (r + 0.5) * step);
         const double n = a / std::sqrt(1 - e2 * std::sin(lat) * std::sin(lat));
-        const double want_dx = n * std::cos(lat) * step * std::numbers::pi / 180.0;
+        const double want_dx = n * std::cos(lat) * radians(step);
         EXPECT_NEAR(g.dx_m[std::size_t(r)], want_dx, want_dx * 1e-6) << r;
         // Meridian arc: M(lat) dlat, M = a (1 - e2) / (1 - e2 sin^2)^1.5.
         const double m = a * (1 - e2) / std::pow(1 - e2 * std::sin(lat) * std::sin(lat), 1.5);
-        EXPECT_NEAR(g.dy_m[std::size_t(r)], m * step * std::numbers::pi / 180.0, 1e-4) << r;
+        EXPECT_NEAR(g.dy_m[std::size_t(r)], m * radians(step), 1e-4) << r;
     }
     EXPECT_GT(g.dx_m[1199], g.dx_m[0]);  // further south = wider
     EXPECT_EQ(g.z.data(), d.z.data());     // a view, not a copy

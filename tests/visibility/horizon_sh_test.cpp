@@ -1,9 +1,9 @@
+#include "core/util/angles.hpp"
 #include "core/visibility/horizon_sh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "core/sh/sh_exp.hpp"
@@ -13,6 +13,7 @@
 #include "synthetic_terrain.hpp"
 
 using namespace ts::visibility;
+using ts::kPi;
 
 TEST(HorizonSh, MatchesSliceProjectorPerTexel) {
     // Every texel's 16 coefficients are the projector's for its own D horizons. The projector
@@ -52,7 +53,7 @@ TEST(HorizonSh, ExponentiatedVisibilityFollowsTheHorizon) {
         float direct[16];
         ts::sh::sh_exp(ts::sh::ExpMethod::hybrid, log_sh.data(), direct);
         for (int i = 0; i < 16; ++i) EXPECT_EQ(vis[std::size_t(i)], direct[i]);
-        const double fraction = vis[0] * std::sqrt(4 * std::numbers::pi) / (4 * std::numbers::pi);
+        const double fraction = vis[0] * std::sqrt(4 * kPi) / (4 * kPi);
         EXPECT_NEAR(fraction, 0.5 * (1 - std::sin(std::max(sigma, -0.2))), 0.03) << sigma;
         EXPECT_LT(fraction, previous) << sigma;
         previous = fraction;

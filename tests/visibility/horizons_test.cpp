@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
+#include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -13,7 +13,8 @@
 
 using namespace ts::visibility;
 using ts::visibility::testing::make_terrain;
-constexpr double kPi = std::numbers::pi;
+using ts::degrees;
+using ts::kPi;
 constexpr HorizonMethod kMethods[] = {HorizonMethod::exact, HorizonMethod::pyramid, HorizonMethod::raymarch};
 
 HorizonOptions opts(HorizonMethod m, int d, bool curvature = false) {
@@ -26,7 +27,7 @@ HorizonOptions opts(HorizonMethod m, int d, bool curvature = false) {
 }
 
 double rad2deg(double r) {
-    return r * 180.0 / kPi;
+    return degrees(r);
 }
 
 // Comparisons skip the outermost texel ring: a receiver on the grid's edge facing out has no

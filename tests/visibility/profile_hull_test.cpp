@@ -1,5 +1,6 @@
 // The exact sweep's building blocks against brute force: DelayedHull (the far-field tangent of
 // a profile), its two interfaces against each other, and RowMetrics' hinted row search.
+#include "core/util/angles.hpp"
 #include "core/visibility/profile_hull.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "core/visibility/row_metrics.hpp"
 
 using namespace ts::visibility;
+using ts::radians;
 
 namespace {
 
@@ -75,7 +77,7 @@ TEST(RowMetricsTest, HintedRowOfGMatchesUnhinted) {
     grid.z = z;
     for (int r = 0; r < grid.height; ++r) {
         grid.dy_m.push_back(92.6);
-        grid.dx_m.push_back(92.6 * std::cos((60.0 - 0.3 * r) * 3.14159265358979 / 180.0));
+        grid.dx_m.push_back(92.6 * std::cos(radians(60.0 - 0.3 * r)));
     }
     const RowMetrics m(grid);
     std::mt19937 rng(3);

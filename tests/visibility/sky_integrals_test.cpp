@@ -1,13 +1,13 @@
+#include "core/util/angles.hpp"
 #include "core/visibility/sky_integrals.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 using namespace ts::visibility;
-constexpr double kPi = std::numbers::pi;
+using ts::kPi;
 
 TEST(SkyIntegrals, FlatHorizonIsWholeSky) {
     const std::vector<float> h(32, 0.0f);

@@ -1,6 +1,7 @@
 // The sun sweep (core/visibility/sun_sweep.hpp) against the exact path (sun_visibility) on
 // real DEM crops and synthetic terrains, an analytic shadow (a plateau's edge), voids, grid
 // edges, reuse across frames and bad input.
+#include "core/util/angles.hpp"
 #include "core/visibility/sun_sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -22,11 +22,11 @@
 
 using namespace ts::visibility;
 using ts::visibility::testing::make_terrain;
+using ts::radians;
 namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Agreement {
     double iou = 1, mae = 0;
@@ -121,7 +121,7 @@ TEST(SunSweep, AgreesWithExactOnAGlobalGrid) {
 // Synthetic hills on a geographic-like grid (dx shrinking with latitude, as at 60 N).
 TEST(SunSweep, AgreesWithExactWhereRowSpacingVaries) {
     auto t = make_terrain(180, 150, 30.0, 30.0, ts::visibility::testing::hills);
-    for (int r = 0; r < t.grid.height; ++r) t.grid.dx_m[std::size_t(r)] = 30.0 * std::cos((58.0 + 0.02 * r) * kDeg);
+    for (int r = 0; r < t.grid.height; ++r) t.grid.dx_m[std::size_t(r)] = 30.0 * std::cos(radians(58.0 + 0.02 * r));
     expect_agreement(t.grid, "hills at 60N", 0.99, 0.005, /*curvature=*/false);
 }
 
@@ -142,7 +142,7 @@ TEST(SunSweep, PlateauEdgeCastsTheAnalyticShadow) {
         for (int r = 0; r < h; ++r)
             for (int c = 0; c + 1 < x0; ++c) {
                 const double horizon = std::atan(height / ((x0 - c) * dx));
-                const double want = sun_disc_visible_fraction(horizon, el * kDeg, so.sun_radius_rad);
+                const double want = sun_disc_visible_fraction(horizon, radians(el), so.sun_radius_rad);
                 ASSERT_NEAR(v[std::size_t(r) * w + c], want, 1e-3) << "el " << el << " col " << c << " row " << r;
             }
     }
@@ -161,7 +161,7 @@ TEST(SunSweep, ConeCastsItsShadow) {
     so.curvature = false;
     so.sun_radius_rad = 0;  // a point sun: the mask is the shadow itself
     SunShadowSweep sweep(t.grid, so);
-    const double az = 225 * kDeg, el = 10 * kDeg;
+    const double az = radians(225), el = radians(10);
     const double ux = std::sin(az), uy = std::cos(az);  // east, north towards the sun
     const std::vector<float> v = sweep.compute(225.0, 10.0);
     SunVisibilityOptions eo;

@@ -1,3 +1,4 @@
+#include "core/util/angles.hpp"
 #include "core/visibility/sun_visibility.hpp"
 
 #include <gtest/gtest.h>
@@ -5,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <vector>
 
 #include "core/geo/azimuth.hpp"
@@ -15,8 +15,8 @@
 
 using namespace ts::visibility;
 using ts::visibility::testing::make_terrain;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using ts::kPi;
+using ts::radians;
 
 namespace {
 
@@ -86,7 +86,7 @@ TEST(SunVisibility, WallCastsShadowOfLengthHOverTanE) {
         // exactly on the edge sees half the disc, and rounding decides its side).
         for (double e : {20.0, 35.0, 55.0}) {
             const std::vector<float> vis = sun_visibility(t.grid, az, e, sun_opts());
-            const double across = H / std::tan(e * kDeg) * std::abs(std::cos((az - 270.0) * kDeg));
+            const double across = H / std::tan(radians(e)) * std::abs(std::cos(radians(az - 270.0)));
             for (int r = 20; r < 40; ++r) {  // rows whose rays reach the wall inside the grid
                 int last_shadow = -1;
                 for (int c = wall_col + 1; c < 160; ++c)
@@ -116,7 +116,7 @@ TEST(SunVisibility, EastWestWallShadowsNorthwardForSouthernSun) {
         for (int r = wall_row - 1; r >= 0; --r)
             if (vis[std::size_t(r) * 30 + c] < 0.5f) last_shadow = r;
         ASSERT_GE(last_shadow, 0);
-        EXPECT_NEAR((wall_row - last_shadow) * dx, H / std::tan(30.0 * kDeg), dx) << "col " << c;
+        EXPECT_NEAR((wall_row - last_shadow) * dx, H / std::tan(radians(30.0)), dx) << "col " << c;
     }
 }
 
@@ -171,7 +171,7 @@ TEST(SunVisibility, BandShortcutKeepsTheFractionOfTheFullHorizon) {
             const std::vector<float> vis = sun_visibility(t.grid, az, e, sun_opts(true));
             int rim = 0;
             for (std::size_t i = 0; i < vis.size(); ++i) {
-                const double f = sun_disc_visible_fraction(h[i], e * kDeg, 0.004654);
+                const double f = sun_disc_visible_fraction(h[i], radians(e), 0.004654);
                 ASSERT_NEAR(vis[i], f, 1e-6) << "az " << az << " e " << e << " i " << i;
                 rim += f > 0 && f < 1;
             }
@@ -200,7 +200,7 @@ TEST(SunVisibility, AgreesWithRaymarchedHorizonOnHills) {
         const std::vector<float> vis = sun_visibility(t.grid, az, e, sun_opts(true));
         int differ = 0, shadowed = 0;
         for (std::size_t i = 0; i < vis.size(); ++i) {
-            const double f_ref = sun_disc_visible_fraction(ref.plane(d)[i], e * kDeg, 0.004654);
+            const double f_ref = sun_disc_visible_fraction(ref.plane(d)[i], radians(e), 0.004654);
             differ += (vis[i] < 0.5f) != (f_ref < 0.5);
             shadowed += f_ref < 0.5;
         }

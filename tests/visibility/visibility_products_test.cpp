@@ -1,10 +1,10 @@
+#include "core/util/angles.hpp"
 #include "core/visibility/visibility_products.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -14,10 +14,10 @@
 #include "core/visibility/sky_integrals.hpp"
 
 using namespace ts::visibility;
+using ts::kPi;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Horizons that exercise every branch of the per-texel formulas: random angles over the whole
 // [-pi/2, pi/2], horizons below 0 all round, wedges crossing 0, ends exactly at 0, equal and

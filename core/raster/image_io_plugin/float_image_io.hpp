@@ -1,7 +1,8 @@
 #pragma once
 // Float (HDR) image input/output through OpenImageIO, loaded lazily: OIIO lives in the module
 // libterrashade_image_io.so, dlopen'ed on the first call, because linking it into terrashade
-// costs every command ~0.3 s of start-up for its ~260 shared libraries (see png_writer.hpp).
+// would make every command load its hundreds of shared libraries at start-up (see
+// png_writer.hpp).
 // The module is looked for next to the running executable (/proc/self/exe), then in
 // ../lib/terrashade/ beside it, then at its build-tree path compiled in.
 #include <filesystem>

@@ -1,0 +1,20 @@
+#pragma once
+// The subcommands of `terrashade bench` (app/command.hpp declares `bench` itself). Each lives in
+// its own file of app/bench/ and is added to `bench` by add_bench_command (bench_command.cpp).
+#include <CLI/CLI.hpp>
+
+namespace ts::app {
+
+// `terrashade bench visibility` (bench_visibility_command.cpp): horizon methods against the
+// raymarch reference, and SAGA.
+void add_bench_visibility_command(CLI::App& bench);
+// `terrashade bench relight` (bench_relight_command.cpp): relighting throughput.
+void add_bench_relight_command(CLI::App& bench);
+// `terrashade bench render` (bench_render_command.cpp): the renderer against the ray-traced reference.
+void add_bench_render_command(CLI::App& bench);
+// `terrashade bench transfer` (bench_transfer_command.cpp): exp + relight, CPU vs GPU.
+void add_bench_transfer_command(CLI::App& bench);
+// `terrashade bench sun` (bench_sun_command.cpp): sun visibility, sweep vs exact.
+void add_bench_sun_command(CLI::App& bench);
+
+}  // namespace ts::app

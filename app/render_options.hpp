@@ -1,6 +1,6 @@
 #pragma once
 // The options `render`, `relight` and `bench relight` share (app/render_command.cpp,
-// app/relight_command.cpp, app/bench_relight_command.cpp): the DEM, sky, view, materials,
+// app/relight_command.cpp, app/bench/bench_relight_command.cpp): the DEM, sky, view, materials,
 // exposure and quality knobs, and their conversion to a render::SceneOptions.
 #include <cstdint>
 #include <optional>

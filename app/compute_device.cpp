@@ -47,13 +47,19 @@ struct ComputeDevice::Vulkan {
     std::unique_ptr<visibility::VisibilityBackend> visibility;
     std::unique_ptr<render::RenderBackend> render;
 };
+#else
+struct ComputeDevice::Vulkan {};
+#endif
 
+// The request is read the same way in every build; only what auto finds, and whether Vulkan can
+// be asked for at all, depends on the build.
 DeviceChoice choose_device(const DeviceArgs& args) {
-    const std::string& d = args.cpu ? std::string("cpu") : args.device;
+    const std::string d = args.cpu ? std::string("cpu") : args.device;
     if (d == "cpu") return {false, std::nullopt, false, "--device cpu"};
     const std::optional<std::uint32_t> index = parse_index(d);
     if (d != "auto" && d != "vulkan" && !index)
         throw InputError("--device " + d + ": give auto, cpu, vulkan or a device index (see terrashade devices)");
+#ifdef TERRASHADE_HAS_GPU
     if (index) return {true, index, false, "--device " + d};
     if (d == "vulkan") return {true, std::nullopt, false, "--device vulkan: the best Vulkan device"};
     try {
@@ -64,19 +70,12 @@ DeviceChoice choose_device(const DeviceArgs& args) {
     } catch (const std::exception& e) {
         return {false, std::nullopt, true, std::string("auto: no Vulkan (") + e.what() + "): the CPU path"};
     }
-}
 #else
-struct ComputeDevice::Vulkan {};
-
-DeviceChoice choose_device(const DeviceArgs& args) {
-    const std::string& d = args.cpu ? std::string("cpu") : args.device;
-    if (d == "cpu") return {false, std::nullopt, false, "--device cpu"};
-    if (d == "auto") return {false, std::nullopt, true, "auto: this terrashade was built without Vulkan: the CPU path"};
-    if (d == "vulkan" || parse_index(d))
+    if (d != "auto")
         throw InputError("--device " + d + ": this terrashade was built without Vulkan (TERRASHADE_BUILD_GPU=OFF)");
-    throw InputError("--device " + d + ": give auto, cpu, vulkan or a device index (see terrashade devices)");
-}
+    return {false, std::nullopt, true, "auto: this terrashade was built without Vulkan: the CPU path"};
 #endif
+}
 
 ComputeDevice::ComputeDevice(const DeviceArgs& args) : choice_(choose_device(args)), verbose_(args.verbose) {
 #ifdef TERRASHADE_HAS_GPU

@@ -29,6 +29,7 @@
 #include "gpu/render/gpu_render_backend.hpp"
 #include "gpu/visibility/gpu_visibility_backend.hpp"
 #include "tests/gpu/horizon_agreement.hpp"
+#include "tests/render/frame_stack.hpp"
 #include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
@@ -302,21 +303,11 @@ TEST_F(GpuRenderBackendTest, FramesMatchTheCpuPaths) {
     const auto banded_visibility = gpu::visibility::make_gpu_visibility_backend(*context_, {.max_band_rows = 20});
     const auto cpu_backend = cr::make_cpu_backend();
     cr::RendererOptions o;  // the defaults: scaling_squaring, band correction
-    struct Renderer {
-        std::unique_ptr<cr::ShadingState> state;
-        cr::ViewShading view;
-        std::unique_ptr<cr::FrameRenderer> frame;
-        cr::FrameRenderer* operator->() const { return frame.get(); }
-    };
     auto make = [&](cr::RenderBackend* b, vis::VisibilityBackend* v) {
         cr::RendererOptions ob = o;
         ob.backend = b;
         ob.visibility = v;
-        Renderer r;
-        r.state = cr::compute_shading_state(c.grid, materials, normals, ob);
-        r.view = cr::compute_view_shading(*r.state, {});
-        r.frame = std::make_unique<cr::FrameRenderer>(*r.state, r.view);
-        return r;
+        return std::make_unique<cr::testing::FrameStack>(c.grid, materials, normals, cr::ViewDirections{}, ob);
     };
     const auto on_gpu = make(gpu_backend.get(), gpu_visibility.get());
     const auto on_gpu_banded = make(banded_backend.get(), banded_visibility.get());
@@ -325,10 +316,10 @@ TEST_F(GpuRenderBackendTest, FramesMatchTheCpuPaths) {
     for (const cr::SunState sun : {cr::SunState{135.0, 25.0}, cr::SunState{250.0, 8.0}}) {
         const auto sky = light::make_sky(light::SkyOptions{}, cr::sun_direction(sun));
         std::vector<glm::vec3> g, gb, b, f;
-        on_gpu->render(*sky, sun, g);
-        on_gpu_banded->render(*sky, sun, gb);
-        on_cpu_backend->render(*sky, sun, b);
-        on_cpu_fused->render(*sky, sun, f);
+        (*on_gpu)->render(*sky, sun, g);
+        (*on_gpu_banded)->render(*sky, sun, gb);
+        (*on_cpu_backend)->render(*sky, sun, b);
+        (*on_cpu_fused)->render(*sky, sun, f);
         ASSERT_EQ(g.size(), c.grid.z.size());
         double worst_b = 0, worst_f = 0;
         for (std::size_t t = 0; t < g.size(); ++t)

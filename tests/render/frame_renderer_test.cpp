@@ -6,24 +6,14 @@
 
 #include "core/render/frame_renderer.hpp"
 #include "core/render/render_backend.hpp"
+#include "tests/render/frame_stack.hpp"
 #include "core/util/angles.hpp"
 #include "core/visibility/visibility_backend.hpp"
 
 namespace ts::render {
 namespace {
 
-// The view-independent state, one view's shading and a frame renderer, as a Scene holds them.
-struct Renderer {
-    std::unique_ptr<ShadingState> state;
-    ViewShading view;
-    std::unique_ptr<FrameRenderer> frame;
-    Renderer(const terrain::HeightGrid& grid, MaterialRaster materials, NormalField normals,
-             const ViewDirections& directions, const RendererOptions& options)
-        : state(compute_shading_state(grid, std::move(materials), std::move(normals), options)),
-          view(compute_view_shading(*state, directions)),
-          frame(std::make_unique<FrameRenderer>(*state, view)) {}
-    FrameRenderer* operator->() const { return frame.get(); }
-};
+using Renderer = testing::FrameStack;
 
 // A test sky: uniform radiance L over the upper hemisphere, black below, and a sun disc of
 // the given irradiance (0 = no sun).

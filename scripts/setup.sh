@@ -11,7 +11,8 @@ BUILD_PKGS=(
   build-essential cmake ninja-build pkg-config
   libgeographiclib-dev      # geodesy: local ENU frames, geodesics, UTM/UPS
   libopenimageio-dev        # image I/O in tests; EXR/HDR environment maps
-  libdeflate-dev            # PNG compression: ~4x faster than zlib for smaller files (docs/dependencies.md)
+  libisal-dev               # PNG compression: ISA-L igzip, the fastest deflate (docs/dependencies.md)
+  libdeflate-dev            # PNG compression at higher levels, and CRC-32 (docs/dependencies.md)
   libpng-dev                # tests: a PNG decoder besides OpenImageIO, and the earlier encoder as a reference
   openimageio-tools
   libtiff-dev libgeotiff-dev  # GeoTIFF tags and GeoKeys (OIIO 2.4 does not expose them)

@@ -1,6 +1,6 @@
 #include "core/raster/png_writer.hpp"
 
-#include <libdeflate.h>
+#include <libdeflate.h>  // crc32
 
 #include <algorithm>
 #include <array>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/raster/zlib_stream.hpp"
 #include "core/util/error.hpp"
 #include "core/util/uninitialised_vector.hpp"
 
@@ -18,20 +19,6 @@ namespace ts::raster {
 namespace {
 
 using Bytes = UninitialisedVector<std::uint8_t>;
-
-// One compressor per level and thread, kept: allocating one is a malloc of its hash tables
-// (hundreds of KB) that a frame sequence would otherwise pay per frame. A compressor is not
-// thread-safe; each writer thread has its own.
-libdeflate_compressor* compressor_for(int level) {
-    struct Free {
-        void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
-    };
-    thread_local std::array<std::unique_ptr<libdeflate_compressor, Free>, 13> cache;
-    auto& c = cache[std::size_t(level)];
-    if (!c) c.reset(libdeflate_alloc_compressor(level));
-    if (!c) throw std::bad_alloc();
-    return c.get();
-}
 
 // out[i] = row[i] - predictor for one row of n bytes, bpp bytes per pixel; `prior` is the row
 // above (zeros for the top row). The loops have no carried dependency (the predictors read the
@@ -89,7 +76,7 @@ void filter_rows(const Picture& p, PngFilter filter, int y0, int y1, const std::
 // are not tried: on rendered maps, perspective views and quick-looks they never compressed
 // best, and on map frames at a low sun average won the sample but not the picture (the sample
 // misses none's long-distance matches), costing 3-5%.
-PngFilter choose_filter(const Picture& p, libdeflate_compressor* compressor, const std::uint8_t* zero_row) {
+PngFilter choose_filter(const Picture& p, const PngEncoding& encoding, const std::uint8_t* zero_row) {
     constexpr int kBandRows = 8, kBandSpacing = 256;
     std::vector<std::pair<int, int>> bands;
     for (int start = 0; start < p.height; start += kBandSpacing) {
@@ -100,7 +87,7 @@ PngFilter choose_filter(const Picture& p, libdeflate_compressor* compressor, con
     std::size_t rows = 0;
     for (const auto& [y0, y1] : bands) rows += std::size_t(y1 - y0);
     Bytes sample(rows * (p.row_bytes + 1));
-    Bytes compressed(libdeflate_zlib_compress_bound(compressor, sample.size()));
+    Bytes compressed(zlib_bound(sample.size()));
     PngFilter best = PngFilter::none;
     std::size_t best_size = SIZE_MAX;
     // Ties keep the earlier, cheaper-to-compute filter.
@@ -110,8 +97,8 @@ PngFilter choose_filter(const Picture& p, libdeflate_compressor* compressor, con
             filter_rows(p, f, y0, y1, zero_row, out);
             out += std::size_t(y1 - y0) * (p.row_bytes + 1);
         }
-        const std::size_t size =
-            libdeflate_zlib_compress(compressor, sample.data(), sample.size(), compressed.data(), compressed.size());
+        const std::size_t size = zlib_compress(encoding.deflater, encoding.level, sample.data(), sample.size(),
+                                               compressed.data(), compressed.size());
         if (size != 0 && size < best_size) best = f, best_size = size;
     }
     return best;
@@ -156,22 +143,23 @@ void write_png(const std::filesystem::path& file, const std::filesystem::path& s
         case 4: colour_type = 6; break;  // truecolour with alpha
         default: throw input_error(shown_path.string(), "a PNG has 1, 3 or 4 channels, not " + std::to_string(channels));
     }
-    if (encoding.level < 0 || encoding.level > 12)
-        throw input_error(shown_path.string(), "PNG compression level must be 0..12");
+    if (encoding.level < 0 || encoding.level > max_level(encoding.deflater))
+        throw input_error(shown_path.string(), "PNG compression level must be 0.." +
+                                                   std::to_string(max_level(encoding.deflater)) + " with " +
+                                                   (encoding.deflater == Deflater::isal ? "ISA-L" : "libdeflate"));
     if (width <= 0 || height <= 0 || width > 0x7fffffff / channels)
         throw input_error(shown_path.string(), "cannot write a " + std::to_string(width) + "x" +
                                                    std::to_string(height) + " PNG");
 
     const Picture p{width, height, std::size_t(channels), std::size_t(width) * std::size_t(channels), data};
-    libdeflate_compressor* compressor = compressor_for(encoding.level);
     const std::vector<std::uint8_t> zero_row(p.row_bytes, 0);
     const PngFilter filter =
-        encoding.filter == PngFilter::trial ? choose_filter(p, compressor, zero_row.data()) : encoding.filter;
+        encoding.filter == PngFilter::trial ? choose_filter(p, encoding, zero_row.data()) : encoding.filter;
     Bytes filtered(std::size_t(height) * (p.row_bytes + 1));
     filter_rows(p, filter, 0, height, zero_row.data(), filtered.data());
-    Bytes stream(libdeflate_zlib_compress_bound(compressor, filtered.size()));
-    const std::size_t stream_size =
-        libdeflate_zlib_compress(compressor, filtered.data(), filtered.size(), stream.data(), stream.size());
+    Bytes stream(zlib_bound(filtered.size()));
+    const std::size_t stream_size = zlib_compress(encoding.deflater, encoding.level, filtered.data(),
+                                                  filtered.size(), stream.data(), stream.size());
     if (stream_size == 0) throw input_error(shown_path.string(), "writing PNG failed: compression failed");
 
     std::uint8_t ihdr[13];

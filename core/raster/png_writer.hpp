@@ -1,7 +1,8 @@
 #pragma once
-// 8-bit PNG, encoded here: the rows filtered (PNG filter types 0-4), one zlib stream from
-// libdeflate, and the IHDR / IDAT / IEND chunks with their CRCs. Every PNG terrashade writes
-// (rendered frames, hillshade and svf quick-looks) goes through write_png.
+// 8-bit PNG, encoded here: the rows filtered (PNG filter types 0-4), one zlib stream
+// (core/raster/zlib_stream: ISA-L or libdeflate), and the IHDR / IDAT / IEND chunks with their
+// CRCs. Every PNG terrashade writes (rendered frames, hillshade and svf quick-looks) goes
+// through write_png.
 //
 // Why not libpng + zlib: for a 500x500 rendered frame libpng with zlib at level 3 took 2.6x
 // the CPU time of this encoder and gave a file 1-8% larger (hillshades: 2.1x, 11%; see
@@ -10,9 +11,11 @@
 // terrashade run 0.3 s at start-up.
 //
 // Memory: the filtered rows (width * channels + 1 bytes per row) and the compressed stream are
-// whole buffers beside the caller's pixels (libdeflate compresses a buffer at once).
+// whole buffers beside the caller's pixels (the deflater compresses a buffer at once).
 #include <cstdint>
 #include <filesystem>
+
+#include "core/raster/zlib_stream.hpp"
 
 namespace ts::raster {
 
@@ -33,9 +36,12 @@ enum class PngFilter : std::uint8_t {
 // and 960x540 perspective views and hillshade / svf quick-looks: the best filter depends on the
 // picture (none for maps, whose flat areas repeat whole pixels; sub for hazy perspective views;
 // paeth for hillshades) and the trial found it on all but one of 20 such pictures (that one
-// 1.1% larger); libdeflate level 2 made map frames 9% smaller for 1.4x the time of level 1.
+// 1.1% larger). ISA-L level 1 encodes a map frame in about a third of libdeflate level 1's time
+// for a file ~7% larger; libdeflate level 2 makes it ~9% smaller than libdeflate level 1 for
+// 1.4x that time (docs/dependencies.md, "PNG output").
 struct PngEncoding {
-    int level = 1;                      // libdeflate: 0 (store) .. 12 (smallest)
+    Deflater deflater = Deflater::isal;
+    int level = 1;  // 0..max_level(deflater)
     PngFilter filter = PngFilter::trial;
 };
 

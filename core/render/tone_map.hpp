@@ -85,6 +85,8 @@ public:
                     std::uint8_t* out) const;
 
 private:
+    std::size_t encode_rgb_avx2(const glm::vec3* rgb, std::size_t count, float scale, std::uint8_t* out) const;
+
     static constexpr float kLow = 0x1p-14f, kHigh = 8.0f;
     static constexpr int kStepBits = 9;                 // steps per octave = 2^kStepBits
     static constexpr int kShift = 23 - kStepBits;

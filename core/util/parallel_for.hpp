@@ -2,8 +2,8 @@
 // The two ways core/ splits work over a few std::jthreads (the machine has few cores):
 //  - parallel_for: items handed out one at a time, for items of very different cost
 //    (raymarch rows, sweep azimuths);
-//  - parallel_rows: equal contiguous bands, for rows that all cost the same (pyramid levels,
-//    tiling, hillshade), with small jobs kept on the calling thread.
+//  - parallel_rows: contiguous bands of rows, for rows that all cost about the same (pyramid
+//    levels, tiling, hillshade, shading), with small jobs kept on the calling thread.
 #include <algorithm>
 #include <atomic>
 #include <thread>
@@ -39,7 +39,10 @@ void parallel_for(int count, int workers, Body&& body) {
 
 // Calls body(row_begin, row_end) on disjoint bands covering [0, rows), in parallel on
 // thread_count(threads) threads. Jobs below ~128k units of work (work_per_row * rows) run on
-// the calling thread: starting a thread costs more than such a job.
+// the calling thread: starting a thread costs more than such a job. The bands (four per thread,
+// each of at least ~64k units) are handed out as threads come for them, so a thread that shares
+// its core with other work (a frame being written) does fewer of them instead of holding up
+// the rest. What a body computes must not depend on where the bands begin.
 template <class Body>
 void parallel_rows(int rows, int threads, long long work_per_row, Body&& body) {
     constexpr long long kMinWorkPerThread = 64 * 1024;
@@ -49,14 +52,17 @@ void parallel_rows(int rows, int threads, long long work_per_row, Body&& body) {
         body(0, rows);
         return;
     }
+    const long long total = std::max(1LL, work_per_row) * rows;
+    const int bands = int(std::clamp<long long>(total / kMinWorkPerThread, n, 4LL * n));
+    std::atomic<int> next{0};
+    auto run = [&] {
+        for (int b = next.fetch_add(1); b < bands; b = next.fetch_add(1))
+            body(int((long long)rows * b / bands), int((long long)rows * (b + 1) / bands));
+    };
     std::vector<std::jthread> workers;
     workers.reserve(std::size_t(n - 1));
-    for (int t = 1; t < n; ++t) {
-        const int begin = int((long long)rows * t / n);
-        const int end = int((long long)rows * (t + 1) / n);
-        workers.emplace_back([&body, begin, end] { body(begin, end); });
-    }
-    body(0, int((long long)rows / n));
+    for (int t = 1; t < n; ++t) workers.emplace_back(run);
+    run();
 }
 
 }  // namespace ts

@@ -3,6 +3,7 @@
 #include "core/visibility/sun_sweep.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <barrier>
 #include <cmath>
 #include <limits>
@@ -333,14 +334,19 @@ void SunShadowSweep::compute(double sun_azimuth_deg, double sun_elevation_deg, s
     if (int(scratch_.size()) < threads) scratch_.resize(std::size_t(threads));
     const long lines = f.n_max - f.n_min + 1;
     std::barrier sync(threads);
+    // Blocks of rows handed out as threads come for them: the march's cost follows the terrain
+    // (and the shadows), and a frame written beside the sweep (relight's writer thread) takes
+    // part of one core, so fixed shares would wait for the slowest thread.
+    constexpr int kRowBlock = 16;
+    // The far field likewise, in bands of lines (each band sweeps one line of its neighbour's
+    // again, so not too many of them).
+    const int line_bands = threads == 1 ? 1 : int(std::min<long>(4L * threads, std::max(1L, lines / 64)));
+    std::atomic<int> next_band{0}, next_block{0};
     auto job = [&](int t) {
-        const long n0 = f.n_min + lines * t / threads, n1 = f.n_min + lines * (t + 1) / threads;
-        far_field(f, n0, n1, t);
+        for (int b = next_band.fetch_add(1); b < line_bands; b = next_band.fetch_add(1))
+            far_field(f, f.n_min + lines * b / line_bands, f.n_min + lines * (b + 1) / line_bands, t);
         sync.arrive_and_wait();
-        // Blocks of rows dealt out in turn: the march's cost follows the terrain (and the
-        // shadows), so contiguous halves can differ a lot.
-        constexpr int kRowBlock = 16;
-        for (int r0 = t * kRowBlock; r0 < h; r0 += threads * kRowBlock)
+        for (int r0 = kRowBlock * next_block.fetch_add(1); r0 < h; r0 = kRowBlock * next_block.fetch_add(1))
             near_field_rows(f, r0, std::min(h, r0 + kRowBlock), out.data());
     };
     {

@@ -14,8 +14,10 @@ find_package(TIFF REQUIRED)
 # libzip: its Debian CMake config demands the zipcmp tools; pkg-config needs nothing more.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
-# libdeflate: PNG compression (core/raster/png_writer.hpp says why); Debian 12 ships pkg-config only.
+# ISA-L and libdeflate: PNG compression (core/raster/zlib_stream.hpp says why); Debian 12 ships
+# pkg-config files only.
 pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
+pkg_check_modules(LIBISAL REQUIRED IMPORTED_TARGET libisal)
 find_package(glm CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(SQLite3 REQUIRED)

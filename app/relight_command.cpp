@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,10 @@
 #include "app/compute_device.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
+#include "core/render/sequence_exposure.hpp"
 #include "core/light/time_interval.hpp"
 #include "core/light/utc_time.hpp"
+#include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
@@ -30,7 +33,12 @@ struct RelightArgs {
     std::string format = "png";
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
+    bool skip_night = false;
 };
+
+// Below this sun elevation it is night for --skip-night: the end of civil twilight, when the
+// sky is too dark for terrain to read without artificial light.
+constexpr double kNightElevationDeg = -6.0;
 
 std::vector<light::UtcTime> read_times_file(const std::string& path) {
     std::ifstream in(path);
@@ -53,18 +61,79 @@ std::vector<light::UtcTime> read_times_file(const std::string& path) {
     return times;
 }
 
+// The instant in a file name: 2026-06-21T0700Z (seconds only when not zero; no colons, which
+// some file systems refuse).
+std::string instant_for_file_name(light::UtcTime t) {
+    std::string s;
+    for (char c : light::format_utc_time(t))
+        if (c != ':') s += c;
+    if (s.size() == 18 && s.compare(15, 3, "00Z") == 0) s.replace(15, 3, "Z");  // YYYY-MM-DDTHHMM00Z
+    return s;
+}
+
+struct Frame {
+    light::UtcTime time;
+    render::SunState sun;
+    std::string file;
+    double ev100 = 0;
+};
+
+void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>& frames, bool linear) {
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+        std::FILE* f = std::fopen(tmp.c_str(), "w");
+        if (!f) throw input_error(path.string(), "cannot write");
+        std::fprintf(f, "frame,file,time_utc,sun_azimuth_deg,sun_elevation_deg,ev100\n");
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            const Frame& fr = frames[k];
+            std::fprintf(f, "%zu,%s,%s,%.4f,%.4f,", k, fr.file.c_str(), light::format_utc_time(fr.time).c_str(),
+                         fr.sun.azimuth_deg, fr.sun.elevation_deg);
+            if (linear) std::fprintf(f, "\n");  // EXR frames are linear: no exposure applied
+            else std::fprintf(f, "%.3f\n", fr.ev100);
+        }
+        if (std::fclose(f) != 0) throw input_error(path.string(), "cannot write (disk full?)");
+    });
+}
+
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
     const std::vector<light::UtcTime> times =
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     render::SceneOptions options = scene_options(a.render);
-    render::Exposure exposure = exposure_of(a.render);
+    const render::Exposure exposure = exposure_of(a.render);
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
     if (ec || !std::filesystem::is_directory(a.out_dir))
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    // The sun of every instant first: night frames are known (and skipped) before any work.
+    const render::SunSite site = render::sun_site(dem);
+    std::vector<Frame> frames;
+    std::size_t down = 0, night = 0;
+    for (const auto& t : times) {
+        const render::SunState sun = render::sun_at(site, t);
+        if (sun.elevation_deg < kNightElevationDeg) ++night;
+        if (sun.elevation_deg < -0.27) ++down;
+        if (a.skip_night && sun.elevation_deg < kNightElevationDeg) continue;
+        frames.push_back({t, sun, "", 0});
+    }
+    if (frames.empty())
+        throw InputError("relight: the sun is below " + std::to_string(int(kNightElevationDeg)) +
+                         " degrees (night) at every instant; nothing to render with --skip-night");
+    if (a.skip_night && night > 0)
+        std::printf("skipping %zu of %zu instants at night (sun below %.0f degrees)\n", night, times.size(),
+                    kNightElevationDeg);
+    else if (down > 0)
+        std::fprintf(stderr, "terrashade: warning: the sun is below the horizon at %zu of %zu times: those frames "
+                             "have sky light only (--skip-night leaves out those below %.0f degrees)\n",
+                     down, times.size(), kNightElevationDeg);
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        char name[96];
+        std::snprintf(name, sizeof name, "frame_%04zu_%s.%s", k, instant_for_file_name(frames[k].time).c_str(),
+                      a.format.c_str());
+        frames[k].file = name;
+    }
+
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());
@@ -78,53 +147,58 @@ void run_relight(const RelightArgs& a) {
     }
     const double setup_s = t0.seconds();
 
-    std::vector<render::SunState> suns;
-    std::size_t down = 0, brightest = 0;
-    for (const auto& t : times) {
-        suns.push_back(scene->sun_at(t));
-        if (suns.back().elevation_deg < -0.27) ++down;
-        if (suns.back().elevation_deg > suns[brightest].elevation_deg) brightest = suns.size() - 1;
-    }
-    if (down > 0)
-        std::fprintf(stderr, "terrashade: warning: the sun is below the horizon at %zu of %zu times: those frames "
-                             "have sky light only\n", down, times.size());
     render::LinearImage image;
-    if (exposure.automatic && a.format != "exr") {
-        // One exposure for the whole sequence (from the frame with the highest sun), so dusk
-        // looks darker than noon instead of flickering frame to frame.
-        scene->render(suns[brightest], image);
-        const double scale = render::image_exposure_scale(image, exposure);
-        exposure.automatic = false;
-        exposure.ev100 = std::log2(1000.0 / (1.2 * scale));
-        std::printf("exposure: EV100 %.2f for every frame (auto, from %s)\n", exposure.ev100,
-                    light::format_utc_time(times[brightest]).c_str());
+    const bool linear = a.format == "exr";
+    const bool per_frame_auto = exposure.automatic && !linear;
+    std::optional<render::SequenceExposure> sequence;
+    double reference_ev = 0;
+    if (per_frame_auto) {
+        // The reference: the auto exposure of the frame with the highest sun.
+        std::size_t brightest = 0;
+        for (std::size_t k = 1; k < frames.size(); ++k)
+            if (frames[k].sun.elevation_deg > frames[brightest].sun.elevation_deg) brightest = k;
+        scene->render(frames[brightest].sun, image);
+        reference_ev = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
+        sequence.emplace(reference_ev);
     }
     const Stopwatch t1;
     double render_s = 0;
     int width = 0, height = 0;
+    double ev_min = 1e300, ev_max = -1e300;
     {
         // Frame k is tone-mapped, encoded and renamed into place on a writer thread while
         // frame k+1 renders (encoding a PNG takes about as long as relighting it).
         render::BackgroundWriter writer(a.write_queue, a.writer_threads);
-        ProgressBar bar("relight", times.size(), "frames");
-        for (std::size_t k = 0; k < times.size(); ++k) {
+        ProgressBar bar("relight", frames.size(), "frames");
+        for (Frame& fr : frames) {
             const Stopwatch tf;
-            scene->render(suns[k], image);
+            scene->render(fr.sun, image);
             render_s += tf.seconds();
             width = image.width, height = image.height;
-            char name[64];
-            std::snprintf(name, sizeof name, "frame_%04zu.%s", k, a.format.c_str());
-            writer.write((std::filesystem::path(a.out_dir) / name).string(), image, exposure,
+            render::Exposure frame_exposure = exposure;
+            if (sequence) {
+                const double own = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
+                frame_exposure.automatic = false;
+                frame_exposure.ev100 = sequence->next(own);
+            }
+            fr.ev100 = frame_exposure.automatic ? 0.0 : frame_exposure.ev100;
+            ev_min = std::min(ev_min, fr.ev100), ev_max = std::max(ev_max, fr.ev100);
+            writer.write((std::filesystem::path(a.out_dir) / fr.file).string(), image, frame_exposure,
                          scene->target().georef());
             bar.advance();
         }
         writer.finish();
     }
+    write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, linear);
     const double total_s = t1.seconds();
-    const double px = double(width) * height * double(times.size());
-    std::printf("relit %zu frames (%dx%d) into %s: visibility + transfer once %.3f s; frames %.3f s rendering "
-                "(%.1f Mpx/s), %.3f s with files written (%.1f Mpx/s)\n",
-                times.size(), width, height, a.out_dir.c_str(), setup_s, render_s, px / render_s * 1e-6, total_s,
+    if (per_frame_auto)
+        std::printf("exposure: automatic per frame, smoothed: EV100 %.2f to %.2f (at most %.0f EV brighter than the "
+                    "highest sun's %.2f; --exposure EV fixes one)\n",
+                    ev_min, ev_max, render::SequenceExposureOptions{}.max_boost_ev, reference_ev);
+    const double px = double(width) * height * double(frames.size());
+    std::printf("relit %zu frames (%dx%d) into %s (with times.csv): visibility + transfer once %.3f s; frames %.3f s "
+                "rendering (%.1f Mpx/s), %.3f s with files written (%.1f Mpx/s)\n",
+                frames.size(), width, height, a.out_dir.c_str(), setup_s, render_s, px / render_s * 1e-6, total_s,
                 px / total_s * 1e-6);
 }
 
@@ -134,8 +208,9 @@ void add_relight_command(CLI::App& root) {
     auto a = std::make_shared<RelightArgs>();
     CLI::App* cmd = root.add_subcommand(
         "relight",
-        "The same DEM relit for many instants: visibility once, then one frame per time (frame_0000.png, ...). "
-        "Times with the sun below the horizon are rendered with sky light only (a warning says how many).");
+        "The same DEM relit for many instants: visibility once, then one frame per time, named with its number and "
+        "instant (frame_0000_2025-06-21T0400Z.png, ...), and times.csv (file, time, sun, exposure of each frame). "
+        "Automatic exposure is per frame and smoothed; times with the sun below the horizon have sky light only.");
     add_render_options(*cmd, a->render);
     cmd->add_option("--times", a->times, "START/END/STEP, ISO 8601 (e.g. 2025-06-21T04:00Z/2025-06-21T20:00Z/PT1H)");
     cmd->add_option("--times-file", a->times_file, "A file with one ISO 8601 instant per line (# comments)");
@@ -151,6 +226,7 @@ void add_relight_command(CLI::App& root) {
                     "Threads encoding and writing frames, each its own frame (frames may then land out of order)")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
+    cmd->add_flag("--skip-night", a->skip_night, "Leave out instants with the sun below -6 degrees (after civil dusk)");
     cmd->callback([a] { run_relight(*a); });
 }
 

@@ -84,21 +84,27 @@ const Camera* Scene::camera() const {
     return c ? &c->camera() : nullptr;
 }
 
-SunState Scene::sun_at(light::UtcTime time) const {
-    const glm::dvec2 centre = dem_.georef.pixel_to_lonlat(dem_.width * 0.5, dem_.height * 0.5);
+SunSite sun_site(const dem::Dem& dem) {
+    const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
     double mean = 0;
     std::size_t n = 0;
-    for (float z : dem_.z)
+    for (float z : dem.z)
         if (!std::isnan(z)) mean += z, ++n;
+    return {centre.x, centre.y, n ? mean / double(n) : 0.0};
+}
+
+SunState sun_at(const SunSite& site, light::UtcTime time) {
     light::SunPositionInput in;
     in.time = time;
-    in.observer.longitude_deg = centre.x;
-    in.observer.latitude_deg = centre.y;
-    in.observer.height_m = n ? mean / double(n) : 0.0;
+    in.observer.longitude_deg = site.longitude_deg;
+    in.observer.latitude_deg = site.latitude_deg;
+    in.observer.height_m = site.height_m;
     in.atmosphere = light::Atmosphere::standard_at(in.observer.height_m);
     const light::SunPosition p = light::sun_position(in);
     return {p.azimuth_deg, p.elevation_deg};
 }
+
+SunState Scene::sun_at(light::UtcTime time) const { return render::sun_at(sun_site(dem_), time); }
 
 void Scene::render(const SunState& sun, LinearImage& image) {
     const glm::dvec3 s = sun_direction(sun);

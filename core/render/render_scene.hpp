@@ -54,6 +54,14 @@ struct SceneOptions {
     std::optional<ExtentRequest> extent;
 };
 
+// Where the sun is computed for a DEM: its centre (lon/lat from its georef) at its mean height.
+struct SunSite {
+    double longitude_deg = 0, latitude_deg = 0, height_m = 0;
+};
+SunSite sun_site(const dem::Dem& dem);
+// The sun seen from `site` at `time` (NREL SPA, standard atmosphere at the site's height).
+SunState sun_at(const SunSite& site, light::UtcTime time);
+
 // A DEM made ready for frames: the view-independent shading state (computed once), one
 // target and the view shading it needs, and a frame renderer; then frames for any number of
 // sun positions and skies.

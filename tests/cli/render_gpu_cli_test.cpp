@@ -114,7 +114,7 @@ TEST_F(RenderGpuCli, RelightAndBenchRelightSayWhereTheyRan) {
     ASSERT_EQ(relight.exit_code, 0) << relight.err;
     EXPECT_NE(relight.out.find("sky shading on "), std::string::npos) << relight.out;
     EXPECT_EQ(relight.out.find("sky shading on cpu"), std::string::npos) << relight.out;
-    EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_0002.png"));
+    EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_0002_2025-06-21T1000Z.png"));
 
     const Result bench = run("bench relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
                              " --crop 5.65,45.10,5.85,45.30 --directions 8 --frames 2 --device vulkan --compare-cpu");

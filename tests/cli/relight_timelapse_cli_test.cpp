@@ -1,0 +1,135 @@
+// `terrashade relight` as a time-lapse: frame names carry their instant, times.csv lists every
+// frame, automatic exposure follows the day without flicker (dawn readable, night dark),
+// --skip-night leaves out the dark instants, --exposure fixes one exposure.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
+const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
+// A June day at Grenoble, every 2 hours: 02Z and 20Z are in twilight or night (sun -14 and -5
+// degrees), 04Z just after sunrise (+1), 12Z near the highest sun (68).
+const std::string kDay = " --times 2025-06-21T02:00:00Z/2025-06-21T20:00:00Z/PT2H --directions 8";
+
+std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+
+struct CsvRow {
+    std::string file, time;
+    double azimuth = 0, elevation = 0, ev100 = 0;
+};
+
+std::vector<CsvRow> read_times_csv(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "frame,file,time_utc,sun_azimuth_deg,sun_elevation_deg,ev100");
+    std::vector<CsvRow> rows;
+    while (std::getline(in, line)) {
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
+        EXPECT_EQ(f.size(), 6u) << line;
+        if (f.size() != 6) continue;
+        EXPECT_EQ(std::stoul(f[0]), rows.size());
+        rows.push_back({f[1], f[2], std::stod(f[3]), std::stod(f[4]), std::stod(f[5])});
+    }
+    return rows;
+}
+
+// Mean of the 8-bit channels (0..255) of a PNG.
+double mean_code(const std::filesystem::path& p) {
+    auto in = OIIO::ImageInput::open(p.string());
+    EXPECT_TRUE(in) << p;
+    if (!in) return -1;
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<unsigned char> px(std::size_t(spec.width) * spec.height * spec.nchannels);
+    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, px.data());
+    double sum = 0;
+    for (unsigned char c : px) sum += c;
+    return sum / double(px.size());
+}
+
+TEST(RelightTimeLapse, NamesCarryTheInstantAndTimesCsvListsEveryFrame) {
+    const auto dir = temp_dir("timelapse_names") / "frames";
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --out " + quote(dir.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<CsvRow> rows = read_times_csv(dir / "times.csv");
+    ASSERT_EQ(rows.size(), 10u);
+    EXPECT_EQ(rows[0].file, "frame_0000_2025-06-21T0200Z.png");
+    EXPECT_EQ(rows[0].time, "2025-06-21T02:00:00Z");
+    EXPECT_EQ(rows[9].file, "frame_0009_2025-06-21T2000Z.png");
+    for (const CsvRow& row : rows) {
+        EXPECT_TRUE(std::filesystem::exists(dir / row.file)) << row.file;
+        EXPECT_GE(row.azimuth, 0.0);
+        EXPECT_LT(row.azimuth, 360.0);
+    }
+    EXPECT_LT(rows[0].elevation, -6.0);
+    EXPECT_GT(rows[5].elevation, 60.0);
+    EXPECT_NE(r.out.find("exposure: automatic per frame"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("times.csv"), std::string::npos) << r.out;
+}
+
+// Auto exposure per frame, bounded and smoothed: a frame just after sunrise is readable (not
+// near-black, as one exposure from the noon frame made it), night stays darker than day, and
+// the exposure changes gradually (no jump of more than 1.5 EV between 2-hour frames).
+TEST(RelightTimeLapse, AutoExposureFollowsTheDayWithoutFlicker) {
+    const auto dir = temp_dir("timelapse_exposure") / "frames";
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --out " + quote(dir.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<CsvRow> rows = read_times_csv(dir / "times.csv");
+    ASSERT_EQ(rows.size(), 10u);
+    const double dawn = mean_code(dir / rows[1].file), noon = mean_code(dir / rows[5].file);
+    const double night = mean_code(dir / rows[0].file);
+    EXPECT_GT(dawn, 0.5 * noon) << "dawn " << dawn << " noon " << noon;
+    EXPECT_LT(night, 0.5 * dawn) << "night " << night << " dawn " << dawn;
+    for (std::size_t k = 1; k < rows.size(); ++k) EXPECT_LE(std::abs(rows[k].ev100 - rows[k - 1].ev100), 1.5) << k;
+    // At most 3 EV brighter than the highest sun's exposure.
+    double highest = rows[0].ev100;
+    for (const CsvRow& row : rows) highest = std::max(highest, row.ev100);
+    for (const CsvRow& row : rows) EXPECT_GE(row.ev100, highest - 3.0 - 0.01) << row.file;
+
+    // A fixed exposure is the same for every frame.
+    const auto fixed = dir.parent_path() / "fixed";
+    const Result f = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --exposure 14 --out " + quote(fixed.string())));
+    ASSERT_EQ(f.exit_code, 0) << f.err;
+    for (const CsvRow& row : read_times_csv(fixed / "times.csv")) EXPECT_DOUBLE_EQ(row.ev100, 14.0) << row.file;
+}
+
+TEST(RelightTimeLapse, SkipNightLeavesOutTheDarkInstants) {
+    const auto dir = temp_dir("timelapse_skip") / "frames";
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --skip-night --out " + quote(dir.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<CsvRow> rows = read_times_csv(dir / "times.csv");
+    ASSERT_EQ(rows.size(), 9u);  // 02Z (sun -14 degrees) left out; 20Z (-5) is civil twilight, kept
+    EXPECT_EQ(rows[0].file, "frame_0000_2025-06-21T0400Z.png");
+    for (const CsvRow& row : rows) EXPECT_GE(row.elevation, -6.0);
+    EXPECT_NE(r.out.find("skipping 1 of 10 instants at night"), std::string::npos) << r.out;
+    int pngs = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) pngs += e.path().extension() == ".png";
+    EXPECT_EQ(pngs, 9);
+
+    // Only night: nothing to do, said before any work, nothing written.
+    const auto none = dir.parent_path() / "none";
+    const Result n = run(ts_cmd("relight " + quote(kDem) + kCrop +
+                                " --times 2025-06-21T00:00:00Z/2025-06-21T01:00:00Z/PT30M --skip-night --out " +
+                                quote(none.string())));
+    EXPECT_EQ(n.exit_code, 2) << n.err;
+    EXPECT_NE(n.err.find("night"), std::string::npos) << n.err;
+    EXPECT_EQ(std::count(n.err.begin(), n.err.end(), '\n'), 1) << n.err;
+    EXPECT_TRUE(!std::filesystem::exists(none) || std::filesystem::is_empty(none));
+}
+
+}  // namespace
+}  // namespace ts::cli_test

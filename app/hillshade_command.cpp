@@ -48,7 +48,7 @@ void add_hillshade_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "hillshade",
         "Classic local hillshade (Horn gradients), as gdaldem hillshade but with true metric cell sizes per row; "
-        "output bytes 1..255, 0 = nodata (border pixels and voids)");
+        "output bytes 1..255, 0 = nodata (voids; the border too with --no-edges)");
     add_dem_input_options(*cmd, args->input);
     cmd->add_option("-o,--out", args->out, "Output image: .png, or .tif for a georeferenced GeoTIFF (written atomically)")
         ->required();
@@ -58,6 +58,8 @@ void add_hillshade_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("-z,--z-factor", args->shade.z_factor, "Vertical exaggeration (> 0)")->capture_default_str();
     cmd->add_option("--threads", args->shade.threads, "Worker threads (0 = one per core)")->capture_default_str();
+    cmd->add_flag("!--no-edges", args->shade.compute_edges,
+                  "Leave the border and the rims of voids unshaded (0), as gdaldem without -compute_edges");
     cmd->callback([args] { run_hillshade(*args); });
 }
 

@@ -141,12 +141,19 @@ void expect_matches_gdaldem(const fs::path& dir, const fs::path& dem, const std:
 }
 
 TEST_F(HillshadeCli, MatchesGdaldemOnLambert93) {
-    expect_matches_gdaldem(dir_, projected("grenoble_l93.tif"), "--no-fill", "", true);
+    expect_matches_gdaldem(dir_, projected("grenoble_l93.tif"), "--no-fill --no-edges", "", true);
 }
 
 TEST_F(HillshadeCli, MatchesGdaldemOnUtmWithOtherLight) {
-    expect_matches_gdaldem(dir_, projected("anatolia_utm37.tif"), "--no-fill --azimuth 120 --altitude 30 --z-factor 2",
+    expect_matches_gdaldem(dir_, projected("anatolia_utm37.tif"), "--no-fill --no-edges --azimuth 120 --altitude 30 --z-factor 2",
                            "-az 120 -alt 30 -z 2", true);
+}
+
+// The default shades the border and the rims of voids as gdaldem -compute_edges does.
+TEST_F(HillshadeCli, EdgesMatchGdaldemComputeEdges) {
+    expect_matches_gdaldem(dir_, projected("grenoble_l93.tif"), "--no-fill", "-compute_edges", true);
+    expect_matches_gdaldem(dir_, projected("anatolia_utm37.tif"), "--no-fill --azimuth 120 --altitude 30",
+                           "-compute_edges -az 120 -alt 30", true);
 }
 
 TEST_F(HillshadeCli, FilledVoidsShadeAtLeastWhatGdaldemShades) {
@@ -185,7 +192,7 @@ void expect_geographic_band_matches(const fs::path& dir, const std::string& src,
     const fs::path ts_out = dir / ("ts_" + band.filename().string());
     const fs::path gd_out = dir / ("gd_" + band.filename().string());
     ASSERT_EQ(run("gdaldem hillshade -q " + metric.string() + " " + gd_out.string()).exit_code, 0);
-    const Result ts = run(kBin + " hillshade --no-fill " + band.string() + " --out " + ts_out.string());
+    const Result ts = run(kBin + " hillshade --no-fill --no-edges " + band.string() + " --out " + ts_out.string());
     ASSERT_EQ(ts.exit_code, 0) << ts.err;
     const Image a = read_image(ts_out), b = read_image(gd_out);
     ASSERT_EQ(a.width, b.width);

@@ -41,13 +41,39 @@ TEST_P(HillshadePlanes, InteriorEqualsTheAnalyticShadeAndBorderIsNodata) {
     const int w = 9, h = 7;
     const std::vector<float> z = plane(w, h, k.dx, k.dy, k.gx, k.gy);
     const terrain::HeightGrid grid = terrain::HeightGrid::uniform(w, h, z, k.dx, k.dy);
-    const std::vector<std::uint8_t> out = hillshade(grid, {.azimuth_deg = k.azimuth, .altitude_deg = k.altitude});
+    const std::vector<std::uint8_t> out =
+        hillshade(grid, {.azimuth_deg = k.azimuth, .altitude_deg = k.altitude, .compute_edges = false});
     const int want = expected_value(k.gx, k.gy, k.azimuth, k.altitude);
     for (int r = 0; r < h; ++r)
         for (int c = 0; c < w; ++c) {
             const bool border = r == 0 || c == 0 || r == h - 1 || c == w - 1;
             // Exact: the Horn gradient of a plane is exact; float heights ~1000 m lose < 1e-4 m.
             ASSERT_EQ(int(out[std::size_t(r * w + c)]), border ? 0 : want) << c << "," << r;
+        }
+}
+
+// With edges computed (the default) a plane's border is exact too: the outside cells are
+// extrapolated linearly, which a plane continues exactly. Only the four corners differ: there
+// gdaldem clamps the columns, halving the east-west difference.
+TEST_P(HillshadePlanes, EdgesOfAPlaneAreExactButTheCorners) {
+    const PlaneCase k = GetParam();
+    const int w = 9, h = 7;
+    const std::vector<float> z = plane(w, h, k.dx, k.dy, k.gx, k.gy);
+    const terrain::HeightGrid grid = terrain::HeightGrid::uniform(w, h, z, k.dx, k.dy);
+    const std::vector<std::uint8_t> out = hillshade(grid, {.azimuth_deg = k.azimuth, .altitude_deg = k.altitude});
+    const int want = expected_value(k.gx, k.gy, k.azimuth, k.altitude);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            const bool corner = (r == 0 || r == h - 1) && (c == 0 || c == w - 1);
+            const int v = out[std::size_t(r * w + c)];
+            if (corner) {
+                EXPECT_GE(v, 1) << c << "," << r;
+                if (k.gx == 0) {  // no east-west slope to halve
+                    EXPECT_EQ(v, want) << c << "," << r;
+                }
+            } else {
+                ASSERT_EQ(v, want) << c << "," << r;
+            }
         }
 }
 
@@ -86,7 +112,7 @@ TEST(Hillshade, PerRowSpacingIsUsed) {
     EXPECT_EQ(int(out[std::size_t(2 * w + 2)]), expected_value(-1.0, 0, 90, 45));
 }
 
-TEST(Hillshade, VoidsAndTheirNeighboursAreNodata) {
+TEST(Hillshade, VoidsAndTheirNeighboursAreNodataWithoutEdges) {
     const int w = 7, h = 7;
     std::vector<float> z(std::size_t(w * h), 50.0f);
     z[std::size_t(3 * w + 3)] = std::nanf("");
@@ -94,7 +120,7 @@ TEST(Hillshade, VoidsAndTheirNeighboursAreNodata) {
     mask[std::size_t(1 * w + 1)] = 1;  // a filled void: height present, still nodata
     terrain::HeightGrid g = terrain::HeightGrid::uniform(w, h, z, 1, 1);
     g.void_mask = mask;
-    const auto out = hillshade(g, {});
+    const auto out = hillshade(g, {.compute_edges = false});
     for (int r = 1; r < h - 1; ++r)
         for (int c = 1; c < w - 1; ++c) {
             const bool near_hole = std::abs(r - 3) <= 1 && std::abs(c - 3) <= 1;
@@ -103,10 +129,33 @@ TEST(Hillshade, VoidsAndTheirNeighboursAreNodata) {
         }
 }
 
-TEST(Hillshade, TinyGridsAreAllNodata) {
-    std::vector<float> z(4, 1.0f);
-    const auto out = hillshade(terrain::HeightGrid::uniform(2, 2, z, 1, 1), {});
-    for (auto v : out) EXPECT_EQ(v, 0);
+// With edges (the default) a hole's neighbours are shaded with the hole taking their height,
+// as gdaldem -compute_edges; the hole and a filled void stay nodata; the border is shaded.
+TEST(Hillshade, EdgesShadeTheRimsOfHolesAndTheBorder) {
+    const int w = 7, h = 7;
+    std::vector<float> z(std::size_t(w * h), 50.0f);
+    z[std::size_t(3 * w + 3)] = std::nanf("");
+    z[std::size_t(0 * w + 4)] = std::nanf("");  // a hole on the border
+    std::vector<std::uint8_t> mask(std::size_t(w * h), 0);
+    mask[std::size_t(1 * w + 1)] = 1;
+    terrain::HeightGrid g = terrain::HeightGrid::uniform(w, h, z, 1, 1);
+    g.void_mask = mask;
+    const auto out = hillshade(g, {});
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            const bool nodata = (r == 3 && c == 3) || (r == 0 && c == 4) || (r == 1 && c == 1);
+            EXPECT_EQ(out[std::size_t(r * w + c)], nodata ? 0 : 181) << c << "," << r;
+        }
+}
+
+TEST(Hillshade, TinyGrids) {
+    std::vector<float> z(5, 1.0f);
+    // 2x2: nodata without edges (no 3x3 window), flat shade with them.
+    for (auto v : hillshade(terrain::HeightGrid::uniform(2, 2, z, 1, 1), {.compute_edges = false})) EXPECT_EQ(v, 0);
+    for (auto v : hillshade(terrain::HeightGrid::uniform(2, 2, z, 1, 1), {})) EXPECT_EQ(v, 181);
+    // A single row or column has no gradient across it: nodata either way.
+    for (auto v : hillshade(terrain::HeightGrid::uniform(5, 1, z, 1, 1), {})) EXPECT_EQ(v, 0);
+    for (auto v : hillshade(terrain::HeightGrid::uniform(1, 5, z, 1, 1), {})) EXPECT_EQ(v, 0);
 }
 
 TEST(Hillshade, ThreadCountDoesNotChangeTheResult) {

@@ -47,15 +47,37 @@ bool is_png(const std::string& path) {
     return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
 }
 
-// A fraction in [0, 1] (svf, sky_visible) as an 8-bit grey quick-look: 0 -> 1, 1 -> 255,
-// void (NaN) -> 0, so a picture can be looked at without a GIS.
+// A fraction in [0, 1] (svf, sky_visible) as an 8-bit grey quick-look, to look at without a
+// GIS: a linear stretch from the 1st to the 99th percentile of the valid values to grey 1..255
+// (void 0). On real terrain most of the DEM is nearly open (the median svf of the Grenoble DEM is
+// 0.99), so mapping 0..1 left the picture in the top half of the grey range with a fifth of it
+// pure white; the stretch gives the relief the whole range and is printed, and the GeoTIFF
+// output keeps the values themselves.
 void write_fraction_png(const std::string& path, const dem::Dem& dem, const float* data) {
-    std::vector<std::uint8_t> grey(std::size_t(dem.width) * dem.height);
-    for (std::size_t i = 0; i < grey.size(); ++i) {
+    const std::size_t n = std::size_t(dem.width) * dem.height;
+    std::vector<float> valid;
+    valid.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!std::isnan(data[i])) valid.push_back(std::clamp(data[i], 0.0f, 1.0f));
+    float lo = 0, hi = 1;
+    if (!valid.empty()) {
+        auto at = [&](double q) {
+            const auto k = std::size_t(q * double(valid.size() - 1));
+            std::nth_element(valid.begin(), valid.begin() + std::ptrdiff_t(k), valid.end());
+            return valid[k];
+        };
+        lo = at(0.01), hi = at(0.99);
+        if (!(hi > lo)) lo = std::max(0.0f, hi - 1e-3f), hi = std::min(1.0f, lo + 1e-3f);  // a flat DEM
+    }
+    std::vector<std::uint8_t> grey(n);
+    const float scale = 254.0f / (hi - lo);
+    for (std::size_t i = 0; i < n; ++i) {
         const float v = data[i];
-        grey[i] = std::isnan(v) ? 0 : std::uint8_t(1.5f + 254.0f * std::clamp(v, 0.0f, 1.0f));
+        grey[i] = std::isnan(v) ? 0 : std::uint8_t(1.5f + std::clamp((v - lo) * scale, 0.0f, 254.0f));
     }
     raster::write_u8_image(path, dem.width, dem.height, 1, grey.data(), nullptr);
+    std::printf("%s: grey 1..255 = %.4f..%.4f (the 1st to 99th percentile, stretched linearly; 0 = void)\n",
+                path.c_str(), lo, hi);
 }
 
 void write_raster(const std::string& path, const dem::Dem& dem, int bands, const float* data,
@@ -104,13 +126,22 @@ void run_visibility(VisibilityOptions& o) {
     const visibility::HorizonSet& set = result.horizons;
 
     if (!o.horizons.empty()) {
+        // Bands in the user's order: azimuths clockwise from north, from the smallest (north
+        // itself when D is a multiple of 4), whatever order the sweep uses inside.
+        std::vector<int> order(std::size_t(set.directions));
+        for (int d = 0; d < set.directions; ++d) order[std::size_t(d)] = d;
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return visibility::user_azimuth_deg(a, set.directions) < visibility::user_azimuth_deg(b, set.directions);
+        });
+        const std::size_t plane_texels = set.texels();
         std::vector<float> deg(set.angle.size());
-        for (std::size_t i = 0; i < deg.size(); ++i) deg[i] = float(degrees(set.angle[i]));
         std::vector<std::string> names;
-        for (int d = 0; d < set.directions; ++d) {
+        for (std::size_t band = 0; band < order.size(); ++band) {
+            const float* plane = set.plane(order[band]);
+            for (std::size_t i = 0; i < plane_texels; ++i) deg[band * plane_texels + i] = float(degrees(plane[i]));
             char buf[96];
             std::snprintf(buf, sizeof buf, "horizon elevation (deg) toward azimuth %.4g deg clockwise from north",
-                          visibility::user_azimuth_deg(d, set.directions));
+                          visibility::user_azimuth_deg(order[band], set.directions));
             names.emplace_back(buf);
         }
         write_raster(o.horizons, dem, set.directions, deg.data(), names);
@@ -146,7 +177,8 @@ void add_visibility_command(CLI::App& root) {
         "Horizons per texel and azimuth, sky view factor, visible sky and (log-)SH visibility "
         "(docs/visibility.md). Void (nodata) texels neither block nor receive: their outputs are NaN.");
     add_dem_input_options(*cmd, o->dem, false);
-    cmd->add_option("--directions", o->horizon.directions, "Azimuths D (the first toward east, then counter-clockwise)")
+    cmd->add_option("--directions", o->horizon.directions,
+                    "Azimuths D, evenly spaced (--horizons bands: clockwise from north, from the smallest azimuth)")
         ->capture_default_str()
         ->check(CLI::Range(1, 4096));
     cmd->add_option("--method", o->method,
@@ -179,7 +211,9 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--svf", o->svf, "Write the sky view factor (1/pi) int V cos(theta) dw: float32 GeoTIFF (.tif) or 8-bit grey quick-look (.png)");
     cmd->add_option("--sky-visible", o->sky_visible,
                     "Write the visible sky fraction (1/2pi) int V dw: float32 GeoTIFF (.tif) or 8-bit grey quick-look (.png)");
-    cmd->add_option("--horizons", o->horizons, "Write the horizon elevation angles, D bands in degrees");
+    cmd->add_option("--horizons", o->horizons,
+                    "Write the horizon elevation angles, D bands in degrees, band 1 toward north (D a multiple of "
+                    "4), then clockwise; each band's description names its azimuth");
     cmd->add_option("--sh", o->sh, "Write the visibility SH (16 bands), exp of the log-SH with --exp-method");
     cmd->add_option("--log-sh", o->log_sh, "Write the log-SH visibility (16 bands)");
     cmd->add_option("--exp-method", o->exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")

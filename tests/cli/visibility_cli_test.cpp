@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -76,6 +77,39 @@ TEST_F(VisibilityCli, WritesGeoreferencedRasters) {
     EXPECT_GT(fs::file_size(sh), 8 * fs::file_size(svf));
 }
 
+// Horizon bands go clockwise from north (the user's azimuths), not in the sweep's order
+// (east, counter-clockwise): band 1 faces north, band 5 east, band 13 west for D = 16.
+TEST_F(VisibilityCli, HorizonBandsGoClockwiseFromNorth) {
+    const fs::path hz = dir_ / "hz_order.tif";
+    ASSERT_EQ(run(kWindow + " --directions 16 --horizons " + hz.string()).exit_code, 0);
+    const Result info = ts::cli_test::run("gdalinfo " + hz.string());
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    for (int band = 1; band <= 16; ++band) {
+        char want[96];
+        std::snprintf(want, sizeof want, "toward azimuth %g deg clockwise from north", 22.5 * (band - 1));
+        const auto at = info.out.find("Band " + std::to_string(band) + " ");
+        ASSERT_NE(at, std::string::npos) << band;
+        const auto next = info.out.find("Band " + std::to_string(band + 1) + " ", at);
+        EXPECT_NE(info.out.substr(at, next - at).find(want), std::string::npos) << "band " << band << ": " << want;
+    }
+    // The values follow the labels: a receiver on the west edge sees no terrain to the west
+    // (horizon 0 exactly) but does to the east.
+    auto column0 = [&](int band) {
+        const fs::path one = dir_ / ("hz_band" + std::to_string(band) + ".tif");
+        EXPECT_EQ(ts::cli_test::run("gdal_translate -q -b " + std::to_string(band) + " " + hz.string() + " " + one.string()).exit_code, 0);
+        const auto d = ts::dem::read_dem(one);
+        std::vector<float> col;
+        for (int r = 0; r < d.height; ++r) col.push_back(d.at(0, r));
+        return col;
+    };
+    int west_zero = 0, east_zero = 0;
+    for (float v : column0(13)) west_zero += v == 0.0f;
+    const std::vector<float> east = column0(5);
+    for (float v : east) east_zero += v == 0.0f;
+    EXPECT_EQ(west_zero, 121);
+    EXPECT_LT(east_zero, 121 / 2);
+}
+
 TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
     const fs::path a = dir_ / "exact.tif", b = dir_ / "ray.tif";
     ASSERT_EQ(run(kWindow + " --directions 16 --method exact --svf " + a.string()).exit_code, 0);
@@ -90,10 +124,17 @@ TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
     EXPECT_LT(std::sqrt(se / n), 3e-3);
 }
 
-TEST_F(VisibilityCli, PngQuickLookMatchesTheFloatRaster) {
+TEST_F(VisibilityCli, PngQuickLookIsTheFloatRasterStretched) {
     const fs::path tif = dir_ / "svf.tif", png = dir_ / "svf.png";
     ASSERT_EQ(run(kWindow + " --directions 8 --svf " + tif.string()).exit_code, 0);
-    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + png.string()).exit_code, 0);
+    const Result r = run(kWindow + " --directions 8 --svf " + png.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // The stretch is printed: "...: grey 1..255 = LO..HI (the 1st to 99th percentile ...".
+    const auto at = r.out.find("grey 1..255 = ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    double lo = 0, hi = 0;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + at, "grey 1..255 = %lf..%lf", &lo, &hi), 2) << r.out;
+    ASSERT_LT(lo, hi);
     const auto ref = ts::dem::read_dem(tif);
     auto in = OIIO::ImageInput::open(png.string());
     ASSERT_TRUE(in);
@@ -101,17 +142,25 @@ TEST_F(VisibilityCli, PngQuickLookMatchesTheFloatRaster) {
     ASSERT_EQ(in->spec().nchannels, 1);
     std::vector<unsigned char> grey(std::size_t(ref.width) * ref.height);
     ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, grey.data()));
-    // Grey level g encodes svf as (g - 1) / 254: within half a level of the float value.
-    for (int r = 0; r < ref.height; ++r)
+    // Grey g = 1 + 254 (svf - lo) / (hi - lo), clamped: within half a level (lo and hi are
+    // printed to 4 decimals, hence the allowance).
+    long white = 0, valid = 0;
+    int darkest = 255;
+    for (int row = 0; row < ref.height; ++row)
         for (int c = 0; c < ref.width; ++c) {
-            const int g = grey[std::size_t(r) * ref.width + c];
-            if (std::isnan(ref.at(c, r))) ASSERT_EQ(g, 0);  // void
-            else ASSERT_NEAR((g - 1) / 254.0, ref.at(c, r), 0.5 / 254 + 1e-6);
+            const int g = grey[std::size_t(row) * ref.width + c];
+            const float v = ref.at(c, row);
+            if (std::isnan(v)) {
+                ASSERT_EQ(g, 0);  // void
+                continue;
+            }
+            const double want = 1 + 254 * std::clamp((v - lo) / (hi - lo), 0.0, 1.0);
+            ASSERT_NEAR(g, want, 0.5 + 254 * 1e-4 / (hi - lo) + 1e-6) << c << "," << row << " svf " << v;
+            ++valid, white += g == 255, darkest = std::min(darkest, g);
         }
-    // Multi-band outputs have no PNG form: a clear error, not a silent first band.
-    const Result bad = run(kWindow + " --directions 8 --sh " + (dir_ / "sh.png").string());
-    EXPECT_EQ(bad.exit_code, 2);
-    EXPECT_NE(bad.err.find("PNG holds only"), std::string::npos) << bad.err;
+    // The whole grey range is used, and few pixels are pure white (the 1% above the 99th percentile).
+    EXPECT_LE(darkest, 2);
+    EXPECT_LT(double(white) / double(valid), 0.02);
 }
 
 TEST_F(VisibilityCli, VoidReceiverIsNaN) {

@@ -57,6 +57,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_option("--albedo", a.albedo,
                    "RGB orthophoto GeoTIFF (8-bit sRGB) giving the albedo of every land texel it covers");
+    cmd.add_option("--albedo-contrast", a.albedo_contrast,
+                   "How much of the land albedos' brightness contrast to keep, 0..1: 1 = physical albedos (a "
+                   "land-cover map under soft light), 0 = equally bright land; snow and water keep theirs")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     cmd.add_option("--directions", a.directions, "Horizon azimuths for the sky visibility (exact sweep)")
         ->capture_default_str()
         ->check(CLI::Range(4, 1024));
@@ -126,6 +131,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
         o.view = render::ViewKind::extent;
     }
     o.materials = a.materials;
+    o.albedo_contrast = a.albedo_contrast;
     o.albedo = a.albedo;
     o.renderer.directions = a.directions;
     o.renderer.curvature = !a.no_curvature;

@@ -25,6 +25,7 @@ struct RenderArgs {
     std::string exposure = "auto";
     std::string materials = "rule";
     std::string albedo;
+    double albedo_contrast = render::kDefaultAlbedoContrast;
     int directions = 32;
     bool no_curvature = false;
     DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)

@@ -164,6 +164,23 @@ MaterialRaster landcover_materials(const terrain::HeightGrid& g, const NormalFie
     return m;
 }
 
+void compress_albedo_contrast(MaterialRaster& m, double contrast) {
+    if (contrast >= 1.0) return;
+    const double c = std::max(0.0, contrast);
+    const double log_ref = std::log(kAlbedoReferenceLuminance);
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        if (m.water[i]) continue;
+        const double r = m.albedo_r[i], g = m.albedo_g[i], b = m.albedo_b[i];
+        const double lum = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+        if (!(lum > 0.0)) continue;
+        // Snow and other bright surfaces keep theirs; a smooth hand-over, no edge at a threshold.
+        const double keep = smoothstep(0.3, 0.5, lum);
+        const double exponent = c + (1.0 - c) * keep;  // 1 = unchanged
+        const double scale = std::exp((1.0 - exponent) * (log_ref - std::log(lum)));
+        m.albedo_r[i] = float(r * scale), m.albedo_g[i] = float(g * scale), m.albedo_b[i] = float(b * scale);
+    }
+}
+
 void apply_albedo(MaterialRaster& m, const std::vector<glm::vec3>& a) {
     const std::size_t n = std::min(a.size(), m.size());
     for (std::size_t i = 0; i < n; ++i) {

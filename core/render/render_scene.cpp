@@ -47,6 +47,7 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
                                         options_.rule);
     }
     if (!options_.albedo.empty()) apply_albedo(materials, read_orthophoto_albedo(options_.albedo, dem_.georef));
+    compress_albedo_contrast(materials, options_.albedo_contrast);
 
     // The target first: a camera below the terrain or an extent off the DEM is found before
     // the visibility is computed.

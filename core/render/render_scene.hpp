@@ -39,9 +39,14 @@ geo::Georef extent_georef(const ExtentRequest& extent, const geo::Georef& dem_ge
 // any CRS (SceneOptions::extent); perspective: a camera.
 enum class ViewKind { map, extent, perspective };
 
+// How much of the land albedos' luminance contrast a picture keeps (material.hpp,
+// compress_albedo_contrast): half, in log terms, so the relief reads first (docs/rendering.md).
+inline constexpr double kDefaultAlbedoContrast = 0.5;
+
 struct SceneOptions {
     std::string materials = "rule";  // "rule" or a WorldCover GeoTIFF
     std::string albedo;              // RGB orthophoto GeoTIFF, or empty
+    double albedo_contrast = kDefaultAlbedoContrast;  // compress_albedo_contrast (material.hpp)
     MaterialRule rule;
     RendererOptions renderer;
     light::SkyOptions sky;

@@ -76,3 +76,47 @@ TEST(Material, WorldCoverCodesAndOrthophoto) {
 
 }  // namespace
 }  // namespace ts::render
+
+namespace ts::render {
+namespace {
+
+MaterialRaster one_texel_each(const std::vector<glm::vec3>& albedos, const std::vector<std::uint8_t>& water) {
+    MaterialRaster m;
+    for (std::size_t i = 0; i < albedos.size(); ++i) {
+        m.albedo_r.push_back(albedos[i].x), m.albedo_g.push_back(albedos[i].y), m.albedo_b.push_back(albedos[i].z);
+        m.ks.push_back(0), m.alpha.push_back(1), m.water.push_back(water[i]), m.surface.push_back(Surface::grassland);
+    }
+    return m;
+}
+
+double lum(const MaterialRaster& m, std::size_t i) {
+    return 0.2126 * m.albedo_r[i] + 0.7152 * m.albedo_g[i] + 0.0722 * m.albedo_b[i];
+}
+
+// L' = L0^(1-c) L^c with the hue kept; 1 changes nothing; snow and water keep theirs.
+TEST(AlbedoContrast, PullsLandLuminanceTowardsTheReferenceInLogSpace) {
+    const std::vector<glm::vec3> albedos = {{0.035f, 0.060f, 0.028f}, {0.130f, 0.125f, 0.075f},
+                                            {0.8f, 0.83f, 0.88f}, {0.02f, 0.02f, 0.02f}};
+    const MaterialRaster before = one_texel_each(albedos, {0, 0, 0, 1});
+    MaterialRaster m = before;
+    compress_albedo_contrast(m, 1.0);
+    EXPECT_EQ(m.albedo_g, before.albedo_g);
+    for (double c : {0.0, 0.25, 0.5}) {
+        m = before;
+        compress_albedo_contrast(m, c);
+        for (std::size_t i : {std::size_t(0), std::size_t(1)}) {
+            const double want = std::pow(kAlbedoReferenceLuminance, 1 - c) * std::pow(lum(before, i), c);
+            EXPECT_NEAR(lum(m, i), want, 1e-6) << c << " " << i;
+            EXPECT_NEAR(m.albedo_r[i] / m.albedo_g[i], before.albedo_r[i] / before.albedo_g[i], 1e-5);  // hue kept
+        }
+        EXPECT_FLOAT_EQ(m.albedo_g[2], before.albedo_g[2]);  // snow
+        EXPECT_FLOAT_EQ(m.albedo_g[3], before.albedo_g[3]);  // water
+    }
+    // The forest/fields ratio, 2.5 physically, is its square root at c = 0.5.
+    m = before;
+    compress_albedo_contrast(m, 0.5);
+    EXPECT_NEAR(lum(m, 1) / lum(m, 0), std::sqrt(lum(before, 1) / lum(before, 0)), 1e-5);
+}
+
+}  // namespace
+}  // namespace ts::render

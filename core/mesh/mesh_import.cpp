@@ -127,7 +127,13 @@ TriangleMesh import_mesh(const fs::path& file, const ImportOptions& options) {
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);  // FBX is in centimetres by default
     const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
-    if (!scene) throw input_error(shown, "not a readable mesh (" + one_line(importer.GetErrorString()) + ")");
+    if (!scene) {
+        const std::string why = one_line(importer.GetErrorString());
+        // The primitive-type sort removes point and line meshes and then complains of none left.
+        if (why.find("No meshes remaining") != std::string::npos)
+            throw input_error(shown, "no triangles (only points or lines)");
+        throw input_error(shown, "not a readable mesh (" + why + ")");
+    }
     if (!scene->mRootNode || scene->mNumMeshes == 0) throw input_error(shown, "no triangles (no mesh in the file)");
 
     UpAxis up = options.up;

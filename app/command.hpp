@@ -20,4 +20,7 @@ void add_sun_command(CLI::App& root);
 void add_render_command(CLI::App& root);
 void add_relight_command(CLI::App& root);
 
+// `terrashade spheres`: the bounding sphere decomposition of a mesh (app/spheres_command.cpp).
+void add_spheres_command(CLI::App& root);
+
 }  // namespace ts::app

@@ -16,5 +16,7 @@ void add_bench_render_command(CLI::App& bench);
 void add_bench_transfer_command(CLI::App& bench);
 // `terrashade bench sun` (bench_sun_command.cpp): sun visibility, sweep vs exact.
 void add_bench_sun_command(CLI::App& bench);
+// `terrashade bench spheres` (bench_spheres_command.cpp): sphere decomposition vs count.
+void add_bench_spheres_command(CLI::App& bench);
 
 }  // namespace ts::app

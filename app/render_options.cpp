@@ -57,6 +57,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_option("--albedo", a.albedo,
                    "RGB orthophoto GeoTIFF (8-bit sRGB) giving the albedo of every land texel it covers");
+    cmd.add_option("--dither", a.dither,
+                   "Dither the 8-bit output against banding: auto (perspective views, whose skies are smooth "
+                   "gradients), on, off")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "on", "off"}));
     cmd.add_option("--albedo-contrast", a.albedo_contrast,
                    "How much of the land albedos' brightness contrast to keep, 0..1: 1 = physical albedos (a "
                    "land-cover map under soft light), 0 = equally bright land; snow and water keep theirs")
@@ -144,7 +149,11 @@ render::SceneOptions scene_options(const RenderArgs& a) {
 }
 
 render::Exposure exposure_of(const RenderArgs& a) {
-    return render::parse_exposure(a.exposure);
+    render::Exposure e = render::parse_exposure(a.exposure);
+    // auto: perspective views, whose skies are smooth gradients; maps stay undithered so that
+    // the same ground gives the same bytes in every crop, extent and tile.
+    e.dither = a.dither == "on" || (a.dither == "auto" && a.view == "perspective");
+    return e;
 }
 
 }  // namespace ts::app

@@ -26,6 +26,7 @@ struct RenderArgs {
     std::string materials = "rule";
     std::string albedo;
     double albedo_contrast = render::kDefaultAlbedoContrast;
+    std::string dither = "auto";
     int directions = 32;
     bool no_curvature = false;
     DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)

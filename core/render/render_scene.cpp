@@ -158,7 +158,8 @@ double write_image(const std::string& path, const LinearImage& image, const Expo
         return 1.0;
     }
     const double scale = image_exposure_scale(image, exposure);
-    std::vector<std::uint8_t> bytes = tone_map_to_srgb8(image.rgb.data(), image.rgb.size(), scale);
+    std::vector<std::uint8_t> bytes =
+        tone_map_to_srgb8(image.rgb.data(), image.rgb.size(), scale, {0, 0, 0}, exposure.dither ? image.width : 0);
     if (rgba) {
         std::vector<std::uint8_t> with_alpha(image.rgb.size() * 4);
         for (std::size_t k = 0; k < image.rgb.size(); ++k) {

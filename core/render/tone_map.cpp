@@ -115,6 +115,9 @@ Srgb8Encoder::Srgb8Encoder() {
             if (k + 1 <= 255 && up[std::size_t(k + 1)] < end) return;  // two changes in one step
         }
     }
+    value_.resize(kSteps + 1);
+    for (std::size_t i = 0; i <= kSteps; ++i)
+        value_[i] = 255.0f * raster::srgb_oetf(filmic(float_of(std::uint32_t((kFirst + i) << kShift))));
     tabulated_ = true;
 }
 
@@ -206,19 +209,56 @@ void Srgb8Encoder::encode_rgb(const glm::vec3* rgb, std::size_t count, float sca
     }
 }
 
+void Srgb8Encoder::encode_rgb_dithered(const glm::vec3* rgb, std::size_t count, int width, float scale,
+                                       std::array<std::uint8_t, 3> nan_colour, std::uint8_t* out) const {
+    if (!tabulated_ || width <= 0) {
+        encode_rgb(rgb, count, scale, nan_colour, out);
+        return;
+    }
+    constexpr std::uint32_t kStepMask = (1u << kShift) - 1;
+    const float* value = value_.data();
+    auto code_value = [value](float x) -> float {  // 255 srgb_oetf(filmic(x)), interpolated
+        if (!(x >= kLow)) return 0.0f;
+        if (x >= kHigh) return 255.0f;
+        std::uint32_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        const std::size_t i = (bits >> kShift) - kFirst;
+        const float t = float(bits & kStepMask) * (1.0f / float(kStepMask + 1));
+        return value[i] + (value[i + 1] - value[i]) * t;
+    };
+    for (std::size_t k = 0; k < count; ++k, out += 3) {
+        const glm::vec3 c = rgb[k];
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+            out[0] = nan_colour[0], out[1] = nan_colour[1], out[2] = nan_colour[2];
+            continue;
+        }
+        const float px = float(k % std::size_t(width)), py = float(k / std::size_t(width));
+        const float f = 0.06711056f * px + 0.00583715f * py;
+        const float g = 52.9829189f * (f - std::floor(f));
+        const float d = (g - std::floor(g)) - 0.5f;
+        for (int ch = 0; ch < 3; ++ch) {
+            const float v = code_value(scale * c[ch]) + 0.5f + d;
+            out[ch] = std::uint8_t(std::clamp(std::floor(v), 0.0f, 255.0f));
+        }
+    }
+}
+
 const Srgb8Encoder& shared_srgb8_table() {
     static const Srgb8Encoder table;
     return table;
 }
 
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,
-                                            std::array<std::uint8_t, 3> nan_colour) {
+                                            std::array<std::uint8_t, 3> nan_colour, int dither_width) {
     std::vector<std::uint8_t> out(count * 3);
     // The table is built once per process (a frame sequence would rebuild it per frame), and
     // not at all for small pictures, where building it would cost more than it saves.
     static const Srgb8Encoder direct(Srgb8Encoder::direct);
     const Srgb8Encoder& encoder = count >= 16384 ? shared_srgb8_table() : direct;
-    encoder.encode_rgb(rgb, count, float(scale), nan_colour, out.data());
+    if (dither_width > 0)
+        shared_srgb8_table().encode_rgb_dithered(rgb, count, dither_width, float(scale), nan_colour, out.data());
+    else
+        encoder.encode_rgb(rgb, count, float(scale), nan_colour, out.data());
     return out;
 }
 

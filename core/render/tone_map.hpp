@@ -24,6 +24,8 @@ struct Exposure {
     bool automatic = true;
     double ev100 = 15.0;   // used when !automatic
     double key = 0.18;     // auto: where the log-average luminance lands
+    // Dither the 8-bit codes (encode_rgb_dithered) against banding in smooth gradients (skies).
+    bool dither = false;
 };
 // "auto" or a number (EV100, -10..30). Throws ts::InputError otherwise.
 Exposure parse_exposure(std::string_view text);
@@ -84,6 +86,16 @@ public:
     void encode_rgb(const glm::vec3* rgb, std::size_t count, float scale, std::array<std::uint8_t, 3> nan_colour,
                     std::uint8_t* out) const;
 
+    // The same with dither, for a picture `width` pixels wide: each channel's code is
+    // floor(v + 0.5 + d) with v the exact code value 255 srgb_oetf(filmic(x)) before rounding
+    // (interpolated in a table of v at the steps, to ~1e-3 of a code) and d in [-0.5, 0.5) from
+    // interleaved gradient noise at the pixel (Jimenez 2014: frac(52.9829189 frac(0.06711056 i +
+    // 0.00583715 j))), a fixed pattern of the pixel position, so a picture is reproducible and
+    // smooth gradients turn into fine grain instead of 8-bit bands. A code is always one of the
+    // two nearest v, and their mean over the pattern is v.
+    void encode_rgb_dithered(const glm::vec3* rgb, std::size_t count, int width, float scale,
+                             std::array<std::uint8_t, 3> nan_colour, std::uint8_t* out) const;
+
 private:
     std::size_t encode_rgb_avx2(const glm::vec3* rgb, std::size_t count, float scale, std::uint8_t* out) const;
 
@@ -95,13 +107,16 @@ private:
     bool tabulated_ = false;
     std::vector<std::uint8_t> code_;
     std::vector<float> step_;
+    std::vector<float> value_;  // 255 srgb_oetf(filmic(x)) at each step's start (kSteps + 1)
 };
 
 // A tabulated Srgb8Encoder built on first use and shared by every thread (it is read-only).
 const Srgb8Encoder& shared_srgb8_table();
 
 // rgb (linear, count pixels) -> 8-bit sRGB RGB interleaved. NaN pixels become `nan_colour`.
+// With dither_width > 0: dithered (Srgb8Encoder::encode_rgb_dithered) for a picture that wide.
 std::vector<std::uint8_t> tone_map_to_srgb8(const glm::vec3* rgb, std::size_t count, double scale,
-                                            std::array<std::uint8_t, 3> nan_colour = {0, 0, 0});
+                                            std::array<std::uint8_t, 3> nan_colour = {0, 0, 0},
+                                            int dither_width = 0);
 
 }  // namespace ts::render

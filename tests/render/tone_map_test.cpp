@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/render/tone_map.hpp"
+#include "core/raster/srgb.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::render {
@@ -181,6 +182,38 @@ TEST(ToneMap, LargeImagesUseTheTable) {
                 ASSERT_EQ(b[3 * i + std::size_t(k)], want) << scale << " " << i << " " << k;
             }
     }
+}
+
+// Dither: every code is one of the two nearest to the exact value 255 oetf(filmic(x)), their
+// mean over a flat patch is that value (so a smooth gradient keeps its average instead of
+// stepping in bands), the pattern is fixed, and non-finite pixels still get the NaN colour.
+TEST(ToneMap, DitherKeepsTheMeanAndStaysWithinOneCode) {
+    const Srgb8Encoder& enc = shared_srgb8_table();
+    ASSERT_TRUE(enc.tabulated());
+    const int w = 64, h = 64;
+    for (float x : {0.01f, 0.05f, 0.1234f, 0.18f, 0.5f, 1.7f}) {
+        const std::vector<glm::vec3> px(std::size_t(w * h), glm::vec3(x));
+        std::vector<std::uint8_t> out(px.size() * 3), again(px.size() * 3);
+        enc.encode_rgb_dithered(px.data(), px.size(), w, 1.0f, {1, 2, 3}, out.data());
+        enc.encode_rgb_dithered(px.data(), px.size(), w, 1.0f, {1, 2, 3}, again.data());
+        EXPECT_EQ(out, again);
+        const double exact = 255.0 * raster::srgb_oetf(filmic(x));
+        double mean = 0;
+        for (std::uint8_t c : out) {
+            EXPECT_GE(c, std::floor(exact) - 1e-3) << x;
+            EXPECT_LE(c, std::ceil(exact) + 1e-3) << x;
+            mean += c;
+        }
+        mean /= double(out.size());
+        EXPECT_NEAR(mean, exact, 0.03) << x;
+    }
+    std::vector<glm::vec3> px(16, glm::vec3(0.2f));
+    px[5] = glm::vec3(NAN);
+    std::vector<std::uint8_t> out(px.size() * 3);
+    enc.encode_rgb_dithered(px.data(), px.size(), 4, 1.0f, {1, 2, 3}, out.data());
+    EXPECT_EQ(out[15], 1);
+    EXPECT_EQ(out[16], 2);
+    EXPECT_EQ(out[17], 3);
 }
 
 }  // namespace

@@ -84,11 +84,13 @@ const Camera* Scene::camera() const {
     return c ? &c->camera() : nullptr;
 }
 
-SunState Scene::sun_at(light::UtcTime time) const {
-    const glm::dvec2 centre = dem_.georef.pixel_to_lonlat(dem_.width * 0.5, dem_.height * 0.5);
+SunState Scene::sun_at(light::UtcTime time) const { return sun_at_dem_centre(dem_, time); }
+
+SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time) {
+    const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
     double mean = 0;
     std::size_t n = 0;
-    for (float z : dem_.z)
+    for (float z : dem.z)
         if (!std::isnan(z)) mean += z, ++n;
     light::SunPositionInput in;
     in.time = time;

@@ -16,5 +16,7 @@ void add_bench_render_command(CLI::App& bench);
 void add_bench_transfer_command(CLI::App& bench);
 // `terrashade bench sun` (bench_sun_command.cpp): sun visibility, sweep vs exact.
 void add_bench_sun_command(CLI::App& bench);
+// `terrashade bench tiles` (bench_tiles_command.cpp): tiles/s per style, and gdaldem + gdal2tiles.
+void add_bench_tiles_command(CLI::App& bench);
 
 }  // namespace ts::app

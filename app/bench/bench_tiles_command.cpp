@@ -2,6 +2,7 @@
 // levels included), and in the same run the classic pipeline, `gdaldem hillshade` then
 // `gdal2tiles.py`, as a ratio. The classic pipeline is skipped with a note when GDAL's tools
 // are not installed (scripts/setup.sh installs them). Figures: docs/tiles.md.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -31,6 +32,14 @@ struct BenchTilesArgs {
     bool keep = false;
 };
 
+// CPU seconds (user + system) of this process, or of its finished children: the machine may be
+// shared, so beside wall-clock rates the bench reports tiles per CPU-second.
+double cpu_seconds(int who) {
+    rusage u{};
+    getrusage(who, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 bool on_path(const std::string& tool) {
     return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
 }
@@ -53,19 +62,21 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     fs::create_directories(root);
     std::printf("bench tiles: %s, zooms %d-%d, %d-px tiles, %d threads\n", dem.source.c_str(), job.z0, job.z1,
                 job.tile_size, threads);
-    std::printf("%-17s %7s %9s %10s %9s %12s\n", "style", "tiles", "total_s", "tiles/s", "shade_s", "cut_tiles/s");
-    double hillshade_rate = 0;
+    std::printf("%-17s %7s %9s %10s %9s %12s %8s %13s\n", "style", "tiles", "total_s", "tiles/s", "shade_s",
+                "cut_tiles/s", "cpu_s", "tiles/cpu_s");
+    double hillshade_rate = 0, hillshade_cpu_rate = 0;
     for (const auto& name : a.styles) {
         job.shading.style = tiles::parse_tile_style(name);
         const fs::path out = root / name;
         tiles::XyzDirectory sink(out, tiles::describe_job(job), false, job.z0, job.z1);
         const Stopwatch watch;
+        const double cpu0 = cpu_seconds(RUSAGE_SELF);
         const tiles::TileExportStats s = tiles::export_tiles(dem, job, sink, nullptr);
-        const double total = watch.seconds();
+        const double total = watch.seconds(), cpu = cpu_seconds(RUSAGE_SELF) - cpu0;
         const double made = double(s.written + s.empty);
-        std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12.1f\n", name.c_str(), s.written, total, made / total,
-                    s.source_seconds, s.tile_seconds > 0 ? made / s.tile_seconds : 0.0);
-        if (job.shading.style == tiles::TileStyle::hillshade) hillshade_rate = made / total;
+        std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12.1f %8.3f %13.1f\n", name.c_str(), s.written, total, made / total,
+                    s.source_seconds, s.tile_seconds > 0 ? made / s.tile_seconds : 0.0, cpu, made / cpu);
+        if (job.shading.style == tiles::TileStyle::hillshade) hillshade_rate = made / total, hillshade_cpu_rate = made / cpu;
         std::fflush(stdout);
     }
     if (a.classic) {
@@ -78,6 +89,7 @@ void run_bench_tiles(const BenchTilesArgs& a) {
             const bool geographic = dem.georef.crs().is_geographic();
             const std::string dem_file = a.dem.files.front();
             const Stopwatch watch;
+            const double cpu0 = cpu_seconds(RUSAGE_CHILDREN);
             const std::string hs_cmd = "gdaldem hillshade -q -compute_edges " + std::string(geographic ? "-s 111120 " : "") +
                                        "'" + dem_file + "' '" + hs.string() + "'";
             const std::string tiles_cmd = "gdal2tiles.py -q -z " + std::to_string(job.z0) + "-" + std::to_string(job.z1) +
@@ -87,14 +99,16 @@ void run_bench_tiles(const BenchTilesArgs& a) {
             const bool ok = std::system(hs_cmd.c_str()) == 0;
             const double t_hs = watch.seconds() - t0;
             const bool ok2 = ok && std::system(tiles_cmd.c_str()) == 0;
-            const double total = watch.seconds();
+            const double total = watch.seconds(), cpu = cpu_seconds(RUSAGE_CHILDREN) - cpu0;
             if (!ok2) {
                 std::printf("classic: failed (%s)\n", ok ? "gdal2tiles.py" : "gdaldem");
             } else {
                 const std::size_t n = count_pngs(out);
-                std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12s\n", "classic(gdal)", n, total, n / total, t_hs, "-");
+                std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12s %8.3f %13.1f\n", "classic(gdal)", n, total, n / total,
+                            t_hs, "-", cpu, n / cpu);
                 if (hillshade_rate > 0)
-                    std::printf("hillshade vs classic: %.1fx the tiles per second\n", hillshade_rate / (n / total));
+                    std::printf("hillshade vs classic: %.1fx the tiles per second (wall), %.1fx per CPU-second\n",
+                                hillshade_rate / (n / total), hillshade_cpu_rate / (n / cpu));
             }
         }
     }

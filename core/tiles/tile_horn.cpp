@@ -53,27 +53,32 @@ void horn_hillshade(const TileFrame& f, const std::vector<float>& heights, doubl
                       });
 }
 
-std::uint8_t multidirectional_value(double dz_de, double dz_dn, double altitude_deg) {
-    // GDAL's x, y are -dz/dE and dz/dN here (its z-factor folded in).
+MultidirectionalLight::MultidirectionalLight(double altitude_deg) {
     const double alt = altitude_deg * kPi / 180.0;
+    sin127 = 127.0 * std::sin(alt), cos127 = 127.0 * std::cos(alt);
+    cos225_cos127 = std::cos(225.0 * kPi / 180.0) * cos127;
+    flat = 1.0 + 254.0 * std::sin(alt);
+}
+
+std::uint8_t multidirectional_value(double dz_de, double dz_dn, const MultidirectionalLight& l) {
+    // GDAL's x, y are -dz/dE and dz/dN here (its z-factor folded in).
     const double x = -dz_de, y = dz_dn;
     const double xx = x * x, yy = y * y, xx_plus_yy = xx + yy;
-    if (xx_plus_yy == 0.0) return std::uint8_t(std::lround(1.0 + 254.0 * std::sin(alt)));
-    const double s127 = 127.0 * std::sin(alt), c127 = 127.0 * std::cos(alt);
-    const double c225 = std::cos(225.0 * kPi / 180.0) * c127;
-    const double v225 = std::max(0.0, s127 + (x - y) * c225);
-    const double v270 = std::max(0.0, s127 - x * c127);
-    const double v315 = std::max(0.0, s127 + (x + y) * c225);
-    const double v360 = std::max(0.0, s127 - y * c127);
+    if (xx_plus_yy == 0.0) return std::uint8_t(l.flat + 0.5);
+    const double v225 = std::max(0.0, l.sin127 + (x - y) * l.cos225_cos127);
+    const double v270 = std::max(0.0, l.sin127 - x * l.cos127);
+    const double v315 = std::max(0.0, l.sin127 + (x + y) * l.cos225_cos127);
+    const double v360 = std::max(0.0, l.sin127 - y * l.cos127);
     const double w225 = 0.5 * xx_plus_yy - x * y, w315 = xx_plus_yy - w225;
     const double cang = ((w225 * v225 + xx * v270 + w315 * v315 + yy * v360) / xx_plus_yy) / std::sqrt(1.0 + xx_plus_yy);
-    return std::uint8_t(std::lround(std::min(255.0, 1.0 + cang)));
+    return std::uint8_t(std::min(255.0, 1.0 + cang) + 0.5);
 }
 
 void horn_multidirectional(const TileFrame& f, const std::vector<float>& heights, double vertical_scale,
                            const HornLight& light, const std::uint8_t* covered, std::uint8_t* out) {
+    const MultidirectionalLight l(light.altitude_deg);
     for_each_gradient(f, heights, vertical_scale, covered, out,
-                      [&](double e, double n) { return multidirectional_value(e, n, light.altitude_deg); });
+                      [&](double e, double n) { return multidirectional_value(e, n, l); });
 }
 
 }  // namespace ts::tiles

@@ -26,8 +26,13 @@ void horn_hillshade(const TileFrame& f, const std::vector<float>& heights, doubl
 void horn_multidirectional(const TileFrame& f, const std::vector<float>& heights, double vertical_scale,
                            const HornLight& light, const std::uint8_t* covered, std::uint8_t* out);
 
+// The light's constants of the multidirectional shade, once per tile.
+struct MultidirectionalLight {
+    explicit MultidirectionalLight(double altitude_deg);
+    double sin127, cos127, cos225_cos127, flat;
+};
 // One pixel of the multidirectional shade, 1..255, from gradients in m/m including the vertical
 // scale (exposed for tests).
-std::uint8_t multidirectional_value(double dz_de, double dz_dn, double altitude_deg);
+std::uint8_t multidirectional_value(double dz_de, double dz_dn, const MultidirectionalLight& light);
 
 }  // namespace ts::tiles

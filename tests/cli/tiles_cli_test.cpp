@@ -199,6 +199,33 @@ TEST(TilesCli, HillshadeRowsEqualGdaldemOnTheTilePixels) {
     }
 }
 
+TEST(TilesCli, MultidirectionalRowEqualsGdaldemMultidirectional) {
+    const fs::path d = temp_dir("gdaldem_md");
+    const auto r = run(tiles_cmd(kAnatolia, "--zoom 12 --style multidirectional --debug-heights 12/2508/1555", d / "t"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Pixels tile = read_png(d / "t" / "12" / "2508" / "1555.png");
+    ASSERT_EQ(tile.width, 256);
+    const int j = 128;
+    const double res = 2 * 20037508.342789244 / (256.0 * 4096);
+    const double y = 20037508.342789244 - (1555 * 256 + j + 0.5) * res;
+    char zs[64];
+    std::snprintf(zs, sizeof zs, "%.17g", std::cosh(y / 6378137.0));
+    const fs::path out = d / "gd.tif";
+    ASSERT_EQ(run("gdaldem hillshade -q -multidirectional -alt 45 -z " + std::string(zs) + " " +
+                  quote((d / "t" / "12-2508-1555-heights.tif").string()) + " " + quote(out.string()))
+                  .exit_code,
+              0);
+    const Pixels gd = read_png(out);
+    ASSERT_EQ(gd.width, 258);
+    int equal = 0;
+    for (int i = 0; i < 256; ++i) {
+        const int a = tile.at(i, j, 0), b = gd.at(i + 1, j + 1, 0);
+        EXPECT_LE(std::abs(a - b), 1) << "col " << i;
+        equal += a == b;
+    }
+    EXPECT_GE(equal, 250);
+}
+
 TEST(TilesCli, MbtilesSchemaMetadataAndTmsRows) {
     const fs::path d = temp_dir("mbtiles");
     ASSERT_EQ(run(tiles_cmd(kGrenoble, "--zoom 8-10 --style hillshade", d / "t.mbtiles")).exit_code, 0);

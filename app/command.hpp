@@ -19,6 +19,8 @@ void add_sun_command(CLI::App& root);
 // `terrashade render` and `terrashade relight` (app/render_command.cpp, app/relight_command.cpp).
 void add_render_command(CLI::App& root);
 void add_relight_command(CLI::App& root);
+// `terrashade tiles`: Web Mercator map tiles, XYZ or MBTiles (app/tiles_command.cpp).
+void add_tiles_command(CLI::App& root);
 
 // `terrashade spheres`: the bounding sphere decomposition of a mesh (app/spheres_command.cpp).
 void add_spheres_command(CLI::App& root);

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     ts::app::add_render_command(root);
     ts::app::add_relight_command(root);
     ts::app::add_spheres_command(root);
+    ts::app::add_tiles_command(root);
 #ifdef TERRASHADE_HAS_GPU
     ts::app::add_devices_command(root);
 #endif

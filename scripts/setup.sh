@@ -30,6 +30,7 @@ BUILD_PKGS=(
 # Test oracles, headless display and charting: never linked into terrashade.
 TEST_PKGS=(
   gdal-bin                  # gdalinfo / gdalwarp / gdaldem as test oracles
+  python3-gdal              # gdal2tiles.py: the classic tile pipeline `bench tiles` compares with
   saga                      # SAGA sky-view factor as a benchmark baseline
   xvfb xauth                # window tests
   python3-matplotlib python3-numpy  # charts in docs/

@@ -118,6 +118,7 @@ void add_bench_command(CLI::App& root) {
     add_bench_transfer_command(*bench);
     add_bench_sun_command(*bench);
     add_bench_spheres_command(*bench);
+    add_bench_tiles_command(*bench);
     // Further areas: add_bench_<area>_command(*bench); declared in app/bench/bench_command.hpp.
 }
 

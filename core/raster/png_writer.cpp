@@ -108,48 +108,38 @@ void put_u32(std::uint8_t* p, std::uint32_t v) {
     p[0] = std::uint8_t(v >> 24), p[1] = std::uint8_t(v >> 16), p[2] = std::uint8_t(v >> 8), p[3] = std::uint8_t(v);
 }
 
-class ChunkWriter {
-public:
-    explicit ChunkWriter(std::FILE* file) : file_(file) {}
-    void raw(const void* data, std::size_t n) { ok_ = ok_ && std::fwrite(data, 1, n, file_) == n; }
-    // length, type, data, CRC-32 of type + data (PNG specification, section 5.3)
-    void chunk(const char (&type)[5], const std::uint8_t* data, std::size_t n) {
-        std::uint8_t head[8];
-        put_u32(head, std::uint32_t(n));
-        std::copy(type, type + 4, head + 4);
-        std::uint8_t crc[4];
-        std::uint32_t sum = libdeflate_crc32(0, head + 4, 4);
-        if (n) sum = libdeflate_crc32(sum, data, n);  // (a null buffer would restart the sum)
-        put_u32(crc, sum);
-        raw(head, 8);
-        if (n) raw(data, n);
-        raw(crc, 4);
-    }
-    bool ok() const { return ok_; }
-
-private:
-    std::FILE* file_;
-    bool ok_ = true;
-};
+// Appends one chunk: length, type, data, CRC-32 of type + data (PNG specification, section 5.3).
+void append_chunk(std::vector<std::uint8_t>& out, const char (&type)[5], const std::uint8_t* data, std::size_t n) {
+    std::uint8_t head[8];
+    put_u32(head, std::uint32_t(n));
+    std::copy(type, type + 4, head + 4);
+    std::uint8_t crc[4];
+    std::uint32_t sum = libdeflate_crc32(0, head + 4, 4);
+    if (n) sum = libdeflate_crc32(sum, data, n);  // (a null buffer would restart the sum)
+    put_u32(crc, sum);
+    out.insert(out.end(), head, head + 8);
+    if (n) out.insert(out.end(), data, data + n);
+    out.insert(out.end(), crc, crc + 4);
+}
 
 }  // namespace
 
-void write_png(const std::filesystem::path& file, const std::filesystem::path& shown_path, int width, int height,
-               int channels, const std::uint8_t* data, const PngEncoding& encoding) {
+std::vector<std::uint8_t> encode_png(int width, int height, int channels, const std::uint8_t* data,
+                                     const PngEncoding& encoding, const std::string& shown_path) {
     std::uint8_t colour_type = 0;
     switch (channels) {
         case 1: colour_type = 0; break;  // greyscale
+        case 2: colour_type = 4; break;  // greyscale with alpha
         case 3: colour_type = 2; break;  // truecolour
         case 4: colour_type = 6; break;  // truecolour with alpha
-        default: throw input_error(shown_path.string(), "a PNG has 1, 3 or 4 channels, not " + std::to_string(channels));
+        default: throw input_error(shown_path, "a PNG has 1 to 4 channels, not " + std::to_string(channels));
     }
     if (encoding.level < 0 || encoding.level > max_level(encoding.deflater))
-        throw input_error(shown_path.string(), "PNG compression level must be 0.." +
+        throw input_error(shown_path, "PNG compression level must be 0.." +
                                                    std::to_string(max_level(encoding.deflater)) + " with " +
                                                    (encoding.deflater == Deflater::isal ? "ISA-L" : "libdeflate"));
     if (width <= 0 || height <= 0 || width > 0x7fffffff / channels)
-        throw input_error(shown_path.string(), "cannot write a " + std::to_string(width) + "x" +
-                                                   std::to_string(height) + " PNG");
+        throw input_error(shown_path, "cannot write a " + std::to_string(width) + "x" + std::to_string(height) + " PNG");
 
     const Picture p{width, height, std::size_t(channels), std::size_t(width) * std::size_t(channels), data};
     const std::vector<std::uint8_t> zero_row(p.row_bytes, 0);
@@ -160,7 +150,7 @@ void write_png(const std::filesystem::path& file, const std::filesystem::path& s
     Bytes stream(zlib_bound(filtered.size()));
     const std::size_t stream_size = zlib_compress(encoding.deflater, encoding.level, filtered.data(),
                                                   filtered.size(), stream.data(), stream.size());
-    if (stream_size == 0) throw input_error(shown_path.string(), "writing PNG failed: compression failed");
+    if (stream_size == 0) throw input_error(shown_path, "writing PNG failed: compression failed");
 
     std::uint8_t ihdr[13];
     put_u32(ihdr, std::uint32_t(width));
@@ -169,19 +159,27 @@ void write_png(const std::filesystem::path& file, const std::filesystem::path& s
     ihdr[9] = colour_type;
     ihdr[10] = ihdr[11] = ihdr[12] = 0;  // deflate, adaptive filtering (per-row filter byte), no interlace
 
-    std::FILE* f = std::fopen(file.c_str(), "wb");
-    if (!f) throw input_error(shown_path.string(), "writing PNG failed: cannot open the file");
-    ChunkWriter out(f);
+    std::vector<std::uint8_t> out;
+    out.reserve(stream_size + 64);
     static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    out.raw(kSignature, sizeof kSignature);
-    out.chunk("IHDR", ihdr, sizeof ihdr);
+    out.insert(out.end(), kSignature, kSignature + sizeof kSignature);
+    append_chunk(out, "IHDR", ihdr, sizeof ihdr);
     // A chunk holds at most 2^31 - 1 bytes; decoders join consecutive IDATs into one stream.
     constexpr std::size_t kMaxIdat = std::size_t(1) << 30;
     for (std::size_t at = 0; at < stream_size; at += kMaxIdat)
-        out.chunk("IDAT", stream.data() + at, std::min(kMaxIdat, stream_size - at));
-    out.chunk("IEND", nullptr, 0);
+        append_chunk(out, "IDAT", stream.data() + at, std::min(kMaxIdat, stream_size - at));
+    append_chunk(out, "IEND", nullptr, 0);
+    return out;
+}
+
+void write_png(const std::filesystem::path& file, const std::filesystem::path& shown_path, int width, int height,
+               int channels, const std::uint8_t* data, const PngEncoding& encoding) {
+    const std::vector<std::uint8_t> png = encode_png(width, height, channels, data, encoding, shown_path.string());
+    std::FILE* f = std::fopen(file.c_str(), "wb");
+    if (!f) throw input_error(shown_path.string(), "writing PNG failed: cannot open the file");
+    const bool written = std::fwrite(png.data(), 1, png.size(), f) == png.size();
     const bool closed = std::fclose(f) == 0;
-    if (!out.ok() || !closed)
+    if (!written || !closed)
         throw input_error(shown_path.string(), "writing PNG failed: cannot write the file (disk full?)");
 }
 

@@ -14,6 +14,8 @@
 // whole buffers beside the caller's pixels (the deflater compresses a buffer at once).
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "core/raster/zlib_stream.hpp"
 
@@ -45,7 +47,15 @@ struct PngEncoding {
     PngFilter filter = PngFilter::trial;
 };
 
-// Writes width x height pixels of 1 (grey), 3 (RGB) or 4 (RGBA) interleaved 8-bit channels,
+// The PNG file's bytes for width x height pixels of 1 (grey), 2 (grey + alpha), 3 (RGB) or 4
+// (RGBA) interleaved 8-bit channels, row-major from the top row. Deterministic: the same pixels
+// and encoding give the same bytes on any thread of one machine (map tiles and their resume rely
+// on it; ISA-L picks its kernels by CPU model, libdeflate's output does not depend on it). Throws
+// ts::InputError naming `shown_path` on bad arguments.
+std::vector<std::uint8_t> encode_png(int width, int height, int channels, const std::uint8_t* data,
+                                     const PngEncoding& encoding = {}, const std::string& shown_path = "PNG");
+
+// Writes width x height pixels of 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA) interleaved 8-bit channels,
 // row-major from the top row. Not atomic by itself: callers go through write_atomically.
 // Throws ts::InputError naming `shown_path` on failure.
 void write_png(const std::filesystem::path& file, const std::filesystem::path& shown_path, int width, int height,

@@ -105,7 +105,9 @@ SunState sun_at(const SunSite& site, light::UtcTime time) {
     return {p.azimuth_deg, p.elevation_deg};
 }
 
-SunState Scene::sun_at(light::UtcTime time) const { return render::sun_at(sun_site(dem_), time); }
+SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time) { return sun_at(sun_site(dem), time); }
+
+SunState Scene::sun_at(light::UtcTime time) const { return sun_at_dem_centre(dem_, time); }
 
 void Scene::render(const SunState& sun, LinearImage& image) {
     const glm::dvec3 s = sun_direction(sun);

@@ -107,6 +107,9 @@ private:
     std::vector<glm::vec3> texel_radiance_;
 };
 
+// Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.
+SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time);
+
 // Writes a picture by extension: .png / .tif / .tiff (8-bit sRGB after exposure and the
 // filmic curve; a .tif of a map view is georeferenced with `georef`, whose size may differ from
 // the image's: it is scaled), .exr (linear, no tone mapping). With alpha: RGBA. Atomic.

@@ -208,8 +208,8 @@ TEST(PngWriter, BadArgumentsThrowNamingTheFile) {
     TempDir dir;
     const std::vector<std::uint8_t> px(16, 0);
     try {
-        raster::write_png(dir.path / "x.png", "shown.png", 2, 2, 2, px.data());
-        FAIL() << "2 channels accepted";
+        raster::write_png(dir.path / "x.png", "shown.png", 2, 2, 5, px.data());
+        FAIL() << "5 channels accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("shown.png"), std::string::npos) << e.what();
     }
@@ -220,6 +220,30 @@ TEST(PngWriter, BadArgumentsThrowNamingTheFile) {
     e.level = 13;
     EXPECT_THROW(raster::write_png(dir.path / "x.png", "x.png", 2, 2, 1, px.data(), e), InputError);
     EXPECT_THROW(raster::write_png(dir.path / "no_such_dir" / "x.png", "x.png", 2, 2, 1, px.data()), InputError);
+}
+
+// Grey + alpha (map tiles): libpng decodes the same pixels, and encode_png gives the bytes
+// write_png writes, the same on every call.
+TEST(PngWriter, GreyAlphaRoundTripsAndEncodeMatchesTheFile) {
+    TempDir dir;
+    const int w = 37, h = 23;
+    std::vector<std::uint8_t> px(std::size_t(w) * h * 2);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const bool covered = (i + j) % 5 != 0;
+            px[2 * (std::size_t(j) * w + i)] = covered ? std::uint8_t(i * 7 + j * 3) : 0;
+            px[2 * (std::size_t(j) * w + i) + 1] = covered ? 255 : 0;
+        }
+    const auto file = dir.path / "ga.png";
+    raster::write_png(file, file, w, h, 2, px.data());
+    const test::DecodedPng decoded = test::decode_png_with_libpng(file);
+    EXPECT_EQ(decoded.channels, 2);
+    EXPECT_EQ(decoded.pixels, px);
+    const auto bytes = raster::encode_png(w, h, 2, px.data());
+    std::ifstream in(file, std::ios::binary);
+    const std::vector<std::uint8_t> written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(bytes, written);
+    EXPECT_EQ(raster::encode_png(w, h, 2, px.data()), bytes);
 }
 
 // A write that fails half-way (the file-size limit stands in for a full disk) is an InputError,

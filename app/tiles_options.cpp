@@ -1,0 +1,75 @@
+#include "app/tiles_options.hpp"
+
+#include <charconv>
+#include <string_view>
+
+#include "core/light/utc_time.hpp"
+#include "core/tiles/web_mercator.hpp"
+#include "core/util/error.hpp"
+
+namespace ts::app {
+
+void parse_zoom_range(const std::string& text, int& z0, int& z1) {
+    auto number = [&](std::string_view s, int& out) {
+        const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+        return !s.empty() && ec == std::errc() && p == s.data() + s.size();
+    };
+    const auto dash = text.find('-', 1);
+    const std::string_view all(text);
+    const bool ok = dash == std::string::npos ? number(all, z0) && number(all, z1)
+                                              : number(all.substr(0, dash), z0) && number(all.substr(dash + 1), z1);
+    if (!ok) throw InputError("--zoom " + text + ": give Z or Z0-Z1 (e.g. 8-12)");
+    if (z0 < 0 || z1 < 0 || z0 > tiles::kMaxZoom || z1 > tiles::kMaxZoom)
+        throw InputError("--zoom " + text + ": zooms are 0.." + std::to_string(tiles::kMaxZoom));
+    if (z1 < z0) throw InputError("--zoom " + text + ": Z1 must not be below Z0");
+}
+
+void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
+    if (with_zoom) cmd.add_option("--zoom", a.zoom, "Zoom levels Z0-Z1 (or one zoom Z), 0..24")->required();
+    cmd.add_option("--tile-size", a.tile_size, "Tile size in pixels: 256 or 512 (a 512-px tile at z shows the "
+                                               "pixels of four 256-px tiles at z+1)")
+        ->capture_default_str();
+    cmd.add_option("--style", a.style, "relief | hillshade | multidirectional | svf | color (docs/tiles.md)")
+        ->capture_default_str();
+    cmd.add_option("--time", a.time, "Sun for this UTC instant (ISO 8601 with a zone) at the DEM's centre, instead "
+                                     "of --sun-azimuth/--sun-elevation");
+    cmd.add_option("--sun-azimuth", a.sun_azimuth, "Light azimuth, degrees clockwise from north (default 315)");
+    cmd.add_option("--sun-elevation", a.sun_elevation, "Light elevation, degrees (default 45)");
+    cmd.add_option("--sky", a.sky, "relief/color: the sky (as render --sky: clear[:turbidity=T] | overcast | ...)")
+        ->capture_default_str();
+    cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
+    cmd.add_option("--exaggeration", a.exaggeration,
+                   "auto (2^(max(0, 12 - zoom)/3), docs/tiles.md) or a number replacing it at every zoom")
+        ->capture_default_str();
+    cmd.add_option("--directions", a.directions, "relief/svf/color: horizon azimuths of the visibility")
+        ->capture_default_str();
+    cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")->capture_default_str()->check(CLI::Range(0, 256));
+}
+
+tiles::TileJob tile_job(const TilesArgs& a) {
+    tiles::TileJob job;
+    if (!a.zoom.empty()) parse_zoom_range(a.zoom, job.z0, job.z1);
+    job.tile_size = a.tile_size;
+    tiles::TileShading& s = job.shading;
+    s.style = tiles::parse_tile_style(a.style);
+    const bool by_angles = a.sun_azimuth || a.sun_elevation;
+    if (!a.time.empty() && by_angles) throw InputError("tiles: give --time or --sun-azimuth/--sun-elevation, not both");
+    if (!a.time.empty()) light::parse_utc_time(a.time);  // a malformed time fails before any work
+    if (a.sun_azimuth) s.sun_azimuth_deg = *a.sun_azimuth;
+    if (a.sun_elevation) s.sun_elevation_deg = *a.sun_elevation;
+    s.sky = light::parse_sky_options(a.sky);
+    s.z_factor = a.z_factor;
+    if (a.exaggeration != "auto") {
+        double e = 0;
+        const auto [p, ec] = std::from_chars(a.exaggeration.data(), a.exaggeration.data() + a.exaggeration.size(), e);
+        if (ec != std::errc() || p != a.exaggeration.data() + a.exaggeration.size())
+            throw InputError("--exaggeration " + a.exaggeration + ": auto or a number > 0");
+        s.exaggeration = e;
+    }
+    s.directions = a.directions;
+    s.threads = a.threads;
+    tiles::check_tile_job(job);
+    return job;
+}
+
+}  // namespace ts::app

@@ -1,0 +1,33 @@
+#pragma once
+// The options `tiles` and `bench tiles` share: zooms, tile size, style and light
+// (app/tiles_command.cpp, app/bench/bench_tiles_command.cpp).
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "core/tiles/tile_export.hpp"
+
+namespace ts::app {
+
+struct TilesArgs {
+    std::string zoom;  // Z or Z0-Z1
+    int tile_size = 256;
+    std::string style = "relief";
+    std::string time;
+    std::optional<double> sun_azimuth, sun_elevation;
+    std::string sky = "clear";
+    double z_factor = 1.0;
+    std::string exaggeration = "auto";
+    int directions = 16;
+    int threads = 0;
+};
+
+// `with_zoom`: add --zoom (bench tiles fixes its own).
+void add_tiles_options(CLI::App& cmd, TilesArgs& args, bool with_zoom = true);
+// Parses and checks every flag (ts::InputError); the sun from --time is set once the DEM is read.
+tiles::TileJob tile_job(const TilesArgs& args);
+// "Z" or "Z0-Z1" -> (z0, z1), each 0..24 with z0 <= z1.
+void parse_zoom_range(const std::string& text, int& z0, int& z1);
+
+}  // namespace ts::app

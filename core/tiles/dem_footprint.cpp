@@ -1,0 +1,47 @@
+#include "core/tiles/dem_footprint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ts::tiles {
+
+LonLatBox dem_footprint(const geo::Georef& g) {
+    constexpr int kPerEdge = 64;
+    double w = std::numeric_limits<double>::infinity(), e = -w, s = w, n = -w;
+    auto add = [&](double col, double row) {
+        const glm::dvec2 ll = g.pixel_to_lonlat(col, row);
+        if (!std::isfinite(ll.x) || !std::isfinite(ll.y)) return;
+        w = std::min(w, ll.x), e = std::max(e, ll.x), s = std::min(s, ll.y), n = std::max(n, ll.y);
+    };
+    for (int i = 0; i <= kPerEdge; ++i) {
+        const double f = double(i) / kPerEdge;
+        add(f * g.width(), 0), add(f * g.width(), g.height());
+        add(0, f * g.height()), add(g.width(), f * g.height());
+    }
+    LonLatBox box{std::max(w, -180.0), std::max(s, -kMaxLatitudeDeg), std::min(e, 180.0),
+                  std::min(n, kMaxLatitudeDeg)};
+    if (box.empty()) return {};
+    return box;
+}
+
+std::vector<TileId> tiles_covering(const LonLatBox& box, int z0, int z1) {
+    std::vector<TileId> out;
+    if (box.empty()) return out;
+    const glm::dvec2 sw = lonlat_to_mercator({box.west, box.south});
+    const glm::dvec2 ne = lonlat_to_mercator({box.east, box.north});
+    for (int z = z0; z <= z1; ++z) {
+        const double size = 2.0 * kOriginShiftM / double(tiles_per_side(z));
+        const std::int64_t last = tiles_per_side(z) - 1;
+        // Half-open: a box edge exactly on a tile border does not pull in the next tile.
+        auto first_index = [&](double v) { return std::clamp<std::int64_t>(std::int64_t(std::floor(v / size)), 0, last); };
+        auto last_index = [&](double v) { return std::clamp<std::int64_t>(std::int64_t(std::ceil(v / size)) - 1, 0, last); };
+        const std::int64_t x0 = first_index(sw.x + kOriginShiftM), x1 = last_index(ne.x + kOriginShiftM);
+        const std::int64_t y0 = first_index(kOriginShiftM - ne.y), y1 = last_index(kOriginShiftM - sw.y);
+        for (std::int64_t y = y0; y <= y1; ++y)
+            for (std::int64_t x = x0; x <= x1; ++x) out.push_back({z, int(x), int(y)});
+    }
+    return out;
+}
+
+}  // namespace ts::tiles

@@ -1,0 +1,43 @@
+#pragma once
+// What the tiles of one pixel zoom are cut from: a raster on a DEM pyramid level, computed once
+// over the whole level (so horizons and cast shadows see terrain far beyond any tile) and then
+// sampled per tile pixel (tile_renderer.hpp).
+//
+//   hillshade, multidirectional   the level's heights (the tile takes its gradients itself, in
+//                                 map pixels: equal to gdaldem on the tile's pixels)
+//   relief                        grey: sun (cast shadows) + sky (log-SH visibility) on a grey
+//                                 Lambert ground, relative to an open flat texel under the same
+//                                 light; display-linear 0..1
+//   svf                           sky view factor, stretched to display-linear 0..1
+//   color                         the renderer's rule materials, linear RGB exposed for the filmic
+//                                 curve (render --view map's look, with a fixed exposure)
+// Heights are multiplied by z-factor x exaggeration before any of this (zoom_exaggeration.hpp).
+#include <vector>
+
+#include "core/dem/dem.hpp"
+#include "core/tiles/tile_style.hpp"
+
+namespace ts {
+class ProgressBar;
+}
+
+namespace ts::tiles {
+
+struct ShadeSource {
+    int level = 0;               // 2^level DEM texels per source texel side
+    int width = 0, height = 0;   // texels
+    int channels = 1;            // 1, or 3 (color)
+    double vertical_scale = 1;   // z-factor x exaggeration the values were computed with
+    std::vector<float> values;   // row-major, `channels` floats per texel
+};
+
+// Display-linear grey of an open flat texel in `relief` (0.5 -> sRGB code 188): slopes facing
+// the sun go brighter, shade and shadow darker, with room on both sides.
+inline constexpr float kReliefFlatGrey = 0.5f;
+
+// The source of `style` on DEM level `level` with heights times `vertical_scale`. The visibility
+// styles advance `progress` (may be null) per texel and horizon azimuth.
+ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& shading, int level, double vertical_scale,
+                              ProgressBar* progress = nullptr);
+
+}  // namespace ts::tiles

@@ -1,0 +1,166 @@
+#include "core/tiles/tile_export.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <mutex>
+#include <map>
+#include <memory>
+#include <utility>
+
+#include "core/raster/png_writer.hpp"
+#include "core/tiles/shade_source.hpp"
+#include "core/tiles/tile_pixels.hpp"
+#include "core/tiles/tile_renderer.hpp"
+#include "core/tiles/zoom_exaggeration.hpp"
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/util/stopwatch.hpp"
+
+namespace ts::tiles {
+namespace {
+
+// Sources keep at least this many texels per side: coarser levels than that show nothing.
+constexpr int kMinLevelTexels = 32;
+
+std::string number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+}  // namespace
+
+void check_tile_job(const TileJob& job) {
+    if (job.z0 < 0 || job.z1 > kMaxZoom || job.z0 > kMaxZoom || job.z1 < 0)
+        throw InputError("--zoom: zooms are 0.." + std::to_string(kMaxZoom));
+    if (job.z1 < job.z0) throw InputError("--zoom Z0-Z1: Z1 must not be below Z0");
+    if (job.tile_size != 256 && job.tile_size != 512) throw InputError("--tile-size: 256 or 512");
+    if (job.z1 + tile_size_shift(job.tile_size) > kMaxZoom + 1)
+        throw InputError("--zoom: 512-px tiles go to zoom " + std::to_string(kMaxZoom - 1));
+    const TileShading& s = job.shading;
+    if (!(s.z_factor > 0) || !std::isfinite(s.z_factor)) throw InputError("--z-factor: must be a finite number > 0");
+    if (s.exaggeration && (!(*s.exaggeration > 0) || !std::isfinite(*s.exaggeration)))
+        throw InputError("--exaggeration: must be a finite number > 0");
+    if (!(s.sun_elevation_deg >= -90 && s.sun_elevation_deg <= 90)) throw InputError("--sun-elevation: -90..90 degrees");
+    if (!std::isfinite(s.sun_azimuth_deg)) throw InputError("--sun-azimuth: a number of degrees");
+    if (s.directions < 4) throw InputError("--directions: at least 4");
+}
+
+std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
+    return tiles_covering(dem_footprint(dem.georef), job.z0, job.z1);
+}
+
+std::string describe_job(const TileJob& job) {
+    const TileShading& s = job.shading;
+    // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
+    return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
+           std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
+           ",\"sun_elevation\":" + number(s.sun_elevation_deg) + ",\"z_factor\":" + number(s.z_factor) +
+           ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto\"")) +
+           ",\"directions\":" + std::to_string(s.directions) + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
+           number(s.sky.turbidity) + "}\n";
+}
+
+ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom) {
+    const glm::dvec2 cell = dem.georef.cell_size_m();
+    const double texel_m = std::sqrt(cell.x * cell.y);
+    const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
+    const double ground_m = pixel_size_m(pixel_zoom) * std::cos(centre.y * 3.14159265358979323846 / 180.0);
+    int max_level = 0;
+    while (std::min(dem.width, dem.height) >> (max_level + 1) >= kMinLevelTexels) ++max_level;
+    ZoomShading z;
+    z.level = pyramid_level_for(texel_m, ground_m, max_level);
+    z.vertical_scale = job.shading.z_factor * (job.shading.exaggeration ? *job.shading.exaggeration
+                                                                        : zoom_exaggeration(pixel_zoom));
+    return z;
+}
+
+TileHeights tile_heights(const dem::Dem& dem, const TileJob& job, const TileId& t) {
+    const TileFrame f = tile_frame(t, job.tile_size);
+    const ZoomShading zs = zoom_shading(dem, job, f.pixel_zoom);
+    TileShading heights_only = job.shading;
+    heights_only.style = TileStyle::hillshade;
+    const ShadeSource source = make_shade_source(dem, heights_only, zs.level, zs.vertical_scale);
+    TileScratch scratch;
+    sample_tile_heights(TilePixelMap(dem), source, f, scratch);
+    const double res = pixel_size_m(f.pixel_zoom);
+    geo::GeoTransform g;
+    g.x0 = pixel_centre_m(f.col0 - 1, f.pixel_zoom) - 0.5 * res, g.dx_col = res, g.dx_row = 0;
+    g.y0 = -(pixel_centre_m(f.row0 - 1, f.pixel_zoom) - 0.5 * res), g.dy_col = 0, g.dy_row = -res;
+    return {std::move(scratch.values), geo::Georef(f.size + 2, f.size + 2, g, geo::Crs::from_epsg(3857), true)};
+}
+
+TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& sink, ProgressBar* progress) {
+    check_tile_job(job);
+    TileExportStats stats;
+    const std::vector<TileId> plan = plan_tiles(dem, job);
+    stats.planned = plan.size();
+    const TilePixelMap map(dem);
+    const int workers = thread_count(job.shading.threads);
+    // Sources by (level, vertical scale): zooms that share both share the source.
+    std::map<std::pair<int, double>, std::shared_ptr<const ShadeSource>> sources;
+    std::vector<TileScratch> scratch(static_cast<std::size_t>(workers));
+    std::vector<TileImage> images(static_cast<std::size_t>(workers));
+    std::vector<std::size_t> written(static_cast<std::size_t>(workers), 0), empty(static_cast<std::size_t>(workers), 0);
+    const raster::PngEncoding encoding;
+
+    for (int z = job.z0; z <= job.z1; ++z) {
+        std::vector<TileId> todo;
+        for (const TileId& t : plan)
+            if (t.z == z) {
+                if (sink.has(t)) {
+                    ++stats.resumed;
+                    if (progress) progress->advance();
+                } else {
+                    todo.push_back(t);
+                }
+            }
+        if (todo.empty()) continue;
+        const int pixel_zoom = z + tile_size_shift(job.tile_size);
+        const ZoomShading zs = zoom_shading(dem, job, pixel_zoom);
+        const auto key = std::make_pair(zs.level, zs.vertical_scale);
+        if (!sources.count(key)) {
+            // Only the next zooms can share a source: drop the others (memory).
+            sources.clear();
+            const Stopwatch watch;
+            sources[key] = std::make_shared<const ShadeSource>(make_shade_source(dem, job.shading, zs.level, zs.vertical_scale));
+            stats.source_seconds += watch.seconds();
+        }
+        const ShadeSource& source = *sources[key];
+        const Stopwatch watch;
+        // A worker's error (a full disk) stops the others and is rethrown here.
+        std::exception_ptr failure;
+        std::mutex failure_mutex;
+        parallel_for(int(todo.size()), workers, [&](int item, int worker) {
+            {
+                const std::lock_guard lock(failure_mutex);
+                if (failure) return;
+            }
+            try {
+            const TileId& t = todo[std::size_t(item)];
+            TileImage& image = images[std::size_t(worker)];
+            render_tile(map, source, job.shading, tile_frame(t, job.tile_size), scratch[std::size_t(worker)], image);
+            if (image.covered == 0) {
+                ++empty[std::size_t(worker)];
+            } else {
+                sink.put(t, raster::encode_png(image.size, image.size, image.channels, image.pixels.data(), encoding));
+                ++written[std::size_t(worker)];
+            }
+            if (progress) progress->advance();
+            } catch (...) {
+                const std::lock_guard lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        });
+        if (failure) std::rethrow_exception(failure);
+        stats.tile_seconds += watch.seconds();
+    }
+    sink.finish();
+    for (int w = 0; w < workers; ++w) stats.written += written[std::size_t(w)], stats.empty += empty[std::size_t(w)];
+    return stats;
+}
+
+}  // namespace ts::tiles

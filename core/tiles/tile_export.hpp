@@ -1,0 +1,65 @@
+#pragma once
+// A tile set from one DEM: the tiles of zooms z0..z1 that the DEM touches, zoom by zoom. Each
+// pixel zoom's ShadeSource is computed once over the whole DEM level it is shaded from (so
+// shadows and horizons cross tile borders), only if some tile of that zoom is still to do, and
+// kept while later zooms share it; then the tiles are cut in parallel, encoded as PNG and handed
+// to the sink. Tiles a resumed sink already has are skipped; tiles that show no data (all
+// transparent) are not written.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/dem/dem.hpp"
+#include "core/tiles/dem_footprint.hpp"
+#include "core/tiles/tile_sink.hpp"
+#include "core/tiles/tile_style.hpp"
+
+namespace ts {
+class ProgressBar;
+}
+
+namespace ts::tiles {
+
+struct TileJob {
+    int z0 = 0, z1 = 0;
+    int tile_size = 256;
+    TileShading shading;
+};
+
+struct TileExportStats {
+    std::size_t planned = 0;   // tiles touching the DEM's footprint
+    std::size_t resumed = 0;   // already in the sink
+    std::size_t written = 0;
+    std::size_t empty = 0;     // no data under them: not written
+    double source_seconds = 0; // shading the DEM levels
+    double tile_seconds = 0;   // cutting, encoding and storing tiles
+};
+
+// Checks the job before any work (ts::InputError): zooms in 0..24 with z0 <= z1, a tile size
+// of 256 or 512, positive z-factor and exaggeration, directions >= 4.
+void check_tile_job(const TileJob& job);
+
+// The tiles to make, in order, and the description of the job that --resume compares.
+std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job);
+std::string describe_job(const TileJob& job);
+
+// The DEM level and vertical scale a pixel zoom is shaded with.
+struct ZoomShading {
+    int level = 0;
+    double vertical_scale = 1;
+};
+ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom);
+
+// The heights a Horn style shades tile `t` from, with the 1-px halo ((size + 2)^2, row-major),
+// and their georef in EPSG:3857: what gdaldem is given to check the tile (tests, --debug-heights).
+struct TileHeights {
+    std::vector<float> z;
+    geo::Georef georef;
+};
+TileHeights tile_heights(const dem::Dem& dem, const TileJob& job, const TileId& t);
+
+// `progress` (may be null; its total should be plan_tiles().size()) is advanced per tile,
+// resumed ones included.
+TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& sink, ProgressBar* progress);
+
+}  // namespace ts::tiles

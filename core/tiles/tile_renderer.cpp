@@ -1,0 +1,157 @@
+#include "core/tiles/tile_renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/raster/srgb.hpp"
+#include "core/render/tone_map.hpp"
+#include "core/tiles/tile_horn.hpp"
+
+namespace ts::tiles {
+namespace {
+
+// Bilinear sample of channel `c` at level texel-centre coordinates, clamped to the raster.
+struct Bilinear {
+    const ShadeSource& s;
+    float operator()(double x, double y, int c) const {
+        x = std::clamp(x, 0.0, double(s.width - 1));
+        y = std::clamp(y, 0.0, double(s.height - 1));
+        const int x0 = std::min(int(x), s.width - 1), x1 = std::min(x0 + 1, s.width - 1);
+        const int y0 = std::min(int(y), s.height - 1), y1 = std::min(y0 + 1, s.height - 1);
+        const float fx = float(x - x0), fy = float(y - y0);
+        const std::size_t ch = std::size_t(s.channels);
+        auto at = [&](int col, int row) {
+            return s.values[(std::size_t(row) * std::size_t(s.width) + std::size_t(col)) * ch + std::size_t(c)];
+        };
+        return (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
+    }
+};
+
+// Display-linear 0..1 -> sRGB code, tabulated (a pow per pixel would cost more than the PNG).
+class SrgbTable {
+public:
+    SrgbTable() {
+        for (int i = 0; i < kSize; ++i)
+            code_[std::size_t(i)] = std::uint8_t(std::lround(255.0f * raster::srgb_oetf(float(i) / (kSize - 1))));
+    }
+    std::uint8_t operator()(float v) const {
+        return code_[std::size_t(std::lround(std::clamp(v, 0.0f, 1.0f) * (kSize - 1)))];
+    }
+
+private:
+    static constexpr int kSize = 1 << 14;
+    std::array<std::uint8_t, kSize> code_{};
+};
+
+const SrgbTable& srgb_table() {
+    static const SrgbTable table;
+    return table;
+}
+
+}  // namespace
+
+void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& sc) {
+    const int m = f.size + 2;
+    map.locate(f, 1, sc.at);
+    const double inv_scale = 1.0 / double(1 << source.level);
+    sc.values.resize(std::size_t(m) * m);
+    if (map.separable()) {
+        // The same bilinear sample as below, with the taps of each column and row found once:
+        // identical numbers, a fraction of the work.
+        struct Tap {
+            int i0, i1;
+            float f;
+        };
+        auto taps = [](double v, int n) {
+            v = std::clamp(v, 0.0, double(n - 1));
+            const int i0 = std::min(int(v), n - 1);
+            return Tap{i0, std::min(i0 + 1, n - 1), float(v - i0)};
+        };
+        std::vector<Tap> cols(static_cast<std::size_t>(m)), rows(static_cast<std::size_t>(m));
+        for (int i = 0; i < m; ++i) {
+            cols[std::size_t(i)] = taps(sc.at[std::size_t(i)].x * inv_scale - 0.5, source.width);
+            rows[std::size_t(i)] = taps(sc.at[std::size_t(i) * m].y * inv_scale - 0.5, source.height);
+        }
+        const float* v = source.values.data();
+        const std::size_t w = std::size_t(source.width);
+        for (int j = 0; j < m; ++j) {
+            const Tap r = rows[std::size_t(j)];
+            const float* top = v + std::size_t(r.i0) * w;
+            const float* bottom = v + std::size_t(r.i1) * w;
+            float* out = sc.values.data() + std::size_t(j) * m;
+            for (int i = 0; i < m; ++i) {
+                const Tap c = cols[std::size_t(i)];
+                out[i] = (top[c.i0] * (1 - c.f) + top[c.i1] * c.f) * (1 - r.f) +
+                         (bottom[c.i0] * (1 - c.f) + bottom[c.i1] * c.f) * r.f;
+            }
+        }
+        return;
+    }
+    const Bilinear sample{source};
+    for (std::size_t k = 0; k < sc.values.size(); ++k) {
+        const glm::dvec2 p = sc.at[k];
+        // Off the CRS's domain: any height (the pixel is transparent and its neighbours too).
+        sc.values[k] = std::isfinite(p.x) ? sample(p.x * inv_scale - 0.5, p.y * inv_scale - 0.5, 0) : 0.0f;
+    }
+}
+
+void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,
+                 TileScratch& sc, TileImage& out) {
+    const bool horn = !uses_visibility(shading.style);
+    const int halo = horn ? 1 : 0;
+    const int n = f.size, m = n + 2 * halo;
+    if (horn)
+        sample_tile_heights(map, source, f, sc);
+    else
+        map.locate(f, halo, sc.at);
+    // Level-0 edge coordinates -> the source level's texel-centre coordinates.
+    const double inv_scale = 1.0 / double(1 << source.level);
+    auto level_x = [&](double p) { return p * inv_scale - 0.5; };
+
+    sc.covered.assign(std::size_t(n) * n, 0);
+    out.covered = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const bool c = map.covered(sc.at[std::size_t(j + halo) * m + std::size_t(i + halo)]);
+            sc.covered[std::size_t(j) * n + i] = c;
+            out.covered += c;
+        }
+    out.size = n;
+    out.channels = source.channels == 3 ? 4 : 2;
+    out.pixels.assign(std::size_t(n) * n * std::size_t(out.channels), 0);
+    if (out.covered == 0) return;
+
+    const Bilinear sample{source};
+    if (horn) {
+        sc.grey.assign(std::size_t(n) * n, 0);
+        const HornLight light{shading.sun_azimuth_deg, shading.sun_elevation_deg};
+        if (shading.style == TileStyle::hillshade)
+            horn_hillshade(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
+        else
+            horn_multidirectional(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
+        for (std::size_t k = 0; k < sc.grey.size(); ++k)
+            if (sc.covered[k]) out.pixels[2 * k] = sc.grey[k], out.pixels[2 * k + 1] = 255;
+        return;
+    }
+    if (source.channels == 1) {
+        const SrgbTable& code = srgb_table();
+        for (std::size_t k = 0; k < sc.covered.size(); ++k) {
+            if (!sc.covered[k]) continue;
+            const glm::dvec2 p = sc.at[k];
+            out.pixels[2 * k] = code(sample(level_x(p.x), level_x(p.y), 0));
+            out.pixels[2 * k + 1] = 255;
+        }
+        return;
+    }
+    const render::Srgb8Encoder& code = render::shared_srgb8_table();
+    for (std::size_t k = 0; k < sc.covered.size(); ++k) {
+        if (!sc.covered[k]) continue;
+        const glm::dvec2 p = sc.at[k];
+        const double x = level_x(p.x), y = level_x(p.y);
+        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = code(sample(x, y, c));
+        out.pixels[4 * k + 3] = 255;
+    }
+}
+
+}  // namespace ts::tiles

@@ -1,0 +1,37 @@
+#pragma once
+// One tile's pixels from its pixel zoom's ShadeSource: locate every pixel on the DEM
+// (tile_pixels.hpp), sample the source bilinearly at the pixel's position on the source's level,
+// and shade (Horn styles) or encode (the others). Grey styles give grey + alpha, color RGBA;
+// alpha is 0 off the DEM and over its voids, 255 elsewhere. A pure function of (tile, source,
+// shading): neighbouring tiles and the 2x2 / 512-px tilings of the same pixels agree exactly.
+#include <cstdint>
+#include <vector>
+
+#include "core/tiles/shade_source.hpp"
+#include "core/tiles/tile_pixels.hpp"
+#include "core/tiles/tile_style.hpp"
+
+namespace ts::tiles {
+
+struct TileImage {
+    int size = 0;
+    int channels = 0;                 // 2 (grey, alpha) or 4 (RGBA)
+    std::vector<std::uint8_t> pixels;
+    std::size_t covered = 0;          // pixels with alpha 255
+};
+
+// Per-thread buffers, kept from tile to tile.
+struct TileScratch {
+    std::vector<glm::dvec2> at;
+    std::vector<float> values;
+    std::vector<std::uint8_t> covered, grey;
+};
+
+// The heights a Horn style shades the tile from: (size + 2)^2 floats with the 1-px halo, into
+// scratch.values (scratch.at holds the pixels' DEM positions). render_tile calls it.
+void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& scratch);
+
+void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,
+                 TileScratch& scratch, TileImage& out);
+
+}  // namespace ts::tiles

@@ -1,0 +1,39 @@
+#pragma once
+// What a tile shows and how it is lit (docs/tiles.md, "Styles").
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/light/sky.hpp"
+
+namespace ts::tiles {
+
+enum class TileStyle {
+    relief,            // grey shaded relief: sun with cast shadows + sky through log-SH visibility
+    hillshade,         // Horn, as gdaldem hillshade on the tile's pixels
+    multidirectional,  // as gdaldem hillshade -multidirectional
+    svf,               // sky view factor, grey
+    color,             // the renderer's rule materials under sun and sky
+};
+
+// "relief", "hillshade", ...; throws ts::InputError naming --style otherwise.
+TileStyle parse_tile_style(std::string_view text);
+std::string_view tile_style_name(TileStyle s);
+// True for the styles computed from visibility over the whole DEM (relief, svf, color).
+inline bool uses_visibility(TileStyle s) { return s == TileStyle::relief || s == TileStyle::svf || s == TileStyle::color; }
+
+struct TileShading {
+    TileStyle style = TileStyle::relief;
+    // The light, user-facing degrees (azimuth clockwise from north). Cartographic default: from
+    // the north-west, 45 deg up. --time sets them from the sun's position instead.
+    double sun_azimuth_deg = 315.0;
+    double sun_elevation_deg = 45.0;
+    double z_factor = 1.0;
+    // Replaces the zoom-dependent exaggeration (zoom_exaggeration.hpp) when set.
+    std::optional<double> exaggeration;
+    light::SkyOptions sky;     // relief, color
+    int directions = 16;       // horizon azimuths of the visibility (relief, svf, color)
+    int threads = 0;
+};
+
+}  // namespace ts::tiles

@@ -1,0 +1,67 @@
+// The DEM's footprint on the map and the tiles it touches.
+#include "core/tiles/dem_footprint.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/tiles/zoom_exaggeration.hpp"
+
+namespace ts::tiles {
+namespace {
+
+geo::Georef anatolia() {
+    // srtm3_N39E040_1000px.tif: origin 40E 40N, 1/1200 degree pixels.
+    geo::GeoTransform t;
+    t.x0 = 40.0, t.dx_col = 1.0 / 1200, t.y0 = 40.0, t.dy_row = -1.0 / 1200;
+    return geo::Georef(1000, 1000, t, geo::Crs::wgs84(), true);
+}
+
+TEST(DemFootprint, GeographicDemIsItsCornerBox) {
+    const LonLatBox b = dem_footprint(anatolia());
+    EXPECT_NEAR(b.west, 40.0, 1e-12);
+    EXPECT_NEAR(b.east, 40.0 + 1000.0 / 1200, 1e-12);
+    EXPECT_NEAR(b.north, 40.0, 1e-12);
+    EXPECT_NEAR(b.south, 40.0 - 1000.0 / 1200, 1e-12);
+}
+
+TEST(DemFootprint, TilesCoveringAreTheIntersectingOnes) {
+    const LonLatBox b = dem_footprint(anatolia());
+    const auto tiles = tiles_covering(b, 0, 12);
+    ASSERT_FALSE(tiles.empty());
+    int per_zoom[13] = {};
+    for (const TileId& t : tiles) {
+        ++per_zoom[t.z];
+        // Every listed tile overlaps the box (not only touches it).
+        const MercatorBounds m = tile_bounds(t);
+        const glm::dvec2 sw = lonlat_to_mercator({b.west, b.south}), ne = lonlat_to_mercator({b.east, b.north});
+        EXPECT_LT(m.x0, ne.x);
+        EXPECT_GT(m.x1, sw.x);
+        EXPECT_LT(m.y0, ne.y);
+        EXPECT_GT(m.y1, sw.y);
+    }
+    EXPECT_EQ(per_zoom[0], 1);
+    // z12: 0.833 deg of longitude = 9.5 tile widths, of latitude (sec 39.6) ~ 12.3 tile heights.
+    EXPECT_GE(per_zoom[12], 10 * 13);
+    EXPECT_LE(per_zoom[12], 11 * 14);
+}
+
+TEST(DemFootprint, BeyondMercatorIsEmpty) {
+    geo::GeoTransform t;
+    t.x0 = 0, t.dx_col = 0.01, t.y0 = 89.9, t.dy_row = -0.01;
+    const auto box = dem_footprint(geo::Georef(100, 4, t, geo::Crs::wgs84(), true));
+    EXPECT_TRUE(box.empty());
+    EXPECT_TRUE(tiles_covering(box, 0, 5).empty());
+}
+
+TEST(ZoomExaggeration, FormulaAndLevels) {
+    EXPECT_DOUBLE_EQ(zoom_exaggeration(12), 1.0);
+    EXPECT_DOUBLE_EQ(zoom_exaggeration(15), 1.0);
+    EXPECT_DOUBLE_EQ(zoom_exaggeration(9), 2.0);
+    EXPECT_DOUBLE_EQ(zoom_exaggeration(0), 16.0);
+    EXPECT_EQ(pyramid_level_for(80.0, 30.0, 5), 0);
+    EXPECT_EQ(pyramid_level_for(80.0, 159.0, 5), 0);
+    EXPECT_EQ(pyramid_level_for(80.0, 161.0, 5), 1);
+    EXPECT_EQ(pyramid_level_for(80.0, 1e6, 5), 5);
+}
+
+}  // namespace
+}  // namespace ts::tiles

@@ -11,6 +11,8 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/interrupt_watcher.hpp"
+#include "app/io_plan.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/light/time_interval.hpp"
@@ -55,10 +57,15 @@ std::vector<light::UtcTime> read_times_file(const std::string& path) {
 
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
-    const std::vector<light::UtcTime> times =
-        a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     render::SceneOptions options = scene_options(a.render);
     render::Exposure exposure = exposure_of(a.render);
+    IoPlan plan;
+    plan_render_inputs(plan, a.render, options);
+    plan.input("--times-file", a.times_file).output_directory("--out", a.out_dir);
+    plan.check();
+    const std::vector<light::UtcTime> times =
+        a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
+    interrupt::report_progress("frames", times.size());
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
     if (ec || !std::filesystem::is_directory(a.out_dir))

@@ -88,6 +88,7 @@ TEST(InterruptCli, RelightLeavesCompleteFramesOnlyAndSaysHowMany) {
     for (int attempt = 0; attempt < 12; ++attempt) {
         const int sig = attempt % 2 ? SIGTERM : SIGINT;
         const fs::path out = root / ("run" + std::to_string(attempt));
+        fs::remove_all(out);  // a repeated test starts afresh
         std::vector<std::string> args = {"relight"};
         args.insert(args.end(), base.begin(), base.end());
         args.insert(args.end(), {"--out", out.string()});

@@ -72,6 +72,7 @@ void run_relight(const RelightArgs& a) {
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    warn_if_single_line(dem);
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());

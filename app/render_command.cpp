@@ -49,6 +49,7 @@ void run_render(const RenderCommandArgs& a) {
     plan.check();
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    warn_if_single_line(dem);
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;

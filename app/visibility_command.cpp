@@ -95,6 +95,7 @@ void run_visibility(VisibilityOptions& o) {
                              std::to_string(multi_band == &o.horizons ? o.horizon.directions : 16) + " bands");
 
     const dem::Dem dem = load_dem_input(o.dem);
+    warn_if_single_line(dem);
     const visibility::VisibilityGrid grid(dem);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 

@@ -98,5 +98,19 @@ TEST(MeaninglessResultsCli, ADemTooSmallForAHillshadeExitsTwo) {
     }
 }
 
+TEST(MeaninglessResultsCli, ASingleRowOrColumnDemWarns) {
+    const fs::path dir = temp_dir("warn_line");
+    const fs::path line = dir / "line.tif";
+    ASSERT_EQ(run("gdal_translate -q -srcwin 100 100 5 1 " + quote(kDem) + " " + quote(line.string())).exit_code, 0);
+    for (const std::string& args :
+         {"visibility " + quote(line.string()) + " --directions 8 --svf " + quote((dir / "svf.tif").string()),
+          "render " + quote(line.string()) + kSun + " --directions 8 --out " + quote((dir / "r.png").string())}) {
+        const Result r = run(ts_cmd(args));
+        EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("terrashade: warning: " + line.string() + " is 5x1 cells"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}
+
 }  // namespace
 }  // namespace ts::cli_test

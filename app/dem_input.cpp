@@ -1,5 +1,7 @@
 #include "app/dem_input.hpp"
 
+#include <cstdio>
+
 #include "core/dem/crop.hpp"
 #include "core/dem/fill_voids.hpp"
 #include "core/dem/mosaic.hpp"
@@ -33,6 +35,14 @@ ts::dem::Dem load_dem_input(const DemInput& in) {
     }
     if (in.fill_voids) dem::fill_voids(d);
     return d;
+}
+
+void warn_if_single_line(const dem::Dem& d) {
+    if (d.width >= 2 && d.height >= 2) return;
+    std::fprintf(stderr,
+                 "terrashade: warning: %s is %dx%d cells: with no neighbours every horizon is open and the ground "
+                 "flat\n",
+                 d.source.c_str(), d.width, d.height);
 }
 
 }  // namespace ts::app

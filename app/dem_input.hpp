@@ -22,4 +22,8 @@ void add_dem_input_options(CLI::App& cmd, DemInput& in, bool with_fill_option = 
 // Throws ts::InputError naming the file on bad input.
 ts::dem::Dem load_dem_input(const DemInput& in);
 
+// A DEM of a single row or column has no neighbours to cast a horizon or give a slope: every
+// horizon is open and the ground flat. Prints one warning line (the outputs are still written).
+void warn_if_single_line(const ts::dem::Dem& dem);
+
 }  // namespace ts::app

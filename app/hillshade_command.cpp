@@ -1,13 +1,12 @@
 // `terrashade hillshade`: the classic Horn hillshade, as gdaldem computes it but with true metric
 // spacing per row (geographic DEMs need no -s). The baseline every later chart compares against.
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/render/hillshade.hpp"
 #include "core/terrain/dem_height_grid.hpp"
@@ -22,23 +21,21 @@ struct HillshadeArgs {
     render::HillshadeOptions shade;
 };
 
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 void run_hillshade(const HillshadeArgs& args) {
     // Check everything cheap before reading the DEM.
     render::validate(args.shade);
-    const std::string ext = lower_extension(args.out);
-    if (ext != ".png" && ext != ".tif" && ext != ".tiff") {
-        throw input_error(args.out, "unsupported output format '" + ext + "' (use .png or .tif)");
-    }
+    IoPlan plan;
+    plan.inputs("DEM", args.input.files).output("--out", args.out, {".png", ".tif", ".tiff"});
+    plan.check();
     const dem::Dem dem = load_dem_input(args.input);
+    // Border pixels have no full 3x3 window and are nodata: below 3x3 nothing else is left.
+    if (dem.width < 3 || dem.height < 3)
+        throw input_error(dem.source, "the DEM is " + std::to_string(dem.width) + "x" + std::to_string(dem.height) +
+                                          " cells; a hillshade needs at least 3x3 (every pixel would be nodata)");
     const terrain::HeightGrid grid = terrain::metric_view(dem);
     const std::vector<std::uint8_t> shade = render::hillshade(grid, args.shade);
     raster::write_u8_image(args.out, dem.width, dem.height, 1, shade.data(), &dem.georef, int(render::kHillshadeNodata));
+    std::printf("wrote %s (%dx%d)\n", args.out.c_str(), dem.width, dem.height);
 }
 
 }  // namespace

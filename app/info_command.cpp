@@ -9,6 +9,7 @@
 
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "core/dem/statistics.hpp"
 
 namespace ts::app {
@@ -112,6 +113,7 @@ void add_info_command(CLI::App& root) {
     add_dem_input_options(*cmd, opts->input, /*with_fill_option=*/false);
     cmd->add_flag("--json", opts->json, "Print one JSON object instead of text");
     cmd->callback([opts] {
+        IoPlan().inputs("DEM", opts->input.files).check();
         const dem::Dem d = load_dem_input(opts->input);
         const dem::HeightStats s = dem::height_stats(d);
         if (opts->json) print_json(d, *opts, s);

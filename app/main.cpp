@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command.hpp"
+#include "app/interrupt_watcher.hpp"
+#include "app/number_flags.hpp"
 #include "core/util/error.hpp"
 
 namespace {
@@ -14,6 +16,8 @@ constexpr int kExitBadInput = 2;
 }  // namespace
 
 int main(int argc, char** argv) {
+    // First, before any thread exists: every thread inherits the blocked SIGINT/SIGTERM.
+    ts::app::interrupt::start();
     CLI::App root{"terrashade: shading of real terrain with log-SH visibility and sun/sky lighting", "terrashade"};
     root.require_subcommand(1);
     root.set_version_flag("--version", "terrashade 0.1.0");
@@ -29,6 +33,7 @@ int main(int argc, char** argv) {
 #ifdef TERRASHADE_HAS_GPU
     ts::app::add_devices_command(root);
 #endif
+    ts::app::explain_non_numbers(root);
     try {
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

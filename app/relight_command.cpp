@@ -12,6 +12,8 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/interrupt_watcher.hpp"
+#include "app/io_plan.hpp"
 #include "app/render_options.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/render/sequence_exposure.hpp"
@@ -96,16 +98,21 @@ void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>
 
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
-    const std::vector<light::UtcTime> times =
-        a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
+    IoPlan plan;
+    plan_render_inputs(plan, a.render, options);
+    plan.input("--times-file", a.times_file).output_directory("--out", a.out_dir);
+    plan.check();
+    const std::vector<light::UtcTime> times =
+        a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
     if (ec || !std::filesystem::is_directory(a.out_dir))
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    warn_if_single_line(dem);
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;
@@ -133,6 +140,7 @@ void run_relight(const RelightArgs& a) {
                       a.format.c_str());
         frames[k].file = name;
     }
+    interrupt::report_progress("frames", frames.size());
 
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);

@@ -2,6 +2,7 @@
 // position given directly), as a map on the DEM's grid or a perspective camera view.
 // Pipeline and formulas: docs/rendering.md.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 #include "core/raster/raster_writer.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/util/staged_outputs.hpp"
 #include "core/visibility/sun_visibility.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -38,16 +40,16 @@ void run_render(const RenderCommandArgs& a) {
         throw InputError("render: --sun-azimuth and --sun-elevation go together");
     std::optional<light::UtcTime> time;
     if (by_time) time = light::parse_utc_time(a.time);
-    render::check_image_extension(a.out);
-    if (!a.sun_visibility.empty()) {
-        const std::string& p = a.sun_visibility;
-        if (!(p.size() > 4 && (p.ends_with(".tif") || p.ends_with(".tiff"))))
-            throw input_error(p, "--sun-visibility writes a float32 GeoTIFF: use .tif");
-    }
     render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
+    IoPlan plan;
+    plan_render_inputs(plan, a.render, options);
+    plan.output("--out", a.out, kImageExtensions);
+    plan.output("--sun-visibility", a.sun_visibility, {".tif", ".tiff"});
+    plan.check();
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    warn_if_single_line(dem);
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;
@@ -67,17 +69,12 @@ void run_render(const RenderCommandArgs& a) {
     scene->render(sun, image);
     const double frame_s = t1.seconds();
 
-    const double scale = render::write_image(a.out, image, exposure, scene->target().georef());
-    std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,
-                time ? (" at " + light::format_utc_time(*time)).c_str() : "");
-    std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
-    if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
-    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
-                scene->state().visibility_seconds(), scene->state().transfer_seconds(), a.render.directions,
-                frame_s, device.name().c_str());
-    if (!a.out.ends_with(".exr"))
-        std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
-    std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);
+    // Both outputs change together at the end, or neither does.
+    StagedOutputs outputs;
+    double scale = 1;
+    outputs.stage(a.out, [&](const std::filesystem::path& tmp) {
+        scale = render::write_image(tmp.string(), image, exposure, scene->target().georef());
+    });
     if (!a.sun_visibility.empty()) {
         // The renderer sweeps only when the sky has a sun (an overcast sky has none); the file
         // is geometry, so sweep here then.
@@ -89,11 +86,25 @@ void run_render(const RenderCommandArgs& a) {
             so.threads = options.renderer.threads;
             swept = visibility::sun_visibility(scene->grid(), sun.azimuth_deg, sun.elevation_deg, so);
         }
-        raster::write_float_raster(a.sun_visibility, dem.width, dem.height, 1,
-                                   swept.empty() ? scene->renderer().sun_visibility().data() : swept.data(), dem.georef,
-                                   {"sun_visibility: visible fraction of the sun disc"});
-        std::printf("wrote %s\n", a.sun_visibility.c_str());
+        outputs.stage(a.sun_visibility, [&](const std::filesystem::path& tmp) {
+            raster::write_float_raster(tmp, dem.width, dem.height, 1,
+                                       swept.empty() ? scene->renderer().sun_visibility().data() : swept.data(),
+                                       dem.georef, {"sun_visibility: visible fraction of the sun disc"});
+        });
     }
+    outputs.commit();
+
+    std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,
+                time ? (" at " + light::format_utc_time(*time)).c_str() : "");
+    std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
+    if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
+    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
+                scene->state().visibility_seconds(), scene->state().transfer_seconds(), a.render.directions,
+                frame_s, device.name().c_str());
+    if (!a.out.ends_with(".exr"))
+        std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
+    std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);
+    if (!a.sun_visibility.empty()) std::printf("wrote %s\n", a.sun_visibility.c_str());
 }
 
 }  // namespace

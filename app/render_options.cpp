@@ -148,6 +148,13 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     return o;
 }
 
+void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOptions& o) {
+    plan.inputs("DEM", a.dem.files);
+    plan.input("--sky", o.sky.hdr_path);
+    if (o.materials != "rule") plan.input("--materials", o.materials);
+    plan.input("--albedo", o.albedo);
+}
+
 render::Exposure exposure_of(const RenderArgs& a) {
     render::Exposure e = render::parse_exposure(a.exposure);
     // auto: perspective views, whose skies are smooth gradients; maps stay undithered so that

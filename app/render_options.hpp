@@ -10,6 +10,7 @@
 
 #include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::app {
@@ -43,5 +44,9 @@ void add_render_options(CLI::App& cmd, RenderArgs& args);
 // Parses and checks everything that can be checked before reading the DEM.
 render::SceneOptions scene_options(const RenderArgs& args);
 render::Exposure exposure_of(const RenderArgs& args);
+// Adds the files these options read (DEMs, an HDR sky, a land-cover map, an orthophoto) to `plan`.
+void plan_render_inputs(IoPlan& plan, const RenderArgs& args, const render::SceneOptions& options);
+// The picture formats render::write_image writes.
+inline const std::vector<std::string> kImageExtensions = {".png", ".tif", ".tiff", ".exr"};
 
 }  // namespace ts::app

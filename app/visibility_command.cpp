@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -15,12 +16,14 @@
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "core/util/angles.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/sh/exp_method.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/util/staged_outputs.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sky_integrals.hpp"
@@ -80,17 +83,16 @@ void write_fraction_png(const std::string& path, const dem::Dem& dem, const floa
                 path.c_str(), lo, hi);
 }
 
-void write_raster(const std::string& path, const dem::Dem& dem, int bands, const float* data,
-                  const std::vector<std::string>& names) {
-    if (is_png(path)) {
-        if (bands != 1)
-            throw InputError(path + ": PNG holds only --svf or --sky-visible; use .tif for " + std::to_string(bands) +
-                             " bands");
-        write_fraction_png(path, dem, data);
-    } else {
-        raster::write_float_raster(path, dem.width, dem.height, bands, data, dem.georef, names);
-    }
-    std::printf("wrote %s (%d band%s)\n", path.c_str(), bands, bands == 1 ? "" : "s");
+// Stages one output (committed with the others at the end) and notes its "wrote" line.
+void write_raster(StagedOutputs& outputs, std::vector<std::string>& wrote, const std::string& path,
+                  const dem::Dem& dem, int bands, const float* data, const std::vector<std::string>& names) {
+    outputs.stage(path, [&](const std::filesystem::path& tmp) {
+        if (is_png(path))
+            write_fraction_png(tmp.string(), dem, data);
+        else
+            raster::write_float_raster(tmp, dem.width, dem.height, bands, data, dem.georef, names);
+    });
+    wrote.push_back("wrote " + path + " (" + std::to_string(bands) + " band" + (bands == 1 ? "" : "s") + ")");
 }
 
 void run_visibility(VisibilityOptions& o) {
@@ -102,8 +104,20 @@ void run_visibility(VisibilityOptions& o) {
     if ((!o.sh.empty() || !o.log_sh.empty()) && o.horizon.directions < 4)
         throw InputError("--sh/--log-sh: need at least 4 --directions");
     const auto rule = o.wedges == "constant" ? visibility::WedgeRule::constant : visibility::WedgeRule::linear;
+    const std::vector<std::string> extensions = {".tif", ".tiff", ".png"};
+    IoPlan plan;
+    plan.inputs("DEM", o.dem.files);
+    plan.output("--svf", o.svf, extensions).output("--sky-visible", o.sky_visible, extensions);
+    plan.output("--horizons", o.horizons, extensions).output("--sh", o.sh, extensions);
+    plan.output("--log-sh", o.log_sh, extensions);
+    plan.check();
+    for (const std::string* multi_band : {&o.horizons, &o.sh, &o.log_sh})
+        if (is_png(*multi_band))
+            throw InputError(*multi_band + ": PNG holds only --svf or --sky-visible; use .tif for the " +
+                             std::to_string(multi_band == &o.horizons ? o.horizon.directions : 16) + " bands");
 
     const dem::Dem dem = load_dem_input(o.dem);
+    warn_if_single_line(dem);
     const visibility::VisibilityGrid grid(dem);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 
@@ -124,6 +138,9 @@ void run_visibility(VisibilityOptions& o) {
     for (const auto& stage : result.stages)
         std::printf("  %s on %s: %.3f s\n", stage.label.c_str(), stage.path.c_str(), stage.seconds);
     const visibility::HorizonSet& set = result.horizons;
+    // Every output changes together at the end, or none does.
+    StagedOutputs outputs;
+    std::vector<std::string> wrote;
 
     if (!o.horizons.empty()) {
         // Bands in the user's order: azimuths clockwise from north, from the smallest (north
@@ -144,12 +161,12 @@ void run_visibility(VisibilityOptions& o) {
                           visibility::user_azimuth_deg(order[band], set.directions));
             names.emplace_back(buf);
         }
-        write_raster(o.horizons, dem, set.directions, deg.data(), names);
+        write_raster(outputs, wrote, o.horizons, dem, set.directions, deg.data(), names);
     }
     if (!o.svf.empty())
-        write_raster(o.svf, dem, 1, result.svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
+        write_raster(outputs, wrote, o.svf, dem, 1, result.svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
     if (!o.sky_visible.empty())
-        write_raster(o.sky_visible, dem, 1, result.sky_visible.data(),
+        write_raster(outputs, wrote, o.sky_visible, dem, 1, result.sky_visible.data(),
                      {"sky_visible: visible fraction of the upper hemisphere"});
     if (!o.sh.empty() || !o.log_sh.empty()) {
         const std::span<const float> log_sh(result.log_sh);
@@ -158,14 +175,16 @@ void run_visibility(VisibilityOptions& o) {
             const int l = int(std::sqrt(double(i)));
             names.push_back("SH l=" + std::to_string(l) + " m=" + std::to_string(i - l * l - l));
         }
-        if (!o.log_sh.empty()) write_raster(o.log_sh, dem, 16, log_sh.data(), names);
+        if (!o.log_sh.empty()) write_raster(outputs, wrote, o.log_sh, dem, 16, log_sh.data(), names);
         if (!o.sh.empty()) {
             const Stopwatch t1;
             const auto vis = visibility::exp_sh_raster(log_sh, texels, exp_method, o.horizon.threads);
             std::printf("exp (%s): %.3f s\n", o.exp_method.c_str(), t1.seconds());
-            write_raster(o.sh, dem, 16, vis.data(), names);
+            write_raster(outputs, wrote, o.sh, dem, 16, vis.data(), names);
         }
     }
+    outputs.commit();
+    for (const std::string& line : wrote) std::printf("%s\n", line.c_str());
 }
 
 }  // namespace

@@ -12,8 +12,9 @@
 #include "app/bench/exp_study.hpp"
 #include "app/bench/log_epsilon_study.hpp"
 #include "app/command.hpp"
+#include "app/io_plan.hpp"
 #include "core/sh/optimal_linear_fit.hpp"
-#include "core/util/atomic_file.hpp"
+#include "core/util/staged_outputs.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::app {
@@ -30,8 +31,8 @@ struct BenchShOptions {
     sh::ExpOptions exp;
 };
 
-void write_text(const std::string& path, const std::string& text) {
-    write_atomically(path, [&](const std::filesystem::path& tmp) {
+void write_text(StagedOutputs& outputs, const std::string& path, const std::string& text) {
+    outputs.stage(path, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out << text;
         if (!out.flush()) throw input_error(path, "cannot write");
@@ -39,10 +40,16 @@ void write_text(const std::string& path, const std::string& text) {
 }
 
 void run_bench_sh(const BenchShOptions& o) {
+    IoPlan plan;
+    plan.output("--csv", o.csv, {".csv"}).output("--eps-csv", o.eps_csv, {".csv"});
+    plan.output("--fit-optimal-linear", o.fit_table, {});
+    plan.check();
+    StagedOutputs outputs;
     if (!o.fit_table.empty()) {
         const sh::OptimalLinearFitOptions fit;
         const auto rows = sh::fit_optimal_linear(fit);
-        write_text(o.fit_table, sh::format_optimal_linear_table(rows, fit));
+        write_text(outputs, o.fit_table, sh::format_optimal_linear_table(rows, fit));
+        outputs.commit();
         std::printf("optimal-linear table: %zu rows -> %s\n", rows.size(), o.fit_table.c_str());
         return;
     }
@@ -64,15 +71,18 @@ void run_bench_sh(const BenchShOptions& o) {
         std::printf("%-6s %-17s %-14s %8d %9.3g %9.3g %10.3g %10.3g %10.3g %8.1f %9.3g %9.3g %4d\n", r.kind.c_str(),
                     r.method.c_str(), r.param.c_str(), r.blockers, r.magnitude, r.dc, r.rms_error, r.rms_error_max,
                     r.truth_rms_error, r.ns_per_exp, r.min_value, r.max_value, r.nonfinite);
-    if (!o.csv.empty()) write_text(o.csv, bench::exp_study_csv(rows));
+    if (!o.csv.empty()) write_text(outputs, o.csv, bench::exp_study_csv(rows));
     if (!o.eps_csv.empty()) {
         const std::vector<double> eps = {0.3, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 1e-4, 1e-5, 1e-6};
         auto rows_eps = bench::run_log_epsilon_study(eps);
         const auto vis = bench::run_visibility_epsilon_study(
             {0.3, 0.1, 0.05, 0.02, 0.01, 1e-3, 1e-5}, {0, 4, 16, 64, 256, 500}, o.scenes / 2 > 0 ? o.scenes / 2 : 1);
         rows_eps.insert(rows_eps.end(), vis.begin(), vis.end());
-        write_text(o.eps_csv, bench::log_epsilon_csv(rows_eps));
+        write_text(outputs, o.eps_csv, bench::log_epsilon_csv(rows_eps));
     }
+    outputs.commit();
+    for (const std::string* path : {&o.csv, &o.eps_csv})
+        if (!path->empty()) std::printf("wrote %s\n", path->c_str());
 }
 
 void add_bench_sh_command(CLI::App& bench) {

@@ -27,6 +27,7 @@
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/temp_files.hpp"
 #include "core/util/stopwatch.hpp"
 
 namespace ts::app {
@@ -128,6 +129,7 @@ void compare_devices(const BenchRelightArgs& a, const dem::Dem& dem, const rende
     std::vector<PathTime> paths;
     const auto dir = std::filesystem::temp_directory_path() / ("ts_bench_devices_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
+    if (a.out_dir.empty()) temp_files::track_directory(dir);  // an interrupt removes it too
     for (const std::string label : {"default", "cpu", "vulkan"}) {
         DeviceArgs args;
         args.device = label == "default" ? "auto" : label;
@@ -180,6 +182,10 @@ void run_bench_relight(const BenchRelightArgs& a) {
     if (a.frames < 1) throw InputError("--frames must be >= 1");
     render::SceneOptions options = scene_options(a.render);
     const render::Exposure exposure = exposure_of(a.render);
+    IoPlan plan;
+    plan_render_inputs(plan, a.render, options);
+    plan.output_directory("--keep", a.out_dir);
+    plan.check();
     const dem::Dem dem = load_dem_input(a.render.dem);
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
@@ -207,6 +213,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
         a.out_dir.empty() ? std::filesystem::temp_directory_path() / ("ts_bench_relight_" + std::to_string(::getpid()))
                           : std::filesystem::path(a.out_dir);
     std::filesystem::create_directories(dir);
+    if (a.out_dir.empty()) temp_files::track_directory(dir);  // an interrupt removes it too
     // Each phase writes new files: replacing a file by rename makes ext4 (auto_da_alloc) start
     // writing the new one back at once, a cost a fresh output folder does not pay.
     auto frame_path = [&](int k, const char* phase = "frame") {
@@ -252,6 +259,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
     for (int k = 0; k < a.frames; ++k) file_bytes += std::filesystem::file_size(frame_path(k));
     if (a.out_dir.empty()) {
         std::filesystem::remove_all(dir);
+        temp_files::forget_directory(dir);
     } else {  // keep the frames, not the timing copies
         for (int k = 0; k < a.frames; ++k) std::filesystem::remove(frame_path(k, "serial"));
         for (int r = 0; r < kRepeats; ++r) std::filesystem::remove(frame_path(r, "parts"));

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "app/io_plan.hpp"
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
 #include "app/bench/error_stats.hpp"
@@ -232,6 +233,9 @@ void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<R
 
 void run_bench_render(const BenchRenderOptions& o) {
     if (o.dems.empty()) throw InputError("bench render: give at least one DEM");
+    IoPlan plan;
+    plan.inputs("DEM", o.dems).input("--sky", light::parse_sky_options(o.sky).hdr_path).output("--csv", o.csv, {".csv"});
+    plan.check();
     std::printf("%-34s %-8s %7s %6s %6s %9s %9s %9s %8s %9s %8s %8s %8s %7s\n", "dem", "sun", "az", "el", "n",
                 "rel_rmse", "rel_p99", "rel_bias", "iou", "mask_diff", "frame_ms", "sunvis", "ref_sun", "ref_s");
     std::vector<Row> rows;
@@ -242,6 +246,7 @@ void run_bench_render(const BenchRenderOptions& o) {
             out << csv_text(rows);
             if (!out.flush()) throw input_error(o.csv, "cannot write");
         });
+    if (!o.csv.empty()) std::printf("wrote %s\n", o.csv.c_str());
 }
 
 }  // namespace

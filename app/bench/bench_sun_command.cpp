@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/io_plan.hpp"
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
 #include "app/bench/error_stats.hpp"
@@ -159,6 +160,9 @@ void add_bench_sun_command(CLI::App& bench) {
     cmd->callback([o] {
         for (double e : o->elevations)
             if (!(e >= -90 && e <= 90)) throw InputError("--elevations: each must be within [-90, 90] degrees");
+        IoPlan plan;
+        plan.inputs("DEM", o->dems).output("--csv", o->csv, {".csv"});
+        plan.check();
         std::vector<CsvRow> rows;
         for (const std::string& path : o->dems)
             for (double near_field : o->near_fields) run_dem(*o, path, near_field, rows);
@@ -172,6 +176,7 @@ void add_bench_sun_command(CLI::App& bench) {
                     << csv_number(r.iou_mean) << ',' << csv_number(r.mae_mean) << '\n';
             if (!out.flush()) throw InputError(o->csv + ": cannot write");
         });
+        std::printf("wrote %s\n", o->csv.c_str());
     });
 }
 

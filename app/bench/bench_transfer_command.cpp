@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "app/io_plan.hpp"
 #include "app/bench/bench_command.hpp"
 #include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
@@ -92,6 +93,9 @@ double stage_ms(const auto& stages, const std::string& label) {
 void run_bench_transfer(const BenchTransferOptions& o) {
     if (o.frames < 1) throw InputError("--frames: must be >= 1");
     if (o.lobe != "diffuse" && o.lobe != "phong") throw InputError("--lobe: diffuse or phong, got " + o.lobe);
+    IoPlan plan;
+    plan.inputs("DEM", o.dem.files);
+    plan.check();
     const dem::Dem dem = load_dem_input(o.dem);
     const visibility::VisibilityGrid vgrid(dem);
     const terrain::HeightGrid& grid = vgrid.view();

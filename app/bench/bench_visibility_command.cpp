@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "app/io_plan.hpp"
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
 #include "app/bench/error_stats.hpp"
@@ -458,6 +459,9 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
 }
 
 void run_bench_visibility(const BenchVisibilityOptions& o) {
+    IoPlan plan;
+    plan.inputs("DEM", o.dems).output("--csv", o.csv, {".csv"});
+    plan.check();
     if (o.whole) {
         if (o.reference_directions % o.full_directions != 0)
             throw InputError("--full-directions must divide --reference-directions");

@@ -78,7 +78,9 @@ std::shared_ptr<const Crs> Crs::from_definition(const std::string& definition) {
     auto impl = std::make_unique<Impl>();
     impl->definition = definition;
     impl->ctx = proj_context_create();
-    proj_log_level(impl->ctx, PJ_LOG_NONE);  // errors reach the user as InputError, not PROJ's log
+    // Errors reach the user as one InputError line, never as PROJ's log: no level, no sink.
+    proj_log_level(impl->ctx, PJ_LOG_NONE);
+    proj_log_func(impl->ctx, nullptr, [](void*, int, const char*) {});
     impl->crs = proj_create(impl->ctx, definition.c_str());
     if (!impl->crs || !is_crs_type(proj_get_type(impl->crs)))
         throw InputError("unknown coordinate reference system '" + definition + "'");

@@ -201,6 +201,7 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     const float ground = surface(g, std::clamp(cam_.x, 0.0, double(g.width - 1)), std::clamp(cam_.y, 0.0, double(g.height - 1)));
     const bool inside = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
     below_terrain_ = inside && !std::isnan(ground) && cam_.z <= double(ground);
+    ground_m_ = double(ground);
 
     const PatchPyramid pyr(g, options_.threads);
     const double h = radians(camera.heading_deg), p = radians(camera.pitch_deg);

@@ -63,6 +63,8 @@ public:
     std::size_t hit_count() const;
     // Whether the camera starts below the terrain (every ray then hits at once).
     bool camera_below_terrain() const { return below_terrain_; }
+    // The terrain's height under the camera (clamped onto the DEM), metres above its datum.
+    double ground_height_m() const { return ground_m_; }
 
     // Composes a frame: per-texel radiance (width*height of the grid) sampled at the hits, the
     // sky (and the sun's disc) elsewhere. `image` is resized to width*height once.
@@ -79,6 +81,7 @@ private:
     PerspectiveOptions options_;
     glm::dvec3 cam_{0.0};  // camera in (texel-centre col, texel-centre row, height m)
     bool below_terrain_ = false;
+    double ground_m_ = 0;
     std::vector<Pixel> pixels_;
 };
 

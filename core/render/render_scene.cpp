@@ -68,8 +68,18 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
             PerspectiveOptions po = options_.perspective;
             po.curvature = options_.renderer.curvature;
             po.threads = options_.renderer.threads;
-            target_ = std::make_unique<CameraTarget>(
+            auto camera = std::make_unique<CameraTarget>(
                 *grid_, dem_.georef, options_.camera ? *options_.camera : default_camera(*grid_, dem_.georef), po);
+            // Either picture would be one colour: the terrain's from inside it, or the sky alone.
+            const PerspectiveView& view = camera->view();
+            if (view.camera_below_terrain())
+                throw InputError("--camera: the camera at " + std::to_string(int(std::lround(camera->camera().height_m))) +
+                                 " m is below the terrain there (" + std::to_string(int(std::lround(view.ground_height_m()))) +
+                                 " m): raise its height");
+            if (view.hit_count() == 0)
+                throw InputError("--camera: the camera sees no terrain (every ray misses the DEM): turn it towards "
+                                 "the DEM or look further down");
+            target_ = std::move(camera);
             break;
         }
     }

@@ -1,26 +1,13 @@
 #include "core/util/atomic_file.hpp"
 
-#include <atomic>
-#include <random>
-#include <string>
 #include <system_error>
-#include <unistd.h>
+#include <utility>
 
 #include "core/util/error.hpp"
+#include "core/util/temp_files.hpp"
 
 namespace ts {
 namespace fs = std::filesystem;
-
-namespace {
-fs::path temporary_sibling(const fs::path& target) {
-    // pid + a random tag keeps concurrent writers (tests, batch jobs) apart.
-    std::random_device rd;
-    const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(rd() % 1000000);
-    fs::path tmp = target;
-    tmp.replace_filename("." + target.stem().string() + ".tmp-" + tag + target.extension().string());
-    return tmp;
-}
-}  // namespace
 
 void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
@@ -31,18 +18,17 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
     if (fs::is_directory(target, ec)) {
         throw input_error(target.string(), "is a directory, expected an output file name");
     }
-    const fs::path tmp = temporary_sibling(target);
+    const fs::path tmp = temp_files::sibling_for(target);
+    temp_files::track(tmp);
     try {
         write(tmp);
     } catch (...) {
         fs::remove(tmp, ec);
+        temp_files::forget(tmp);
         throw;
     }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw input_error(target.string(), "cannot write: " + ec.message());
-    }
+    const std::pair<fs::path, fs::path> move{tmp, target};
+    temp_files::commit({&move, 1});
 }
 
 }  // namespace ts

@@ -1,0 +1,42 @@
+#pragma once
+// What one command reads and writes, checked before it computes anything, so a bad path fails
+// in a moment instead of after minutes of visibility. Every command (and every new one) lists
+// its files here and calls check() before the DEM is read:
+//
+//   IoPlan plan;
+//   plan.inputs("DEM", args.dem.files).input("--sky", sky.hdr_path);
+//   plan.output("--out", args.out, {".png", ".tif", ".tiff"});
+//   plan.check();
+//
+// Inputs: exist, are files, are readable. Outputs: the directory exists and is writable, the
+// path is not a directory, its extension is one the writer supports, no two outputs are the
+// same file. Output directories (relight): exist and are writable, or their parent does.
+#include <string>
+#include <vector>
+
+namespace ts::app {
+
+class IoPlan {
+public:
+    // A file the command reads; `what` names it for the user ("DEM", "--sky", "--times-file").
+    // An empty path is skipped (an option not given).
+    IoPlan& input(std::string what, std::string path);
+    IoPlan& inputs(const std::string& what, const std::vector<std::string>& paths);
+    // A file the command writes, with the extensions its writer supports (lower case, with the
+    // dot; matched case-insensitively; none = any). An empty path is skipped.
+    IoPlan& output(std::string what, std::string path, std::vector<std::string> extensions);
+    // A directory the command writes its files into; it may not exist yet.
+    IoPlan& output_directory(std::string what, std::string path);
+
+    // Throws ts::InputError for the first problem: "PATH: problem (WHAT)".
+    void check() const;
+
+private:
+    struct Entry {
+        std::string what, path;
+        std::vector<std::string> extensions;
+    };
+    std::vector<Entry> inputs_, outputs_, directories_;
+};
+
+}  // namespace ts::app

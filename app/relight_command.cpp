@@ -106,6 +106,7 @@ void run_relight(const RelightArgs& a) {
         throw input_error(a.out_dir, "cannot create the output directory");
 
     const dem::Dem dem = load_dem_input(a.render.dem);
+    attach_meshes(a.render, dem, options);
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;
@@ -145,6 +146,7 @@ void run_relight(const RelightArgs& a) {
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
+    print_stages(a.render, *scene);
     const double setup_s = t0.seconds();
 
     render::LinearImage image;

@@ -10,6 +10,7 @@
 
 #include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
+#include "app/mesh_options.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::app {
@@ -34,6 +35,7 @@ struct RenderArgs {
     bool no_band_correction = false;
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     int threads = 0;
+    MeshArgs meshes;  // --mesh, --at, ... (app/mesh_options.hpp)
 };
 
 // Adds the shared options to `cmd` (not the sun/time or output options).
@@ -42,5 +44,10 @@ void add_render_options(CLI::App& cmd, RenderArgs& args);
 // Parses and checks everything that can be checked before reading the DEM.
 render::SceneOptions scene_options(const RenderArgs& args);
 render::Exposure exposure_of(const RenderArgs& args);
+// After the DEM is read: the meshes of --mesh placed on it, imported, their spheres from the
+// cache, into options.meshes (InputError for a mesh off the DEM or a bad mesh file).
+void attach_meshes(const RenderArgs& args, const dem::Dem& dem, render::SceneOptions& options);
+// --verbose: each visibility stage and where it ran (the mesh blockers' on the CPU).
+void print_stages(const RenderArgs& args, const render::Scene& scene);
 
 }  // namespace ts::app

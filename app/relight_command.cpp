@@ -113,6 +113,7 @@ void run_relight(const RelightArgs& a) {
 
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
+    attach_meshes(a.render, dem, options);
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;
@@ -153,6 +154,7 @@ void run_relight(const RelightArgs& a) {
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
+    print_stages(a.render, *scene);
     const double setup_s = t0.seconds();
 
     render::LinearImage image;

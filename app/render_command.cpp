@@ -50,6 +50,7 @@ void run_render(const RenderCommandArgs& a) {
 
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
+    attach_meshes(a.render, dem, options);
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;
@@ -59,6 +60,7 @@ void run_render(const RenderCommandArgs& a) {
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
+    print_stages(a.render, *scene);
     const render::SunState sun = time ? scene->sun_at(*time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
     if (sun.elevation_deg < -0.27)
         std::fprintf(stderr, "terrashade: warning: the sun is below the horizon (elevation %.2f deg): sky light only\n",

@@ -1,6 +1,7 @@
 #include "app/render_options.hpp"
 
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <string_view>
 
@@ -88,6 +89,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 256));
+    add_mesh_options(cmd, a.meshes);
 }
 
 render::SceneOptions scene_options(const RenderArgs& a) {
@@ -145,6 +147,8 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
+    parse_mesh_specs(a.meshes);  // everything about --mesh that needs no DEM, checked now
+    o.blocker_options = blocker_options(a.meshes);
     return o;
 }
 
@@ -153,6 +157,20 @@ void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOp
     plan.input("--sky", o.sky.hdr_path);
     if (o.materials != "rule") plan.input("--materials", o.materials);
     plan.input("--albedo", o.albedo);
+    for (const MeshSpec& m : parse_mesh_specs(a.meshes)) plan.input("--mesh", m.file);
+}
+
+void attach_meshes(const RenderArgs& a, const dem::Dem& dem, render::SceneOptions& o) {
+    o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes);
+}
+
+void print_stages(const RenderArgs& a, const render::Scene& scene) {
+    for (const std::string& w : scene.warnings()) std::fprintf(stderr, "terrashade: warning: %s\n", w.c_str());
+    if (!a.device.verbose) return;
+    for (const visibility::VisibilityStage& s : scene.state().visibility_stages())
+        std::printf("stage: %s on %s, %.3f s\n", s.label.c_str(), s.path.c_str(), s.seconds);
+    if (!scene.blockers().empty() && scene.state().visibility_path() != "cpu")
+        std::printf("stage: the mesh blockers' log-SH and sun shadows are computed on the CPU (no device kernel yet)\n");
 }
 
 render::Exposure exposure_of(const RenderArgs& a) {

@@ -11,6 +11,7 @@
 #include "app/compute_device.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
+#include "app/mesh_options.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::app {
@@ -36,6 +37,7 @@ struct RenderArgs {
     bool no_band_correction = false;
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     int threads = 0;
+    MeshArgs meshes;  // --mesh, --at, ... (app/mesh_options.hpp)
 };
 
 // Adds the shared options to `cmd` (not the sun/time or output options).
@@ -48,5 +50,10 @@ render::Exposure exposure_of(const RenderArgs& args);
 void plan_render_inputs(IoPlan& plan, const RenderArgs& args, const render::SceneOptions& options);
 // The picture formats render::write_image writes.
 inline const std::vector<std::string> kImageExtensions = {".png", ".tif", ".tiff", ".exr"};
+// After the DEM is read: the meshes of --mesh placed on it, imported, their spheres from the
+// cache, into options.meshes (InputError for a mesh off the DEM or a bad mesh file).
+void attach_meshes(const RenderArgs& args, const dem::Dem& dem, render::SceneOptions& options);
+// --verbose: each visibility stage and where it ran (the mesh blockers' on the CPU).
+void print_stages(const RenderArgs& args, const render::Scene& scene);
 
 }  // namespace ts::app

@@ -27,3 +27,29 @@ Sphere enclosing_sphere(const Sphere& a, const Sphere& b);
 SphereHierarchy build_sphere_hierarchy(std::span<const Sphere> spheres);
 
 }  // namespace ts::blockers
+
+namespace ts::blockers {
+
+// Depth-first walk over the leaves below the nodes `keep(node.bound)` accepts: a node refused
+// is skipped with everything below it. Callers pass tests that a sphere inside a refused one
+// must fail too (a cone seen from outside a sphere holds the cones of the spheres inside it),
+// so the walk finds exactly the leaves the test accepts, without testing them all.
+template <class Keep, class Leaf>
+void visit_leaves(const SphereHierarchy& h, Keep&& keep, Leaf&& leaf) {
+    if (h.nodes.empty()) return;
+    int stack[64];  // the tree is balanced: depth <= log2(kMaxSpheres) + 1, far below 64
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const SphereNode& n = h.nodes[std::size_t(stack[--top])];
+        if (!keep(n.bound)) continue;
+        if (n.is_leaf()) {
+            leaf(n.sphere);
+            continue;
+        }
+        stack[top++] = n.right;
+        stack[top++] = n.left;
+    }
+}
+
+}  // namespace ts::blockers

@@ -38,6 +38,11 @@ geo::Georef extent_georef(const ExtentRequest& e, const geo::Georef& dem_georef)
 
 Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), options_(options) {
     grid_ = std::make_unique<terrain::HeightGrid>(terrain::metric_view(dem_));
+    // Meshes first: one off the DEM is an input error found before any heavy work.
+    if (!options_.meshes.empty()) {
+        blockers_ = place_scene_meshes(options_.meshes, *grid_, dem_.georef, options_.blocker_options, warnings_);
+        options_.renderer.blockers = &blockers_;
+    }
     NormalField normals = terrain_normals(*grid_, options_.renderer.threads);
     MaterialRaster materials;
     if (options_.materials.empty() || options_.materials == "rule") {

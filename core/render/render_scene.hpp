@@ -16,6 +16,7 @@
 #include "core/material/material.hpp"
 #include "core/render/perspective_view.hpp"
 #include "core/render/render_target.hpp"
+#include "core/render/scene_blockers.hpp"
 #include "core/render/shading_state.hpp"
 #include "core/render/sky_table.hpp"
 #include "core/render/view_shading.hpp"
@@ -57,6 +58,9 @@ struct SceneOptions {
     int map_width = 0, map_height = 0;
     // Extent: the picture's bounds in a CRS (empty: the DEM's) and its size in pixels.
     std::optional<ExtentRequest> extent;
+    // Meshes over the DEM: their spheres shadow the terrain's sky and sun (docs/blockers.md).
+    std::vector<SceneMesh> meshes;
+    blockers::SphereBlockerOptions blocker_options;
 };
 
 // Where the sun is computed for a DEM: its centre (lon/lat from its georef) at its mean height.
@@ -94,11 +98,17 @@ public:
     // the image: there it is the image's rgb, and this is empty).
     const std::vector<glm::vec3>& texel_radiance() const { return texel_radiance_; }
     const SceneOptions& options() const { return options_; }
+    // The meshes placed on the grid (empty without --mesh), and what placing them found
+    // (one line each: a mesh below the terrain).
+    const blockers::SphereBlockers& blockers() const { return blockers_; }
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
     const dem::Dem& dem_;
     SceneOptions options_;
     std::unique_ptr<terrain::HeightGrid> grid_;
+    blockers::SphereBlockers blockers_;  // the state points to it: declared before the state
+    std::vector<std::string> warnings_;
     std::unique_ptr<ShadingState> state_;
     std::unique_ptr<RenderTarget> target_;
     ViewShading view_;

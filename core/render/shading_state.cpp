@@ -9,6 +9,8 @@
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/material/log_brdf.hpp"
+#include "core/visibility/blocker_sun_shadow.hpp"
+#include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/visibility_backend.hpp"
 #include "core/util/stopwatch.hpp"
@@ -77,11 +79,13 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     request.horizon.progress = options.progress;
     request.log_sh = true;
     request.log_eps = options.visibility_log_eps;
+    request.blockers = options.blockers;
     std::unique_ptr<visibility::VisibilityBackend> own_cpu;
     visibility::VisibilityBackend* vb = options.visibility;
     if (!vb) own_cpu = visibility::make_cpu_visibility_backend(), vb = own_cpu.get();
     visibility::VisibilityResult vis = vb->compute(grid, request);
     s.visibility_path_ = vis.path();
+    s.visibility_stages_ = vis.stages;
     s.visibility_s_ = t0.seconds();
     const float* log_sh = vis.log_sh.data();
 
@@ -159,12 +163,18 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
             sun_sweep_ = std::make_unique<visibility::SunShadowSweep>(grid_, so);
         }
         sun_sweep_->compute(sun.azimuth_deg, sun.elevation_deg, out);
-        return;
+    } else {
+        visibility::SunVisibilityOptions so;
+        so.curvature = options_.curvature;
+        so.threads = options_.threads;
+        out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
     }
-    visibility::SunVisibilityOptions so;
-    so.curvature = options_.curvature;
-    so.threads = options_.threads;
-    out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
+    if (options_.blockers && !options_.blockers->empty()) {
+        if (!blocker_sun_)
+            blocker_sun_ = std::make_unique<visibility::BlockerSunShadow>(
+                grid_, *options_.blockers, visibility::curvature_factor(options_.curvature), options_.threads);
+        blocker_sun_->apply(sun.azimuth_deg, sun.elevation_deg, out);
+    }
 }
 
 }  // namespace ts::render

@@ -27,11 +27,16 @@
 #include "core/terrain/height_grid.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sun_visibility.hpp"
+#include "core/visibility/visibility_backend.hpp"
 
 namespace ts {
 class ProgressBar;
 }
+namespace ts::blockers {
+struct SphereBlockers;
+}
 namespace ts::visibility {
+class BlockerSunShadow;
 class SunShadowSweep;
 class VisibilityBackend;
 }  // namespace ts::visibility
@@ -77,6 +82,10 @@ struct RendererOptions {
     // Per-frame sun visibility: the sweep (core/visibility/sun_sweep.hpp, built on the first frame
     // and kept) or the exact path (the reference; `--sun-shadows exact`).
     visibility::SunMethod sun_method = visibility::SunMethod::sweep;
+    // Mesh blockers over the grid (must outlive the state): their sphere log-SH joins the
+    // visibility (through the backend's request), their sun shadows multiply each frame's sun
+    // visibility. nullptr or empty: none.
+    const blockers::SphereBlockers* blockers = nullptr;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
 };
@@ -100,8 +109,10 @@ public:
     // One-time cost split: horizons + log-SH, and the diffuse transfer.
     double visibility_seconds() const { return visibility_s_; }
     double transfer_seconds() const { return transfer_s_; }
-    // Where the horizons were computed ("cpu" or the Vulkan device's name).
+    // Where the horizons were computed ("cpu" or the Vulkan device's name), and every stage of
+    // the visibility with where it ran.
     const std::string& visibility_path() const { return visibility_path_; }
+    const std::vector<visibility::VisibilityStage>& visibility_stages() const { return visibility_stages_; }
 
     // Diffuse transfer in one of two forms: the fused compact copy (CPU path) or the backend's
     // field (then the frame adds the sun and albedo in a second pass).
@@ -117,7 +128,8 @@ public:
     int directions() const { return options_.directions; }
 
     // The sun's visible fraction per texel (0 everywhere when `sun_up` is false) into `out`
-    // (texels() entries). The sweep is built on the first call and kept.
+    // (texels() entries): the terrain's, times the mesh blockers' in their footprints. The
+    // sweep is built on the first call and kept.
     void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out);
 
 private:
@@ -131,6 +143,7 @@ private:
     NormalField normals_;
     double visibility_s_ = 0, transfer_s_ = 0;
     std::string visibility_path_ = "cpu";
+    std::vector<visibility::VisibilityStage> visibility_stages_;
     std::unique_ptr<DiffuseShading> diffuse_;
     std::unique_ptr<ShadeField> diffuse_field_;
     std::vector<std::uint32_t> spec_index_;
@@ -138,6 +151,7 @@ private:
     std::vector<std::uint32_t> water_index_;
     std::vector<float> water_horizons_;
     std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;
+    std::unique_ptr<visibility::BlockerSunShadow> blocker_sun_;
 };
 
 // The one-time step: visibility, diffuse transfer, what the views need. `grid` must outlive

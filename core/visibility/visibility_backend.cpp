@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "core/util/error.hpp"
+#include "core/visibility/blocker_log_sh.hpp"
+#include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/visibility_products.hpp"
 #include "core/util/stopwatch.hpp"
@@ -22,7 +24,7 @@ public:
         result.horizons = compute_horizons(grid, request.horizon);
         result.stages.push_back({"horizons (" + std::string(method_name(request.horizon.method)) + ")", kCpu,
                                  t0.seconds()});
-        complete_on_cpu(request, result);
+        complete_on_cpu(grid, request, result);
         return result;
     }
 };
@@ -39,7 +41,7 @@ void check_request(const VisibilityRequest& request) {
                          std::to_string(request.horizon.directions));
 }
 
-void complete_on_cpu(const VisibilityRequest& request, VisibilityResult& result) {
+void complete_on_cpu(const terrain::HeightGrid& grid, const VisibilityRequest& request, VisibilityResult& result) {
     const HorizonSet& set = result.horizons;
     const int threads = request.horizon.threads;
     const bool linear = request.wedges == WedgeRule::linear;
@@ -72,6 +74,19 @@ void complete_on_cpu(const VisibilityRequest& request, VisibilityResult& result)
         what += ", sky_visible (constant wedges)";
     }
     if (!what.empty()) result.stages.push_back({what.substr(2), kCpu, t0.seconds()});
+
+    if (request.log_sh && request.blockers && !request.blockers->empty()) {
+        const Stopwatch t1;
+        const ReceiverWindow& w = request.horizon.window;
+        const ReceiverWindow resolved{w.col0, w.row0, set.width, set.height};
+        const BlockerStageStats st =
+            add_blocker_log_sh(grid, resolved, *request.blockers,
+                               curvature_factor(request.horizon.curvature), threads, result.log_sh.data());
+        result.stages.push_back({"sphere blockers (" + std::to_string(request.blockers->sphere_count()) +
+                                     " spheres, " + std::to_string(st.texels_changed) + " texels, " +
+                                     std::to_string(st.sphere_texel_pairs) + " sphere-texel pairs)",
+                                 kCpu, t1.seconds()});
+    }
 }
 
 std::unique_ptr<VisibilityBackend> make_cpu_visibility_backend() { return std::make_unique<CpuVisibilityBackend>(); }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/blockers/placed_spheres.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/util/uninitialised_vector.hpp"
 #include "core/visibility/horizon_options.hpp"
@@ -33,6 +34,10 @@ struct VisibilityRequest {
     bool sky_visible = false;  // visible fraction of the upper hemisphere
     WedgeRule wedges = WedgeRule::linear;  // how svf and sky_visible integrate across azimuth
     float log_eps = kDefaultVisibilityLogEps;
+    // Mesh blockers over the grid (must outlive the call); their sphere log-SH joins the
+    // terrain's in the log-SH product (blocker_log_sh.hpp), inside each mesh's footprint. svf and
+    // sky_visible stay the terrain's. nullptr or empty: none.
+    const blockers::SphereBlockers* blockers = nullptr;
 };
 
 // One stage of a computation and where it ran, for logs and benchmarks.
@@ -65,8 +70,10 @@ public:
 std::unique_ptr<VisibilityBackend> make_cpu_visibility_backend();
 
 // Computes on the CPU the products `request` asks for that `result` does not hold yet (from
-// result.horizons), appending a stage for them. Any backend ends with it.
-void complete_on_cpu(const VisibilityRequest& request, VisibilityResult& result);
+// result.horizons), appending a stage for them, then adds the mesh blockers' log-SH (a stage
+// of its own, "sphere blockers"). Any backend ends with it: it is the one place blockers and
+// the height field meet.
+void complete_on_cpu(const terrain::HeightGrid& grid, const VisibilityRequest& request, VisibilityResult& result);
 
 // Checks what can be checked before any work (InputError).
 void check_request(const VisibilityRequest& request);

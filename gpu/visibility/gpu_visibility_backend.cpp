@@ -42,7 +42,7 @@ public:
         if (go.sky) label += ", svf, sky_visible";
         result.stages.push_back(
             {label, name(), t0.seconds()});
-        vis::complete_on_cpu(request, result);
+        vis::complete_on_cpu(grid, request, result);  // mesh blockers too, on the CPU
         return result;
     }
 

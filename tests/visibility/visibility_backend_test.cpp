@@ -57,7 +57,7 @@ TEST(VisibilityBackend, CompleteOnCpuFillsOnlyWhatIsMissing) {
     partial.horizons = compute_horizons(t.grid, r.horizon);
     partial.svf.assign(partial.horizons.texels(), 0.25f);  // as if a device had computed it
     partial.stages.push_back({"horizons (exact), svf", "some device", 0.0});
-    complete_on_cpu(r, partial);
+    complete_on_cpu(t.grid, r, partial);
     EXPECT_EQ(partial.svf[0], 0.25f);
     EXPECT_EQ(partial.sky_visible.size(), partial.horizons.texels());
     EXPECT_EQ(partial.path(), "some device");

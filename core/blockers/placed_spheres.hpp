@@ -1,0 +1,63 @@
+#pragma once
+// Sphere blockers placed over a height grid: each mesh's spheres in a metric frame anchored at a
+// point of the grid, and the knobs of casting them onto the terrain (docs/blockers.md).
+//
+// The frame is the one the terrain code measures in (core/visibility: horizons, sun sweep,
+// perspective view): x east along the grid's rows, y north against them, metres from the
+// anchor's texel-centre coordinates with each row's spacing (HeightGrid::dx_m / dy_m), z metres
+// above the DEM's datum (the grid's heights), the terrain dropped by Earth curvature with
+// distance from the anchor. A receiver texel (c, r) of height z sits at
+//   ((c - anchor.x) dx(r), (anchor.y - r) dy(r), z - curvature * horizontal distance^2).
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "core/blockers/sphere_blocker.hpp"
+#include "core/blockers/sphere_hierarchy.hpp"
+#include "core/blockers/sun_disc_occlusion.hpp"
+#include "core/mesh/placement.hpp"
+
+namespace ts::blockers {
+
+struct SphereBlockerOptions {
+    // A sphere adds its log-SH to a texel only while its cap there subtends more than this
+    // (steradians): 0.01 sr hides at most 0.01 / pi = 0.3% of a texel's cosine-weighted sky, and
+    // bounds the sky footprint to a disc of radius r / sin(theta_min) around each sphere.
+    double min_solid_angle_sr = 0.01;
+    RatioAttenuation attenuation;  // culling below the tangent plane and the solid-angle ratio
+    // Log-visibility inside a sphere's cap. Not the terrain's floor (log 0.1): an order-4 SH
+    // cap is smeared wide and shallow, where exp(f) ~ 1 + f, so a floor L darkens a small cap
+    // like an occluder of opacity -L; log 0.1 = -2.3 made the sky under a sphere up to 0.21
+    // too dark against the opaque cap, -1 keeps small caps right (docs/blockers.md).
+    double log_eps = -1.0;
+    double sun_radius_rad = kSunAngularRadiusRad;
+};
+
+// One mesh's spheres in its anchor frame (above), with their hierarchy for culling.
+struct PlacedSpheres {
+    std::string name;                // for messages (the mesh file)
+    glm::dvec2 anchor{0.0};          // texel-centre coordinates (col, row) of the frame's origin
+    std::vector<Sphere> spheres;     // x east, y north of the anchor, z above the datum, metres
+    SphereHierarchy hierarchy;       // over `spheres`; nodes[0].bound holds them all
+};
+
+struct SphereBlockers {
+    std::vector<PlacedSpheres> meshes;
+    SphereBlockerOptions options;
+    bool empty() const { return meshes.empty(); }
+    std::size_t sphere_count() const;
+};
+
+// The spheres of a mesh decomposition (normalised model frame) placed by `placement` at the
+// anchor: rotated and scaled as mesh::model_to_enu, lifted to placement.height_m (plus
+// ground_height_m when above_ground). Throws ts::InputError for a bad placement.
+PlacedSpheres place_spheres(std::span<const Sphere> model_spheres, const mesh::Placement& placement,
+                            glm::dvec2 anchor, double ground_height_m, std::string name = {});
+
+// Sphere solid-angle threshold as the sine of the cap half-angle it corresponds to:
+// 2 pi (1 - cos theta_min) = min_solid_angle_sr.
+double min_cap_sine(double min_solid_angle_sr);
+
+}  // namespace ts::blockers

@@ -1,0 +1,27 @@
+#pragma once
+// What one receiver point sees of a placed mesh's spheres (placed_spheres.hpp), through the
+// sphere hierarchy: the spheres that count for its sky, and the part of the sun they leave.
+// The receiver is in the mesh's anchor frame.
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/blockers/placed_spheres.hpp"
+
+namespace ts::blockers {
+
+// Appends the spheres whose cap subtends more than the threshold (min_cap_sine: sin theta_b >
+// min_sine, or the receiver inside) and, with options.cull_lower_hemisphere, reaches above the
+// plane of `normal`, with their centres relative to the receiver (so the receiver is the origin).
+// Both tests are inherited by the spheres inside a sphere, so whole subtrees are skipped.
+void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
+                          double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out);
+
+// Fraction of the sun's disc (unit direction `sun`) that the mesh's spheres leave visible from
+// the receiver: the product over spheres of (1 - covered fraction). Exact for one sphere; where
+// several partly cover the disc it takes their covers as independent, so overlapping
+// penumbrae come out a little dark (umbrae are exact: any sphere covering all gives 0).
+double sun_visible_past(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& sun,
+                        double sun_radius);
+
+}  // namespace ts::blockers

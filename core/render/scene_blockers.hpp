@@ -1,0 +1,37 @@
+#pragma once
+// Meshes standing over a DEM, turned into the sphere blockers the visibility and the sun
+// shadows read (core/blockers/placed_spheres.hpp): each placement's lon/lat becomes the anchor
+// of its frame on the grid, an `agl` height is added to the terrain's height there.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/blockers/placed_spheres.hpp"
+#include "core/geo/georef.hpp"
+#include "core/mesh/placement.hpp"
+#include "core/terrain/height_grid.hpp"
+
+namespace ts::render {
+
+// One mesh of a scene: its bounding spheres in the normalised model frame (a decomposition)
+// and where it stands.
+struct SceneMesh {
+    std::string name;  // the mesh file, for messages
+    mesh::Placement placement;
+    std::vector<blockers::Sphere> model_spheres;
+};
+
+// Texel-centre coordinates (col, row) of the placement's lon/lat. Throws ts::InputError naming
+// the mesh when it lies off the DEM (outside its outer edges) or the placement is invalid.
+glm::dvec2 mesh_anchor(const geo::Georef& georef, const mesh::Placement& placement, const std::string& name);
+
+// The terrain's height at texel-centre coordinates (bilinear over valid texels; NaN if void).
+double ground_height(const terrain::HeightGrid& grid, glm::dvec2 texel);
+
+// Places every mesh. `warnings` gets one line per mesh whose spheres all lie below the
+// terrain under its anchor (it then shadows nothing but the texels inside it).
+blockers::SphereBlockers place_scene_meshes(std::span<const SceneMesh> meshes, const terrain::HeightGrid& grid,
+                                            const geo::Georef& georef, const blockers::SphereBlockerOptions& options,
+                                            std::vector<std::string>& warnings);
+
+}  // namespace ts::render

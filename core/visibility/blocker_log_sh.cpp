@@ -1,0 +1,112 @@
+#include "core/visibility/blocker_log_sh.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/blockers/receiver_blockers.hpp"
+#include "core/terrain/terrain_normals.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/visibility/blocker_footprint.hpp"
+
+namespace ts::visibility {
+namespace {
+
+TexelRect intersect(const TexelRect& a, const TexelRect& b) {
+    return {std::max(a.col0, b.col0), std::max(a.row0, b.row0), std::min(a.col1, b.col1), std::min(a.row1, b.row1)};
+}
+
+TexelRect bounding(const TexelRect& a, const TexelRect& b) {
+    if (a.empty()) return b;
+    if (b.empty()) return a;
+    return {std::min(a.col0, b.col0), std::min(a.row0, b.row0), std::max(a.col1, b.col1), std::max(a.row1, b.row1)};
+}
+
+// The normals of the texels of `rect`, as terrain_normals gives them on the whole grid: the
+// rectangle is cut out with a one-texel margin (central differences read the neighbours).
+struct RectNormals {
+    TexelRect with_margin;
+    render::NormalField field;
+    glm::dvec3 at(int c, int r) const {
+        const std::size_t k = std::size_t(r - with_margin.row0) * std::size_t(with_margin.col1 - with_margin.col0) +
+                              std::size_t(c - with_margin.col0);
+        return {field.x[k], field.y[k], field.z[k]};
+    }
+};
+
+RectNormals normals_of(const terrain::HeightGrid& g, const TexelRect& rect, int threads) {
+    RectNormals out;
+    out.with_margin = {std::max(0, rect.col0 - 1), std::max(0, rect.row0 - 1), std::min(g.width, rect.col1 + 1),
+                       std::min(g.height, rect.row1 + 1)};
+    const TexelRect& m = out.with_margin;
+    const int w = m.col1 - m.col0, h = m.row1 - m.row0;
+    std::vector<float> z(std::size_t(w) * std::size_t(h));
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) z[std::size_t(r) * std::size_t(w) + std::size_t(c)] = g.at(m.col0 + c, m.row0 + r);
+    terrain::HeightGrid crop;
+    crop.width = w, crop.height = h, crop.z = z;
+    crop.dx_m.assign(g.dx_m.begin() + m.row0, g.dx_m.begin() + m.row1);
+    crop.dy_m.assign(g.dy_m.begin() + m.row0, g.dy_m.begin() + m.row1);
+    out.field = render::terrain_normals(crop, threads);
+    return out;
+}
+
+}  // namespace
+
+BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const ReceiverWindow& window,
+                                     const blockers::SphereBlockers& blockers, double curvature,
+                                     int threads, float* log_sh) {
+    BlockerStageStats stats;
+    if (blockers.empty()) return stats;
+    const blockers::SphereBlockerOptions& opt = blockers.options;
+    const double min_sine = blockers::min_cap_sine(opt.min_solid_angle_sr);
+    const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
+    std::vector<TexelRect> rects;
+    TexelRect all;
+    for (const blockers::PlacedSpheres& m : blockers.meshes) {
+        rects.push_back(intersect(sky_footprint(grid, m, min_sine), win));
+        all = bounding(all, rects.back());
+    }
+    if (all.empty()) return stats;
+    const RectNormals normals = normals_of(grid, all, threads);
+    const std::size_t texels = std::size_t(window.width) * std::size_t(window.height);
+    std::atomic<long long> visited{0}, changed{0}, pairs{0};
+    const int rows = all.row1 - all.row0;
+    parallel_rows(rows, threads, (long long)(all.col1 - all.col0) * 64 * 100, [&](int b, int e) {
+        std::vector<blockers::Sphere> seen;
+        long long v = 0, ch = 0, pr = 0;
+        for (int r = all.row0 + b; r < all.row0 + e; ++r)
+            for (int c = all.col0; c < all.col1; ++c) {
+                if (grid.is_hole(c, r)) continue;
+                const glm::dvec3 n = normals.at(c, r);
+                seen.clear();
+                bool inside_any = false;
+                for (std::size_t k = 0; k < rects.size(); ++k) {
+                    if (!rects[k].contains(c, r)) continue;
+                    inside_any = true;
+                    const blockers::PlacedSpheres& m = blockers.meshes[k];
+                    blockers::collect_sky_blockers(m, receiver_in_anchor_frame(grid, c, r, m, curvature), n,
+                                                   min_sine, opt.attenuation, seen);
+                }
+                v += inside_any;
+                if (seen.empty()) continue;
+                const sh::ShVec add =
+                    blockers::accumulate_blockers(seen, glm::dvec3(0.0), n, opt.log_eps, opt.attenuation);
+                const std::size_t t = std::size_t(r - window.row0) * std::size_t(window.width) +
+                                      std::size_t(c - window.col0);
+                for (int i = 0; i < 16; ++i) {
+                    float& to = log_sh[std::size_t(i) * texels + t];
+                    to = float(double(to) + add[std::size_t(i)]);
+                }
+                ++ch;
+                pr += (long long)seen.size();
+            }
+        visited += v, changed += ch, pairs += pr;
+    });
+    stats.texels_visited = visited, stats.texels_changed = changed, stats.sphere_texel_pairs = pairs;
+    return stats;
+}
+
+}  // namespace ts::visibility

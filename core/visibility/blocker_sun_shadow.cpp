@@ -1,0 +1,61 @@
+#include "core/visibility/blocker_sun_shadow.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include "core/blockers/receiver_blockers.hpp"
+#include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
+#include "core/util/parallel_for.hpp"
+
+namespace ts::visibility {
+
+BlockerSunShadow::BlockerSunShadow(const terrain::HeightGrid& grid, const blockers::SphereBlockers& blockers,
+                                   double curvature, int threads)
+    : grid_(grid), blockers_(blockers), curvature_(curvature), threads_(threads), range_(height_range(grid)) {
+    // The corner farthest from the anchor has the largest drop (distances from the grid's rows'
+    // largest spacing, so it is an upper bound on geographic grids too).
+    const double dx = grid.dx_m.empty() ? 0.0 : *std::max_element(grid.dx_m.begin(), grid.dx_m.end());
+    const double dy = grid.dy_m.empty() ? 0.0 : *std::max_element(grid.dy_m.begin(), grid.dy_m.end());
+    for (const blockers::PlacedSpheres& m : blockers.meshes) {
+        const double e = std::max(std::abs(m.anchor.x), std::abs(grid.width - 1 - m.anchor.x)) * dx;
+        const double n = std::max(std::abs(m.anchor.y), std::abs(grid.height - 1 - m.anchor.y)) * dy;
+        max_drop_.push_back((e * e + n * n) * curvature);
+    }
+}
+
+TexelRect BlockerSunShadow::footprint(std::size_t k, double azimuth_deg, double elevation_deg) const {
+    const glm::dvec3 sun = geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), radians(elevation_deg));
+    return sun_footprint(grid_, blockers_.meshes[k], sun, blockers_.options.sun_radius_rad,
+                         range_.low - max_drop_[k], range_.high);
+}
+
+SunShadowStats BlockerSunShadow::apply(double azimuth_deg, double elevation_deg, std::vector<float>& vis) const {
+    SunShadowStats stats;
+    const glm::dvec3 sun = geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_deg), radians(elevation_deg));
+    const double sun_radius = blockers_.options.sun_radius_rad;
+    for (std::size_t k = 0; k < blockers_.meshes.size(); ++k) {
+        const TexelRect rect = footprint(k, azimuth_deg, elevation_deg);
+        if (rect.empty()) continue;
+        const blockers::PlacedSpheres& m = blockers_.meshes[k];
+        std::atomic<long long> shadowed{0};
+        parallel_rows(rect.row1 - rect.row0, threads_, (long long)(rect.col1 - rect.col0) * 40, [&](int b, int e) {
+            long long s = 0;
+            for (int r = rect.row0 + b; r < rect.row0 + e; ++r)
+                for (int c = rect.col0; c < rect.col1; ++c) {
+                    float& v = vis[grid_.index(c, r)];
+                    if (!(v > 0.0f)) continue;  // NaN voids, or the terrain already hides the sun
+                    const double left =
+                        blockers::sun_visible_past(m, receiver_in_anchor_frame(grid_, c, r, m, curvature_), sun, sun_radius);
+                    if (left < 1.0) v = float(double(v) * left), ++s;
+                }
+            shadowed += s;
+        });
+        stats.texels_visited += rect.texels();
+        stats.texels_shadowed += shadowed;
+    }
+    return stats;
+}
+
+}  // namespace ts::visibility

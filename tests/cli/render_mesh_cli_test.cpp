@@ -1,0 +1,103 @@
+// `terrashade render --mesh`: the Cessna over a crop of the Grenoble DEM at low sun darkens the
+// terrain on the side away from the sun and nowhere else; bad mesh flags exit 2 with one line
+// before any heavy work.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
+const std::string kCessna = std::string(TS_SOURCE_DIR) + "/../shared/data/meshes/c172p.ac";
+const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
+// Low sun in the south-east, a fixed exposure so the two pictures compare code for code.
+const std::string kLight = " --sun-azimuth 135 --sun-elevation 15 --exposure 13";
+
+std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+
+struct Image {
+    int w = 0, h = 0, channels = 0;
+    std::vector<unsigned char> px;
+};
+
+Image read_png(const std::filesystem::path& p) {
+    Image img;
+    auto in = OIIO::ImageInput::open(p.string());
+    EXPECT_TRUE(in) << p;
+    if (!in) return img;
+    const OIIO::ImageSpec& spec = in->spec();
+    img.w = spec.width, img.h = spec.height, img.channels = spec.nchannels;
+    img.px.resize(std::size_t(img.w) * img.h * img.channels);
+    in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::UINT8, img.px.data());
+    return img;
+}
+
+TEST(RenderMeshCli, TheCessnasShadowDarkensTheTerrainAwayFromTheSun) {
+    if (!std::filesystem::exists(kCessna)) GTEST_SKIP() << "no " << kCessna;
+    const auto dir = temp_dir("render_mesh");
+    const auto plain = dir / "plain.png", with = dir / "with.png";
+    const Result a = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + " --out " + quote(plain.string())));
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const Result b = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + " --mesh " + quote(kCessna) +
+                                " --at 5.75,45.20,400agl --hpr 45,0,0 --scale 60 --spheres 32 --sphere-cache-dir " +
+                                quote((dir / "cache").string()) + " --out " + quote(with.string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.out.find("mesh "), std::string::npos) << b.out;
+    const Image p = read_png(plain), m = read_png(with);
+    ASSERT_EQ(p.px.size(), m.px.size());
+    // The mesh's anchor is the crop's centre texel; the shadow of a sun in the south-east falls
+    // to the north-west of it.
+    const double cx = p.w / 2.0, cy = p.h / 2.0;
+    double sx = 0, sy = 0, weight = 0;
+    int brighter = 0;
+    for (int r = 0; r < p.h; ++r)
+        for (int c = 0; c < p.w; ++c) {
+            double drop = 0;
+            for (int k = 0; k < p.channels; ++k) {
+                const std::size_t i = (std::size_t(r) * p.w + c) * p.channels + k;
+                drop += double(p.px[i]) - double(m.px[i]);
+                if (m.px[i] > p.px[i] + 1) ++brighter;
+            }
+            if (drop > 3 * 10) sx += (c + 0.5 - cx) * drop, sy += (r + 0.5 - cy) * drop, weight += drop;
+        }
+    ASSERT_GT(weight, 0.0) << "no texel darkened by the mesh";
+    sx /= weight, sy /= weight;
+    std::printf("shadow centroid %.1f texels east, %.1f texels south of the mesh\n", sx, sy);
+    EXPECT_LT(sx, 0.0);  // west
+    EXPECT_LT(sy, 0.0);  // north (rows grow southwards)
+    EXPECT_EQ(brighter, 0);
+}
+
+TEST(RenderMeshCli, BadMeshFlagsExitTwoWithOneLine) {
+    const auto dir = temp_dir("render_mesh_bad");
+    const std::string out = " --out " + quote((dir / "x.png").string());
+    const std::string base = "render " + quote(kDem) + kCrop + kLight + out;
+    const std::vector<std::string> cases = {
+        " --mesh /no/such/mesh.ac --at 5.75,45.2,100",
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2",
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,1x0agl",
+        " --mesh " + quote(kCessna),
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --scale -2",
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --spheres 4",
+        " --mesh " + quote(kCessna) + " --at 7.5,45.2,100",  // off the DEM
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --hpr 10,20",
+    };
+    for (const std::string& c : cases) {
+        const Result r = run(ts_cmd(base + c));
+        EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c << "\n" << r.err;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << c;
+    }
+}
+
+}  // namespace
+}  // namespace ts::cli_test

@@ -28,10 +28,14 @@ void run_hillshade(const HillshadeArgs& args) {
     plan.inputs("DEM", args.input.files).output("--out", args.out, {".png", ".tif", ".tiff"});
     plan.check();
     const dem::Dem dem = load_dem_input(args.input);
-    // Border pixels have no full 3x3 window and are nodata: below 3x3 nothing else is left.
-    if (dem.width < 3 || dem.height < 3)
+    // A gradient needs two cells along each axis (2x2 with the edges computed; a full 3x3 window
+    // with --no-edges): below that every pixel would be nodata.
+    const int least = args.shade.compute_edges ? 2 : 3;
+    if (dem.width < least || dem.height < least)
         throw input_error(dem.source, "the DEM is " + std::to_string(dem.width) + "x" + std::to_string(dem.height) +
-                                          " cells; a hillshade needs at least 3x3 (every pixel would be nodata)");
+                                          " cells; a hillshade needs at least " + std::to_string(least) + "x" +
+                                          std::to_string(least) + (args.shade.compute_edges ? "" : " with --no-edges") +
+                                          " (every pixel would be nodata)");
     const terrain::HeightGrid grid = terrain::metric_view(dem);
     const std::vector<std::uint8_t> shade = render::hillshade(grid, args.shade);
     raster::write_u8_image(args.out, dem.width, dem.height, 1, shade.data(), &dem.georef, int(render::kHillshadeNodata));

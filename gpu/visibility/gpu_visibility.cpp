@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "core/util/progress_bar.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
@@ -315,6 +316,8 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
         }
         const Buffer span_buffer = batch.upload_new(std::span<const LineInfo>(spans));
 
+        constexpr int kAzimuthsPerSubmit = 4;
+        std::size_t reported = 0;  // rays of this band already on the progress bar
         for (int d = 0; d < directions; ++d) {
             const SweepPlan& p = plans[std::size_t(d)];
             const SplitDouble mult = split_double(p.columns ? p.sn : p.cs);
@@ -375,14 +378,20 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
             batch.dispatch(kernels.finish, {heights, row_buffer, far, horizons, part(1), part(2), part(3), top_buffer}, push,
                            groups_for(std::uint64_t(band.width), std::uint64_t(band.height), kTileW, kTileH));
             batch.mark("finish");
-            // Two marks per azimuth and at most 63 per batch: submit every 24 azimuths.
-            if ((d + 1) % 24 == 0 && d + 1 < directions) {
+            // Two marks per azimuth and at most 63 per batch; every 4 azimuths a submit, so the
+            // progress bar moves during a band (a whole DEM is often one band: on lavapipe
+            // tens of seconds with no sign of life otherwise).
+            if ((d + 1) % kAzimuthsPerSubmit == 0 && d + 1 < directions) {
                 batch.submit_and_wait();
                 add_stage_times(result.stages, batch);
+                if (options.horizon.progress) {
+                    options.horizon.progress->advance(band_texels * std::size_t(kAzimuthsPerSubmit));
+                    reported += band_texels * std::size_t(kAzimuthsPerSubmit);
+                }
             }
         }
 
-        products.finish_band(batch, horizons, band_row0, band_texels, result);
+        products.finish_band(batch, horizons, band_row0, band_texels, result, reported);
     }
     result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_start).count();
     return result;

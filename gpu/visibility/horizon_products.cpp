@@ -70,7 +70,7 @@ HorizonProducts::HorizonProducts(const Context& context, Batch& batch, const Opt
 }
 
 void HorizonProducts::finish_band(Batch& batch, const Buffer& horizons, int band_row0, std::size_t band_texels,
-                                  Result& result) {
+                                  Result& result, std::size_t reported_rays) {
     std::vector<float> band_horizons(band_texels * std::size_t(directions_));
     std::vector<float> band_sh, band_svf, band_sky;
     std::unique_ptr<Buffer> sh_buffer, svf_buffer, sky_buffer;
@@ -117,7 +117,8 @@ void HorizonProducts::finish_band(Batch& batch, const Buffer& horizons, int band
         place(band_svf, result.svf, 1);
         place(band_sky, result.sky_visible, 1);
     }
-    if (options_.horizon.progress) options_.horizon.progress->advance(band_texels * std::size_t(directions_));
+    const std::size_t rays = band_texels * std::size_t(directions_);
+    if (options_.horizon.progress && rays > reported_rays) options_.horizon.progress->advance(rays - reported_rays);
 }
 
 }  // namespace ts::gpu::visibility

@@ -32,8 +32,10 @@ public:
 
     // Records log-SH and sky for the band whose horizons are in `horizons`, downloads them,
     // submits and waits, adds the stage times, copies the band's rows (window rows from
-    // band_row0 on) into `result` and advances the progress bar.
-    void finish_band(Batch& batch, const Buffer& horizons, int band_row0, std::size_t band_texels, Result& result);
+    // band_row0 on) into `result` and advances the progress bar by the band's rays that the
+    // caller has not reported already (`reported_rays`, e.g. azimuths swept in earlier submits).
+    void finish_band(Batch& batch, const Buffer& horizons, int band_row0, std::size_t band_texels, Result& result,
+                     std::size_t reported_rays = 0);
 
 private:
     const Context& context_;

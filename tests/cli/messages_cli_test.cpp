@@ -85,17 +85,27 @@ TEST(MeaninglessResultsCli, TheSunBelowTheHorizonWarns) {
 
 TEST(MeaninglessResultsCli, ADemTooSmallForAHillshadeExitsTwo) {
     const fs::path dir = temp_dir("warn_small");
-    for (const std::string size : {"1 1", "2 2", "2 10"}) {
-        const fs::path small = dir / ("small_" + std::to_string(size.size()) + size.substr(0, 1) + ".tif");
-        const Result made = run("gdal_translate -q -srcwin 100 100 " + size + " " + quote(kDem) + " " +
+    struct Case {
+        std::string size, flags, least;
+    };
+    // With the edges computed (the default) 2x2 has a gradient; with --no-edges a 3x3 window is needed.
+    for (const Case& k : {Case{"1 1", "", "at least 2x2"}, Case{"1 10", "", "at least 2x2"},
+                          Case{"2 2", " --no-edges", "at least 3x3"}, Case{"2 10", " --no-edges", "at least 3x3"}}) {
+        const fs::path small = dir / ("small_" + k.size.substr(0, 1) + "_" + k.size.substr(2) + ".tif");
+        const Result made = run("gdal_translate -q -srcwin 100 100 " + k.size + " " + quote(kDem) + " " +
                                 quote(small.string()));
         ASSERT_EQ(made.exit_code, 0) << made.err;
-        const Result r = run(ts_cmd("hillshade " + quote(small.string()) + " --out " +
+        const Result r = run(ts_cmd("hillshade " + quote(small.string()) + k.flags + " --out " +
                                     quote((dir / "h.png").string())));
-        EXPECT_EQ(r.exit_code, 2) << size;
-        EXPECT_NE(r.err.find("at least 3x3"), std::string::npos) << r.err;
+        EXPECT_EQ(r.exit_code, 2) << k.size;
+        EXPECT_NE(r.err.find(k.least), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(dir / "h.png"));
     }
+    // A 2x2 DEM with the edges computed is shaded.
+    const fs::path two = dir / "two.tif";
+    ASSERT_EQ(run("gdal_translate -q -srcwin 100 100 2 2 " + quote(kDem) + " " + quote(two.string())).exit_code, 0);
+    const Result r = run(ts_cmd("hillshade " + quote(two.string()) + " --out " + quote((dir / "two.png").string())));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
 TEST(MeaninglessResultsCli, ASingleRowOrColumnDemWarns) {

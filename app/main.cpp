@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command.hpp"
+#include "app/job_memory.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/number_flags.hpp"
 #include "core/util/error.hpp"
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
 #endif
     ts::app::explain_non_numbers(root);
     try {
+        ts::app::apply_memory_limit_from_environment();
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return root.exit(e) == 0 ? kExitOk : kExitBadInput;

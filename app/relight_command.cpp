@@ -12,6 +12,7 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/job_memory.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/render_options.hpp"
@@ -114,6 +115,9 @@ void run_relight(const RelightArgs& a) {
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
+    check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
+                     "use --crop, or fewer --directions (4 bytes per texel each)");
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;

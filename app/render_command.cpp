@@ -10,6 +10,7 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/job_memory.hpp"
 #include "app/render_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -51,6 +52,9 @@ void run_render(const RenderCommandArgs& a) {
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
+    check_job_memory("render of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
+                     "use --crop, or fewer --directions (4 bytes per texel each)");
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;

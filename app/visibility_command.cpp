@@ -15,6 +15,7 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/job_memory.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
 #include "core/util/angles.hpp"
@@ -118,6 +119,10 @@ void run_visibility(VisibilityOptions& o) {
 
     const dem::Dem dem = load_dem_input(o.dem);
     warn_if_single_line(dem);
+    check_job_memory("visibility of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
+                     visibility_peak_bytes(std::uint64_t(dem.width) * dem.height, o.horizon.directions,
+                                           !o.sh.empty() || !o.log_sh.empty()),
+                     "use --crop, or fewer --directions (4 bytes per texel each)");
     const visibility::VisibilityGrid grid(dem);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
 

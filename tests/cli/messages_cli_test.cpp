@@ -124,3 +124,36 @@ TEST(MeaninglessResultsCli, ASingleRowOrColumnDemWarns) {
 
 }  // namespace
 }  // namespace ts::cli_test
+
+namespace ts::cli_test {
+namespace {
+
+// A job that cannot fit is refused before the work, in one line naming what reduces it;
+// TERRASHADE_MEMORY_LIMIT stands in for a small machine.
+TEST(JobMemoryCli, AJobLargerThanTheMemoryIsRefusedBeforeTheWork) {
+    const fs::path dir = temp_dir("job_memory");
+    const std::string dem = quote(std::string(TS_SHARED_DATA) + "/dem/N00E010.hgt");
+    const std::string limit = "TERRASHADE_MEMORY_LIMIT=100MB ";
+    for (const std::string& args :
+         {"visibility " + dem + " --svf " + quote((dir / "svf.tif").string()),
+          "render " + dem + " --sun-azimuth 135 --sun-elevation 30 --out " + quote((dir / "r.png").string()),
+          "relight " + dem + " --times 2025-06-21T06:00Z/2025-06-21T08:00Z/PT1H --out " + quote((dir / "rl").string())}) {
+        const Result r = run(limit + ts_cmd(args));
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find("of memory, 100 MB available (TERRASHADE_MEMORY_LIMIT): use --crop"), std::string::npos)
+            << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "svf.tif"));
+    EXPECT_FALSE(fs::exists(dir / "r.png"));
+    const Result bad = run("TERRASHADE_MEMORY_LIMIT=lots " + ts_cmd("info " + dem));
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("is not a size"), std::string::npos) << bad.err;
+    // With room enough the same command runs.
+    const Result ok = run("TERRASHADE_MEMORY_LIMIT=2GB " + ts_cmd("visibility " + dem + " --directions 8 --svf " +
+                                                              quote((dir / "svf.tif").string())));
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+}  // namespace
+}  // namespace ts::cli_test

@@ -108,17 +108,17 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
     const raster::PngEncoding encoding;
 
     for (int z = job.z0; z <= job.z1; ++z) {
-        std::vector<TileId> todo;
+        std::vector<TileId> pending;
         for (const TileId& t : plan)
             if (t.z == z) {
                 if (sink.has(t)) {
                     ++stats.resumed;
                     if (progress) progress->advance();
                 } else {
-                    todo.push_back(t);
+                    pending.push_back(t);
                 }
             }
-        if (todo.empty()) continue;
+        if (pending.empty()) continue;
         const int pixel_zoom = z + tile_size_shift(job.tile_size);
         const ZoomShading zs = zoom_shading(dem, job, pixel_zoom);
         const auto key = std::make_pair(zs.level, zs.vertical_scale);
@@ -134,13 +134,13 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
         // A worker's error (a full disk) stops the others and is rethrown here.
         std::exception_ptr failure;
         std::mutex failure_mutex;
-        parallel_for(int(todo.size()), workers, [&](int item, int worker) {
+        parallel_for(int(pending.size()), workers, [&](int item, int worker) {
             {
                 const std::lock_guard lock(failure_mutex);
                 if (failure) return;
             }
             try {
-            const TileId& t = todo[std::size_t(item)];
+            const TileId& t = pending[std::size_t(item)];
             TileImage& image = images[std::size_t(worker)];
             render_tile(map, source, job.shading, tile_frame(t, job.tile_size), scratch[std::size_t(worker)], image);
             if (image.covered == 0) {

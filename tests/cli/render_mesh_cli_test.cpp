@@ -42,7 +42,7 @@ Image read_png(const std::filesystem::path& p) {
 }
 
 TEST(RenderMeshCli, TheCessnasShadowDarkensTheTerrainAwayFromTheSun) {
-    if (!std::filesystem::exists(kCessna)) GTEST_SKIP() << "no " << kCessna;
+    ASSERT_TRUE(std::filesystem::exists(kCessna)) << "the shared meshes are missing: " << kCessna;
     const auto dir = temp_dir("render_mesh");
     const auto plain = dir / "plain.png", with = dir / "with.png";
     const Result a = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + " --out " + quote(plain.string())));

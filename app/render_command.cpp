@@ -109,6 +109,9 @@ void run_render(const RenderCommandArgs& a) {
                 frame_s, device.name().c_str());
     if (!a.out.ends_with(".exr"))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
+    if (scene->last_relief_contrast() != 1.0)
+        std::printf("relief contrast: the shading stretched %.2fx in stops (--relief-contrast %s; 1 = physical)\n",
+                    scene->last_relief_contrast(), a.render.relief_contrast.c_str());
     std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);
     if (!a.sun_visibility.empty()) std::printf("wrote %s\n", a.sun_visibility.c_str());
 }
@@ -121,6 +124,7 @@ void add_render_command(CLI::App& root) {
         "render",
         "Shaded picture of a DEM under the real sun and sky: a map on the DEM grid or a perspective view "
         "(docs/rendering.md). Sun shadows from the exact horizon, sky light through log-SH visibility.");
+    a->render.relief_contrast = "auto";  // one picture: stretch the shading when the light is soft
     add_render_options(*cmd, a->render);
     cmd->add_option("--time", a->time, "UTC instant, ISO 8601 with a zone (e.g. 2025-06-21T12:00:00+02:00); "
                                        "the sun is placed for the DEM's centre");

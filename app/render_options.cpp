@@ -1,6 +1,7 @@
 #include "app/render_options.hpp"
 
 #include <charconv>
+#include <cstdlib>
 #include <cstdio>
 #include <cmath>
 #include <string_view>
@@ -58,6 +59,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_option("--albedo", a.albedo,
                    "RGB orthophoto GeoTIFF (8-bit sRGB) giving the albedo of every land texel it covers");
+    cmd.add_option("--relief-contrast", a.relief_contrast,
+                   "Maps: stretch the shading (not the colours) so the relief reads under soft light: auto (k from "
+                   "the picture: a 1.5-stop spread of the shading, at most 4x; 1 for a sunlit map with shadows), or "
+                   "k >= 1 (1 = the physical picture)")
+        ->capture_default_str();
     cmd.add_option("--dither", a.dither,
                    "Dither the 8-bit output against banding: auto (perspective views, whose skies are smooth "
                    "gradients), on, off")
@@ -139,6 +145,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     }
     o.materials = a.materials;
     o.albedo_contrast = a.albedo_contrast;
+    o.relief_contrast = parse_relief_contrast(a.relief_contrast);
     o.albedo = a.albedo;
     o.renderer.directions = a.directions;
     o.renderer.curvature = !a.no_curvature;
@@ -171,6 +178,18 @@ void print_stages(const RenderArgs& a, const render::Scene& scene) {
         std::printf("stage: %s on %s, %.3f s\n", s.label.c_str(), s.path.c_str(), s.seconds);
     if (!scene.blockers().empty() && scene.state().visibility_path() != "cpu")
         std::printf("stage: the mesh blockers' log-SH and sun shadows are computed on the CPU (no device kernel yet)\n");
+}
+
+render::ReliefContrast parse_relief_contrast(const std::string& text) {
+    render::ReliefContrast rc;
+    if (text == "auto") return rc;
+    char* end = nullptr;
+    const double k = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !(k >= 1.0) || !(k <= 16.0))
+        throw InputError("--relief-contrast: '" + text + "' is not auto or a number in [1, 16]");
+    rc.automatic = false;
+    rc.k = k;
+    return rc;
 }
 
 render::Exposure exposure_of(const RenderArgs& a) {

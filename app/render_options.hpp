@@ -29,6 +29,9 @@ struct RenderArgs {
     std::string albedo;
     double albedo_contrast = render::kDefaultAlbedoContrast;
     std::string dither = "auto";
+    // auto | a number >= 1; `render` starts at auto, sequences (relight) at 1 so frames keep one
+    // rendering of the shading.
+    std::string relief_contrast = "1";
     int directions = 32;
     bool no_curvature = false;
     DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)
@@ -46,6 +49,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& args);
 // Parses and checks everything that can be checked before reading the DEM.
 render::SceneOptions scene_options(const RenderArgs& args);
 render::Exposure exposure_of(const RenderArgs& args);
+// "auto" or k in [1, 16]; throws ts::InputError otherwise.
+render::ReliefContrast parse_relief_contrast(const std::string& text);
 // Adds the files these options read (DEMs, an HDR sky, a land-cover map, an orthophoto) to `plan`.
 void plan_render_inputs(IoPlan& plan, const RenderArgs& args, const render::SceneOptions& options);
 // The picture formats render::write_image writes.

@@ -128,16 +128,25 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     const glm::dvec3 s = sun_direction(sun);
     // An HDR map does not change with the sun: read it once.
     if (!sky_ || options_.sky.kind != light::SkyOptions::Kind::hdr) sky_ = light::make_sky(options_.sky, s);
+    const bool map = options_.view != ViewKind::perspective;
+    auto stretch = [&](std::vector<glm::vec3>& radiance) {
+        const ReliefContrast& rc = options_.relief_contrast;
+        last_relief_k_ = map && (rc.automatic || rc.k != 1.0)
+                             ? apply_relief_contrast(radiance, state_->materials(), rc)
+                             : 1.0;
+    };
     if (target_->is_texel_grid()) {
         // A map on the DEM grid is the texels themselves: render straight into the picture
         // (a 500x500 frame's copy is 3 MB, ~0.3 ms of a ~5 ms frame).
         renderer_->render(*sky_, sun, image.rgb);
+        stretch(image.rgb);
         image.width = grid_->width;
         image.height = grid_->height;
         image.alpha.clear();
         return;
     }
     renderer_->render(*sky_, sun, texel_radiance_);
+    stretch(texel_radiance_);
     target_->compose(texel_radiance_, *sky_, image);
 }
 

@@ -20,6 +20,7 @@
 #include "core/render/shading_state.hpp"
 #include "core/render/sky_table.hpp"
 #include "core/render/view_shading.hpp"
+#include "core/render/relief_contrast.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/terrain/height_grid.hpp"
 
@@ -48,6 +49,8 @@ struct SceneOptions {
     std::string materials = "rule";  // "rule" or a WorldCover GeoTIFF
     std::string albedo;              // RGB orthophoto GeoTIFF, or empty
     double albedo_contrast = kDefaultAlbedoContrast;  // compress_albedo_contrast (material.hpp)
+    // Maps and extents: the shading stretched (relief_contrast.hpp); by default the physical picture.
+    ReliefContrast relief_contrast{.automatic = false};
     MaterialRule rule;
     RendererOptions renderer;
     light::SkyOptions sky;
@@ -86,6 +89,8 @@ public:
     // Renders one frame: the sky from options.sky for this sun, per-texel radiance, then the
     // target's picture. `image` keeps its storage from frame to frame.
     void render(const SunState& sun, LinearImage& image);
+    // The relief contrast k the last frame got (1 = none; relief_contrast.hpp).
+    double last_relief_contrast() const { return last_relief_k_; }
     // The sky of the last frame (for its description).
     const light::Sky* last_sky() const { return sky_.get(); }
 
@@ -115,6 +120,7 @@ private:
     std::unique_ptr<FrameRenderer> renderer_;
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
+    double last_relief_k_ = 1.0;
 };
 
 // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.

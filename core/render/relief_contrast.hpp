@@ -1,0 +1,31 @@
+#pragma once
+// Relief contrast for maps (render --relief-contrast): under a soft light (an overcast sky) the
+// shading of a slope differs from the flat by 10-20%, less than the albedos of the land cover
+// differ, so the picture reads as a land-cover map. This stretches the shading alone, not the
+// albedo: each land texel's irradiance E = radiance / albedo (per channel, diffuse texels) is
+// raised to a power k about the picture's log-average E_ref,
+//   E' = E_ref (E / E_ref)^k,   radiance' = albedo * E',
+// so slopes, hollows and shadows get k times their contrast in stops while the colours of the
+// ground stay as they were. Automatic: k makes the 5th-95th percentile spread of log2 E at least
+// `target_stops` (a sunlit map with shadows already has it: k = 1), at most `max_k`.
+// Water (a mirror, not albedo times light) and texels with no albedo are left as they are.
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/material/material.hpp"
+
+namespace ts::render {
+
+struct ReliefContrast {
+    bool automatic = true;
+    double k = 1.0;             // when !automatic; 1 = the physical picture
+    double target_stops = 1.5;  // automatic: the shading's 5-95% spread to reach
+    double max_k = 4.0;
+};
+
+// Returns the k applied (1 = nothing changed).
+double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRaster& materials,
+                             const ReliefContrast& options);
+
+}  // namespace ts::render

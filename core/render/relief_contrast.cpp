@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/render/tone_map.hpp"
+
 namespace ts::render {
 namespace {
-
-float luminance_of(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 bool is_land(const MaterialRaster& m, std::size_t i) {
     return !m.water[i] && m.ks[i] == 0.0f && m.albedo_r[i] > 0 && m.albedo_g[i] > 0 && m.albedo_b[i] > 0;
@@ -22,7 +22,7 @@ double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRas
     for (std::size_t i = 0; i < n; ++i) {
         if (!is_land(m, i)) continue;
         const glm::vec3 e = radiance[i] / glm::vec3(m.albedo_r[i], m.albedo_g[i], m.albedo_b[i]);
-        const float l = luminance_of(e);
+        const float l = luminance(e);
         if (l > 0 && std::isfinite(l)) log_e.push_back(std::log2(l));
     }
     if (log_e.size() < 16) return 1.0;
@@ -45,7 +45,7 @@ double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRas
         if (!is_land(m, i)) continue;
         const glm::vec3 a(m.albedo_r[i], m.albedo_g[i], m.albedo_b[i]);
         const glm::vec3 e = radiance[i] / a;
-        const float l = luminance_of(e);
+        const float l = luminance(e);
         if (!(l > 0) || !std::isfinite(l)) continue;
         // E' = E_ref (E/E_ref)^k with the irradiance's colour kept: scale E by E'/E.
         const float scale = float(std::pow(double(l) / ref, k - 1.0));

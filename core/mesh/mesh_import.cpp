@@ -1,18 +1,23 @@
 #include "core/mesh/mesh_import.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
-#include <glm/matrix.hpp>
 
+#include "core/mesh/imported_scene.hpp"
+#include "core/mesh/scene_flattening.hpp"
 #include "core/util/error.hpp"
+#include "core/util/isolated_call.hpp"
+#include "core/util/memory.hpp"
 
 namespace ts::mesh {
 namespace fs = std::filesystem;
@@ -63,54 +68,68 @@ MeshMaterial read_material(const aiMaterial& m) {
     return out;
 }
 
-struct Walk {
-    const aiScene& scene;
-    glm::dmat4 root;  // axis and unit normalisation
-    TriangleMesh& out;
-
-    void node(const aiNode& n, const glm::dmat4& parent) {
-        const glm::dmat4 m = parent * to_glm(n.mTransformation);
-        // Normals go through the inverse transpose (non-uniform scales in real node graphs).
-        const glm::dmat3 normal_m = glm::transpose(glm::inverse(glm::dmat3(m)));
-        for (unsigned i = 0; i < n.mNumMeshes; ++i) mesh(*scene.mMeshes[n.mMeshes[i]], m, normal_m);
-        for (unsigned c = 0; c < n.mNumChildren; ++c) node(*n.mChildren[c], m);
+// The scene as plain data (imported_scene.hpp), in the child process: only polygons with three
+// corners are kept (points and lines were sorted out, the rest triangulated).
+ImportedScene record_scene(const aiScene& scene) {
+    ImportedScene out;
+    UpAxis up = UpAxis::automatic;
+    int sign = 1;
+    if (header_up_axis(scene, up, sign)) {
+        out.header_up_axis = up == UpAxis::x ? 0 : up == UpAxis::y ? 1 : 2;
+        out.header_up_sign = sign;
     }
-
-    void mesh(const aiMesh& me, const glm::dmat4& m, const glm::dmat3& normal_m) {
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+        const aiMesh& me = *scene.mMeshes[i];
+        ImportedMesh m;
+        m.material = me.mMaterialIndex;
+        m.vertices.reserve(me.mNumVertices);
+        for (unsigned v = 0; v < me.mNumVertices; ++v)
+            m.vertices.emplace_back(me.mVertices[v].x, me.mVertices[v].y, me.mVertices[v].z);
+        if (me.mNormals)
+            for (unsigned v = 0; v < me.mNumVertices; ++v)
+                m.normals.emplace_back(me.mNormals[v].x, me.mNormals[v].y, me.mNormals[v].z);
         for (unsigned f = 0; f < me.mNumFaces; ++f) {
             const aiFace& face = me.mFaces[f];
             if (face.mNumIndices != 3) continue;
-            glm::vec3 p[3];
-            for (int k = 0; k < 3; ++k) {
-                const aiVector3D& v = me.mVertices[face.mIndices[k]];
-                p[k] = glm::vec3(m * glm::dvec4(v.x, v.y, v.z, 1.0));
-            }
-            glm::dvec3 face_n = glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0]));
-            const double len = glm::length(face_n);
-            face_n = len > 0 ? face_n / len : glm::dvec3(0, 0, 1);
-            for (int k = 0; k < 3; ++k) {
-                if (!std::isfinite(p[k].x) || !std::isfinite(p[k].y) || !std::isfinite(p[k].z)) continue;
-                glm::dvec3 nk = face_n;
-                if (me.mNormals) {
-                    const aiVector3D& v = me.mNormals[face.mIndices[k]];
-                    const glm::dvec3 t = normal_m * glm::dvec3(v.x, v.y, v.z);
-                    const double tl = glm::length(t);
-                    if (tl > 0 && std::isfinite(tl)) nk = t / tl;
-                }
-                out.positions.push_back(p[k]);
-                out.normals.push_back(glm::vec3(nk));
-            }
-            // A corner that was not finite drops the whole triangle.
-            const std::size_t extra = out.positions.size() % 3;
-            if (extra != 0) {
-                out.positions.resize(out.positions.size() - extra);
-                out.normals.resize(out.normals.size() - extra);
-                continue;
-            }
-            out.material.push_back(me.mMaterialIndex);
+            m.triangles.insert(m.triangles.end(), face.mIndices, face.mIndices + 3);
         }
+        out.meshes.push_back(std::move(m));
     }
-};
+    for (unsigned i = 0; i < scene.mNumMaterials; ++i) out.materials.push_back(read_material(*scene.mMaterials[i]));
+    // The node tree, breadth first, each node's children as indices.
+    std::vector<const aiNode*> order{scene.mRootNode};
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const aiNode& n = *order[k];
+        ImportedNode node;
+        node.transform = to_glm(n.mTransformation);
+        node.meshes.assign(n.mMeshes, n.mMeshes + n.mNumMeshes);
+        for (unsigned c = 0; c < n.mNumChildren; ++c) {
+            node.children.push_back(std::uint32_t(order.size()));
+            order.push_back(n.mChildren[c]);
+        }
+        out.nodes.push_back(std::move(node));
+    }
+    return out;
+}
+
+// In the child process: assimp reads the file; its scene comes back as bytes.
+std::vector<std::uint8_t> read_with_assimp(const fs::path& file, const std::string& shown) {
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);  // FBX is in centimetres by default
+    const aiScene* scene =
+        importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!scene) {
+        const std::string why = one_line(importer.GetErrorString());
+        // The primitive-type sort removes point and line meshes and then complains of none left
+        // (or the validation, of meshes without faces).
+        if (why.find("No meshes remaining") != std::string::npos || why.find("contains no faces") != std::string::npos)
+            throw input_error(shown, "no triangles (only points or lines)");
+        throw input_error(shown, "not a readable mesh (" + why + ")");
+    }
+    if (!scene->mRootNode || scene->mNumMeshes == 0) throw input_error(shown, "no triangles (no mesh in the file)");
+    return encode_scene(record_scene(*scene));
+}
 
 }  // namespace
 
@@ -123,32 +142,27 @@ TriangleMesh import_mesh(const fs::path& file, const ImportOptions& options) {
     if (!(options.unit_scale > 0.0) || !std::isfinite(options.unit_scale))
         throw input_error(shown, "unit scale must be a positive number");
 
-    Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);  // FBX is in centimetres by default
-    const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_SortByPType);
-    if (!scene) {
-        const std::string why = one_line(importer.GetErrorString());
-        // The primitive-type sort removes point and line meshes and then complains of none left.
-        if (why.find("No meshes remaining") != std::string::npos)
-            throw input_error(shown, "no triangles (only points or lines)");
-        throw input_error(shown, "not a readable mesh (" + why + ")");
-    }
-    if (!scene->mRootNode || scene->mNumMeshes == 0) throw input_error(shown, "no triangles (no mesh in the file)");
+    const std::uint64_t file_bytes = fs::file_size(file, ec);
+    IsolationLimits limits;
+    limits.timeout_s = options.timeout_s > 0 ? options.timeout_s : 10.0 + 2.0 * double(file_bytes) / 1e6;
+    limits.extra_address_space_bytes =
+        options.memory_bytes > 0 ? options.memory_bytes : (std::uint64_t(512) << 20) + 100 * file_bytes;
+    limits.extra_address_space_bytes = std::min(limits.extra_address_space_bytes, available_memory());
+    const std::vector<std::uint8_t> bytes = run_isolated([&] { return read_with_assimp(file, shown); }, shown, limits);
+    const ImportedScene scene = decode_scene(bytes.data(), bytes.size(), shown);
 
     UpAxis up = options.up;
     int sign = 1;
-    if (up == UpAxis::automatic && !header_up_axis(*scene, up, sign)) up = default_up_axis(file.extension().string());
+    if (up == UpAxis::automatic) {
+        if (scene.header_up_axis >= 0) {
+            up = scene.header_up_axis == 0 ? UpAxis::x : scene.header_up_axis == 1 ? UpAxis::y : UpAxis::z;
+            sign = scene.header_up_sign;
+        } else {
+            up = default_up_axis(file.extension().string());
+        }
+    }
     const glm::dmat4 root = glm::dmat4(to_z_up(up, sign)) * glm::dmat4(glm::dmat3(options.unit_scale));
-
-    TriangleMesh out;
-    Walk{*scene, root, out}.node(*scene->mRootNode, root);
-    if (out.triangle_count() == 0) throw input_error(shown, "no triangles");
-    for (unsigned i = 0; i < scene->mNumMaterials; ++i) out.materials.push_back(read_material(*scene->mMaterials[i]));
-    if (out.materials.empty()) out.materials.push_back(MeshMaterial{"default"});
-    for (std::uint32_t& m : out.material)
-        if (m >= out.materials.size()) m = 0;
-    return out;
+    return flatten_scene(scene, root, shown);
 }
 
 }  // namespace ts::mesh

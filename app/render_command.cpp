@@ -109,9 +109,14 @@ void run_render(const RenderCommandArgs& a) {
                 frame_s, device.name().c_str());
     if (!a.out.ends_with(".exr"))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
-    if (scene->last_relief_contrast() != 1.0)
-        std::printf("relief contrast: the shading stretched %.2fx in stops (--relief-contrast %s; 1 = physical)\n",
-                    scene->last_relief_contrast(), a.render.relief_contrast.c_str());
+    if (const render::ReliefContrastApplied rc = scene->last_relief_contrast(); rc.k != 1.0) {
+        char softened[96] = "";
+        if (rc.albedo_factor != 1.0)
+            std::snprintf(softened, sizeof softened, ", the land colours' contrast to %.2f of --albedo-contrast",
+                          rc.albedo_factor);
+        std::printf("relief contrast: the shading stretched %.2fx in stops%s (--relief-contrast %s; 1 = physical)\n",
+                    rc.k, softened, a.render.relief_contrast.c_str());
+    }
     std::printf("wrote %s (%dx%d)\n", a.out.c_str(), image.width, image.height);
     if (!a.sun_visibility.empty()) std::printf("wrote %s\n", a.sun_visibility.c_str());
 }

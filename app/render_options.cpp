@@ -61,8 +61,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "RGB orthophoto GeoTIFF (8-bit sRGB) giving the albedo of every land texel it covers");
     cmd.add_option("--relief-contrast", a.relief_contrast,
                    "Maps: stretch the shading (not the colours) so the relief reads under soft light: auto (k from "
-                   "the picture: a 1.5-stop spread of the shading, at most 4x; 1 for a sunlit map with shadows), or "
-                   "k >= 1 (1 = the physical picture)")
+                   "the picture: a 1.5-stop spread of the shading, at most 8x, and the land colours' contrast "
+                   "compressed by another 1/k; 1 for a sunlit map with shadows), or k >= 1 (1 = the physical picture)")
         ->capture_default_str();
     cmd.add_option("--dither", a.dither,
                    "Dither the 8-bit output against banding: auto (perspective views, whose skies are smooth "
@@ -70,8 +70,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "on", "off"}));
     cmd.add_option("--albedo-contrast", a.albedo_contrast,
-                   "How much of the land albedos' brightness contrast to keep, 0..1: 1 = physical albedos (a "
-                   "land-cover map under soft light), 0 = equally bright land; snow and water keep theirs")
+                   "How much of the land albedos' contrast (brightness and tint) to keep, 0..1: 1 = physical "
+                   "albedos (a land-cover map under soft light), 0 = land all of one colour; snow and water keep theirs")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
     cmd.add_option("--directions", a.directions, "Horizon azimuths for the sky visibility (exact sweep)")

@@ -164,20 +164,36 @@ MaterialRaster landcover_materials(const terrain::HeightGrid& g, const NormalFie
     return m;
 }
 
+namespace {
+// The tint of mid-latitude vegetated land (RGB over Rec. 709 luminance, between the grass and
+// forest albedos of surface_params): the colour every land texel moves towards.
+constexpr glm::dvec3 kLandTintRaw{0.80, 1.11, 0.53};
+constexpr glm::dvec3 kLandTint = kLandTintRaw / (0.2126 * kLandTintRaw.x + 0.7152 * kLandTintRaw.y + 0.0722 * kLandTintRaw.z);
+}  // namespace
+
+glm::vec3 compressed_albedo(const glm::vec3& albedo, double contrast) {
+    if (contrast >= 1.0) return albedo;
+    const double c = std::max(0.0, contrast);
+    const double r = albedo.x, g = albedo.y, b = albedo.z;
+    const double lum = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    if (!(lum > 0.0)) return albedo;
+    // Snow and other bright surfaces keep theirs; a smooth hand-over, no edge at a threshold.
+    const double keep = smoothstep(0.3, 0.5, lum);
+    const double exponent = c + (1.0 - c) * keep;  // 1 = unchanged
+    const double log_ref = std::log(kAlbedoReferenceLuminance);
+    const double lum2 = std::exp(log_ref + exponent * (std::log(lum) - log_ref));
+    // The tint (RGB / luminance) pulled towards the land reference by the same share.
+    const glm::dvec3 tint = glm::dvec3(r, g, b) / lum;
+    const glm::dvec3 t2 = kLandTint + exponent * (tint - kLandTint);
+    return glm::vec3(lum2 * t2);
+}
+
 void compress_albedo_contrast(MaterialRaster& m, double contrast) {
     if (contrast >= 1.0) return;
-    const double c = std::max(0.0, contrast);
-    const double log_ref = std::log(kAlbedoReferenceLuminance);
     for (std::size_t i = 0; i < m.size(); ++i) {
         if (m.water[i]) continue;
-        const double r = m.albedo_r[i], g = m.albedo_g[i], b = m.albedo_b[i];
-        const double lum = 0.2126 * r + 0.7152 * g + 0.0722 * b;
-        if (!(lum > 0.0)) continue;
-        // Snow and other bright surfaces keep theirs; a smooth hand-over, no edge at a threshold.
-        const double keep = smoothstep(0.3, 0.5, lum);
-        const double exponent = c + (1.0 - c) * keep;  // 1 = unchanged
-        const double scale = std::exp((1.0 - exponent) * (log_ref - std::log(lum)));
-        m.albedo_r[i] = float(r * scale), m.albedo_g[i] = float(g * scale), m.albedo_b[i] = float(b * scale);
+        const glm::vec3 a = compressed_albedo({m.albedo_r[i], m.albedo_g[i], m.albedo_b[i]}, contrast);
+        m.albedo_r[i] = a.x, m.albedo_g[i] = a.y, m.albedo_b[i] = a.z;
     }
 }
 

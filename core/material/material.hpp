@@ -92,12 +92,14 @@ void apply_albedo(MaterialRaster& m, const std::vector<glm::vec3>& linear_albedo
 // Cartographic albedo (render --albedo-contrast): "light and shadow first, colour second". Real
 // land albedos span 2-3x in luminance (forest ~0.05, fields ~0.12), so under a soft light (an
 // overcast sky, low relief) the picture reads as a land-cover map and the relief is lost. Each
-// land texel's luminance L is pulled towards a fixed reference L0 = 0.10 in log space,
-//   L' = L0^(1 - c) L^c,   the RGB scaled by L'/L (hue and saturation kept),
-// so c = 1 keeps the physical albedos and c = 0 makes every land texel equally bright. Bright
+// land texel's luminance L is pulled towards a fixed reference L0 = 0.10 in log space and its
+// tint t = RGB / L towards the tint of vegetated land t0 by the same share,
+//   L' = L0^(1 - c) L^c,   t' = t0 + c (t - t0),   RGB' = L' t',
+// so c = 1 keeps the physical albedos and c = 0 makes every land texel the same colour. Bright
 // surfaces (snow, L above 0.3 to 0.5) and water are kept as they are. A fixed reference, not the
 // scene's mean, so that tiles and crops of one DEM get the same albedo.
 inline constexpr double kAlbedoReferenceLuminance = 0.10;
+glm::vec3 compressed_albedo(const glm::vec3& linear_albedo, double contrast);
 void compress_albedo_contrast(MaterialRaster& m, double contrast);
 
 }  // namespace ts::render

@@ -14,8 +14,8 @@ bool is_land(const MaterialRaster& m, std::size_t i) {
 
 }  // namespace
 
-double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRaster& m,
-                             const ReliefContrast& options) {
+ReliefContrastApplied apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRaster& m,
+                                            const ReliefContrast& options) {
     const std::size_t n = std::min(radiance.size(), m.size());
     std::vector<float> log_e;
     log_e.reserve(n);
@@ -25,7 +25,7 @@ double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRas
         const float l = luminance(e);
         if (l > 0 && std::isfinite(l)) log_e.push_back(std::log2(l));
     }
-    if (log_e.size() < 16) return 1.0;
+    if (log_e.size() < 16) return {};
     double mean = 0;
     for (float v : log_e) mean += v;
     mean /= double(log_e.size());
@@ -39,7 +39,8 @@ double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRas
         const double spread = at(0.95) - at(0.05);
         k = spread > 0 ? std::clamp(options.target_stops / spread, 1.0, options.max_k) : 1.0;
     }
-    if (k == 1.0) return 1.0;
+    if (k == 1.0) return {};
+    const double albedo_factor = options.automatic && options.soften_albedo ? 1.0 / k : 1.0;
     const double ref = std::exp2(mean);
     for (std::size_t i = 0; i < n; ++i) {
         if (!is_land(m, i)) continue;
@@ -49,9 +50,10 @@ double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRas
         if (!(l > 0) || !std::isfinite(l)) continue;
         // E' = E_ref (E/E_ref)^k with the irradiance's colour kept: scale E by E'/E.
         const float scale = float(std::pow(double(l) / ref, k - 1.0));
-        radiance[i] = a * (e * scale);
+        const glm::vec3 a2 = albedo_factor < 1.0 ? compressed_albedo(a, albedo_factor) : a;
+        radiance[i] = a2 * (e * scale);
     }
-    return k;
+    return {k, albedo_factor};
 }
 
 }  // namespace ts::render

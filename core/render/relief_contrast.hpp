@@ -9,6 +9,9 @@
 // ground stay as they were. Automatic: k makes the 5th-95th percentile spread of log2 E at least
 // `target_stops` (a sunlit map with shadows already has it: k = 1), at most `max_k`.
 // Water (a mirror, not albedo times light) and texels with no albedo are left as they are.
+// With soften_albedo (automatic mode), a light soft enough to need k > 1 also gets its land
+// albedo contrast compressed by another 1/k (compressed_albedo, material.hpp): the colours of
+// the land cover then differ less than the stretched shading does, so the relief reads first.
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -21,11 +24,16 @@ struct ReliefContrast {
     bool automatic = true;
     double k = 1.0;             // when !automatic; 1 = the physical picture
     double target_stops = 1.5;  // automatic: the shading's 5-95% spread to reach
-    double max_k = 4.0;
+    double max_k = 8.0;
+    bool soften_albedo = true;  // automatic only
 };
 
-// Returns the k applied (1 = nothing changed).
-double apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRaster& materials,
+struct ReliefContrastApplied {
+    double k = 1.0;               // the shading's stretch (1 = none)
+    double albedo_factor = 1.0;   // the further albedo contrast applied (1 = none)
+};
+
+ReliefContrastApplied apply_relief_contrast(std::vector<glm::vec3>& radiance, const MaterialRaster& materials,
                              const ReliefContrast& options);
 
 }  // namespace ts::render

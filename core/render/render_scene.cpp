@@ -131,9 +131,8 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     const bool map = options_.view != ViewKind::perspective;
     auto stretch = [&](std::vector<glm::vec3>& radiance) {
         const ReliefContrast& rc = options_.relief_contrast;
-        last_relief_k_ = map && (rc.automatic || rc.k != 1.0)
-                             ? apply_relief_contrast(radiance, state_->materials(), rc)
-                             : 1.0;
+        last_relief_ = map && (rc.automatic || rc.k != 1.0) ? apply_relief_contrast(radiance, state_->materials(), rc)
+                                                            : ReliefContrastApplied{};
     };
     if (target_->is_texel_grid()) {
         // A map on the DEM grid is the texels themselves: render straight into the picture

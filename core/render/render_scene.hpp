@@ -89,8 +89,8 @@ public:
     // Renders one frame: the sky from options.sky for this sun, per-texel radiance, then the
     // target's picture. `image` keeps its storage from frame to frame.
     void render(const SunState& sun, LinearImage& image);
-    // The relief contrast k the last frame got (1 = none; relief_contrast.hpp).
-    double last_relief_contrast() const { return last_relief_k_; }
+    // The relief contrast the last frame got (k = 1: none; relief_contrast.hpp).
+    ReliefContrastApplied last_relief_contrast() const { return last_relief_; }
     // The sky of the last frame (for its description).
     const light::Sky* last_sky() const { return sky_.get(); }
 
@@ -120,7 +120,7 @@ private:
     std::unique_ptr<FrameRenderer> renderer_;
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
-    double last_relief_k_ = 1.0;
+    ReliefContrastApplied last_relief_;
 };
 
 // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.

@@ -93,7 +93,8 @@ double lum(const MaterialRaster& m, std::size_t i) {
     return 0.2126 * m.albedo_r[i] + 0.7152 * m.albedo_g[i] + 0.0722 * m.albedo_b[i];
 }
 
-// L' = L0^(1-c) L^c with the hue kept; 1 changes nothing; snow and water keep theirs.
+// L' = L0^(1-c) L^c, and the tint (RGB / L) pulled by the same share towards one land tint, so
+// at c = 0 every land texel has the same colour; 1 changes nothing; snow and water keep theirs.
 TEST(AlbedoContrast, PullsLandLuminanceTowardsTheReferenceInLogSpace) {
     const std::vector<glm::vec3> albedos = {{0.035f, 0.060f, 0.028f}, {0.130f, 0.125f, 0.075f},
                                             {0.8f, 0.83f, 0.88f}, {0.02f, 0.02f, 0.02f}};
@@ -107,8 +108,13 @@ TEST(AlbedoContrast, PullsLandLuminanceTowardsTheReferenceInLogSpace) {
         for (std::size_t i : {std::size_t(0), std::size_t(1)}) {
             const double want = std::pow(kAlbedoReferenceLuminance, 1 - c) * std::pow(lum(before, i), c);
             EXPECT_NEAR(lum(m, i), want, 1e-6) << c << " " << i;
-            EXPECT_NEAR(m.albedo_r[i] / m.albedo_g[i], before.albedo_r[i] / before.albedo_g[i], 1e-5);  // hue kept
         }
+        // The two tints differ c times as much as before (per channel of RGB / L).
+        auto tint = [](const MaterialRaster& r, std::size_t i) {
+            return glm::dvec3(r.albedo_r[i], r.albedo_g[i], r.albedo_b[i]) / lum(r, i);
+        };
+        const glm::dvec3 d0 = tint(before, 1) - tint(before, 0), d = tint(m, 1) - tint(m, 0);
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(d[ch], c * d0[ch], 1e-5) << c << " " << ch;
         EXPECT_FLOAT_EQ(m.albedo_g[2], before.albedo_g[2]);  // snow
         EXPECT_FLOAT_EQ(m.albedo_g[3], before.albedo_g[3]);  // water
     }

@@ -32,8 +32,9 @@ TEST(ReliefContrast, StretchesTheShadingNotTheAlbedo) {
         radiance[i] = glm::vec3(m.albedo_r[i], m.albedo_g[i], m.albedo_b[i]) * irradiance[i];
     }
     std::vector<glm::vec3> out = radiance;
-    const double k = apply_relief_contrast(out, m, {.automatic = false, .k = 3.0});
-    EXPECT_EQ(k, 3.0);
+    const ReliefContrastApplied applied = apply_relief_contrast(out, m, {.automatic = false, .k = 3.0});
+    EXPECT_EQ(applied.k, 3.0);
+    EXPECT_EQ(applied.albedo_factor, 1.0);  // a k the user chose leaves the colours alone
     double mean = 0;
     for (const auto& e : irradiance) mean += std::log2(lum(e));
     const double ref = std::exp2(mean / double(n));
@@ -55,13 +56,34 @@ TEST(ReliefContrast, AutomaticReachesTheTargetSpreadAndLeavesStrongShadingAlone)
         return r;
     };
     std::vector<glm::vec3> soft = shaded(0.8, 1.2);  // 5-95% spread ~0.5 stop
-    const double k = apply_relief_contrast(soft, m, {});
+    const double k = apply_relief_contrast(soft, m, {}).k;
     EXPECT_GT(k, 2.0);
     EXPECT_LE(k, 4.0);
     std::vector<glm::vec3> strong = shaded(0.05, 1.0);  // shadows: > 4 stops
     const std::vector<glm::vec3> before = strong;
-    EXPECT_EQ(apply_relief_contrast(strong, m, {}), 1.0);
+    EXPECT_EQ(apply_relief_contrast(strong, m, {}).k, 1.0);
     EXPECT_EQ(strong, before);
+}
+
+// Under a light soft enough for k > 1, the land colours' contrast is compressed by another 1/k
+// (compressed_albedo): forest and fields under the same light end up k times closer in stops.
+TEST(ReliefContrast, AutomaticSoftLightAlsoCompressesTheLandColours) {
+    const std::size_t n = 1000;
+    const glm::vec3 forest{0.035f, 0.060f, 0.028f}, fields{0.130f, 0.125f, 0.075f};
+    const MaterialRaster m = land(n, {forest, fields});
+    std::vector<glm::vec3> r(n);
+    for (std::size_t i = 0; i < n; ++i)
+        r[i] = glm::vec3(m.albedo_r[i], m.albedo_g[i], m.albedo_b[i]) * (0.8f + 0.4f * float(i) / float(n - 1));
+    std::vector<glm::vec3> out = r;
+    const ReliefContrastApplied applied = apply_relief_contrast(out, m, {});
+    ASSERT_GT(applied.k, 2.0);
+    EXPECT_NEAR(applied.albedo_factor, 1.0 / applied.k, 1e-12);
+    // Neighbours 0 and 1 see (nearly) the same light: their brightness ratio is the albedos'.
+    const double before = std::log2(lum(fields) / lum(forest));
+    const double after = std::log2(lum(out[1]) / lum(out[0]));
+    EXPECT_NEAR(after, before / applied.k, 0.05 * before);
+    std::vector<glm::vec3> kept = r;
+    EXPECT_EQ(apply_relief_contrast(kept, m, {.soften_albedo = false}).albedo_factor, 1.0);
 }
 
 TEST(ReliefContrast, WaterAndShinySurfacesAreLeftAlone) {

@@ -2,7 +2,7 @@
 # Renders docs/gallery/: the Gresivaudan valley (Grenoble, looking south-east from above the
 # Chartreuse) at dawn, noon and dusk of the June solstice, under an overcast sky and under an HDR
 # environment map, from data/grenoble_500px.tif. Each perspective PNG is 640x360, the map 240x240
-# (every file < 150 KB).
+# (every file < 200 KB; the perspective views are dithered, docs/rendering.md).
 # Usage: scripts/gallery.sh [path/to/terrashade]   (default: the release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,7 +19,7 @@ $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --out "$out/noon.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T18:45:00Z --out "$out/dusk.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky overcast --out "$out/overcast.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky data/sunset_synthetic.hdr --out "$out/hdr.png"
-# The same noon as a map (the whole DEM, top-down), downsampled to 240x240 to stay under 150 KB
+# The same noon as a map (the whole DEM, top-down), downsampled to 240x240 to stay small
 # (400x400 gave 298 KB: a map has far more detail per pixel than the hazy perspective views).
 $ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --out "$out/noon_map.png"
 ls -l "$out"

@@ -65,7 +65,7 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
     one_each(cmd.add_option("--spheres", a.spheres,
                             "Bounding spheres per mesh, 8..512 (default 64; cached on disk; once for all or per --mesh)"));
     cmd.add_option("--blocker-min-solid-angle", a.min_solid_angle_sr,
-                   "A sphere darkens a texel's sky only while it subtends more than this many steradians there")
+                   "A mesh darkens a texel's sky only while its bounding sphere subtends more than this many steradians there")
         ->capture_default_str()
         ->check(CLI::Range(1e-6, 1.0));
     cmd.add_flag("--no-ratio-attenuation", a.no_ratio_attenuation,

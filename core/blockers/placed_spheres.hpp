@@ -22,9 +22,11 @@
 namespace ts::blockers {
 
 struct SphereBlockerOptions {
-    // A sphere adds its log-SH to a texel only while its cap there subtends more than this
-    // (steradians): 0.01 sr hides at most 0.01 / pi = 0.3% of a texel's cosine-weighted sky, and
-    // bounds the sky footprint to a disc of radius r / sin(theta_min) around each sphere.
+    // A mesh's spheres add their log-SH to a texel only while the mesh's bounding sphere subtends
+    // more than this there (steradians): 0.01 sr hides at most 0.01 / pi = 0.3% of a texel's
+    // cosine-weighted sky, and bounds the sky footprint to a disc of radius r / sin(theta_min)
+    // around the bounding sphere. The mesh's, not each sphere's: finer decompositions keep
+    // their shadow.
     double min_solid_angle_sr = 0.01;
     RatioAttenuation attenuation;  // culling below the tangent plane and the solid-angle ratio
     // Log-visibility inside a sphere's cap. Not the terrain's floor (log 0.1): an order-4 SH

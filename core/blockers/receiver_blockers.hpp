@@ -10,10 +10,11 @@
 
 namespace ts::blockers {
 
-// Appends the spheres whose cap subtends more than the threshold (min_cap_sine: sin theta_b >
-// min_sine, or the receiver inside) and, with options.cull_lower_hemisphere, reaches above the
-// plane of `normal`, with their centres relative to the receiver (so the receiver is the origin).
-// Both tests are inherited by the spheres inside a sphere, so whole subtrees are skipped.
+// Appends the mesh's spheres, when its bounding sphere's cap subtends more than the threshold
+// (min_cap_sine: sin theta_b > min_sine, or the receiver inside), that with
+// options.cull_lower_hemisphere reach above the plane of `normal`, with their centres relative
+// to the receiver (so the receiver is the origin). The plane test is inherited by the spheres
+// inside a sphere, so whole subtrees are skipped.
 void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
                           double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out);
 

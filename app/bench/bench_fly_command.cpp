@@ -1,0 +1,116 @@
+// `terrashade bench fly`: the flythrough's frame rate offscreen (the window's pipeline without
+// presenting), along a fixed path over a DEM at 960x540: fps (mean), the 99th-percentile frame
+// time, triangles per frame and the screen-space error bound of the LOD selection; and the same
+// with a coarser LOD goal as a baseline for the ratio. docs/flythrough.md records the figures.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/bench/bench_command.hpp"
+#include "app/bench/error_stats.hpp"
+#include "app/dem_input.hpp"
+#include "core/fly/flight_path.hpp"
+#include "core/light/utc_time.hpp"
+#include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
+#include "gpu/context.hpp"
+#include "gpu/fly/fly_session.hpp"
+
+namespace ts::app {
+namespace {
+
+struct BenchFlyArgs {
+    DemInput dem;
+    std::string size = "960x540";
+    int frames = 120;
+    double pixel_error = 2.0;
+    int directions = 16;
+    std::string time = "2024-06-21T07:30:00Z";
+};
+
+struct Figures {
+    double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, select_ms = 0;
+};
+
+Figures fly_once(gpu::FlySession& session, int frames) {
+    // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
+    // over the ground at the start, looking ahead and down a little.
+    const auto& frame = session.frame();
+    double top = 0;
+    for (float z : session.scene().grid().z) top = std::max(top, double(z));
+    auto pose_at = [&](double f) {
+        const glm::dvec2 m = frame.to_metric((0.2 + 0.6 * f) * (frame.width() - 1), (0.8 - 0.6 * f) * (frame.height() - 1));
+        fly::CameraPose p;
+        p.eye = {m.x, m.y, std::max(top * 0.8, session.ground_height_m({m.x, m.y, 0}) + 400.0)};
+        p.heading_deg = 45.0 + 40.0 * std::sin(6.0 * f);
+        p.pitch_deg = -10.0;
+        return p;
+    };
+    std::vector<double> ms;
+    std::vector<std::uint8_t> rgba;
+    Figures fig;
+    gpu::FlyFrameUniforms u;
+    gpu::FlyFrameStats st;
+    for (int i = -3; i < frames; ++i) {  // three warm-up frames
+        const double f = double(std::max(i, 0)) / double(std::max(frames - 1, 1));
+        const Stopwatch w;
+        session.prepare(pose_at(f), u, st);
+        session.renderer().render_to_memory(u, session.patches(), rgba);
+        if (i < 0) continue;
+        ms.push_back(w.milliseconds());
+        fig.tris += double(st.triangles);
+        fig.error_px = std::max(fig.error_px, st.screen_error_px);
+        fig.select_ms += st.select_ms;
+    }
+    double sum = 0;
+    for (double v : ms) sum += v;
+    fig.mean_ms = sum / double(ms.size());
+    fig.fps = 1000.0 / fig.mean_ms;
+    fig.p99_ms = bench::percentile(ms, 0.99);
+    fig.tris /= double(frames);
+    fig.select_ms /= double(frames);
+    return fig;
+}
+
+void run_bench_fly(const BenchFlyArgs& a) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(a.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || w < 16 || h < 16)
+        throw InputError("--size " + a.size + ": give WIDTHxHEIGHT");
+    if (a.frames < 2) throw InputError("--frames must be >= 2");
+    const dem::Dem dem = load_dem_input(a.dem);
+    gpu::Context context;
+    std::printf("bench fly: %s, %dx%d texels, %d frames at %dx%d on %s\n", a.dem.files.front().c_str(), dem.width,
+                dem.height, a.frames, w, h, context.device_info().name.c_str());
+    std::printf("lod_goal_px,fps_mean,frame_ms_mean,frame_ms_p99,select_ms,triangles_per_frame,screen_error_px_max\n");
+    for (double goal : {a.pixel_error, 4.0 * a.pixel_error}) {
+        gpu::FlySettings s;
+        s.width = w, s.height = h;
+        s.directions = a.directions;
+        s.lod.pixel_error = goal;
+        gpu::FlySession session(dem, s, context);
+        session.set_time(light::parse_utc_time(a.time));
+        const Figures f = fly_once(session, a.frames);
+        std::printf("%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f\n", goal, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris,
+                    f.error_px);
+    }
+    std::printf("with an aircraft: not measured (the aircraft is not drawn yet)\n");
+}
+
+}  // namespace
+
+void add_bench_fly_command(CLI::App& bench) {
+    auto a = std::make_shared<BenchFlyArgs>();
+    CLI::App* cmd = bench.add_subcommand("fly", "flythrough frame rate offscreen: fps, p99 frame time, triangles, LOD error");
+    add_dem_input_options(*cmd, a->dem);
+    cmd->add_option("--size", a->size, "frame size")->capture_default_str();
+    cmd->add_option("--frames", a->frames, "frames along the path")->capture_default_str();
+    cmd->add_option("--pixel-error", a->pixel_error, "LOD goal (px); also run at 4x as the baseline")->capture_default_str();
+    cmd->add_option("--directions", a->directions, "horizon azimuths of the visibility")->capture_default_str();
+    cmd->add_option("--time", a->time, "UTC time of the sun")->capture_default_str();
+    cmd->callback([a] { run_bench_fly(*a); });
+}
+
+}  // namespace ts::app

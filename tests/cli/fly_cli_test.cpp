@@ -1,0 +1,118 @@
+// `terrashade fly`: a short path over the shared Grenoble DEM rendered offscreen (--frames) with
+// the validation layer on, the window opened and closed under xvfb-run, the one-line message
+// without a display, and bad input found before any work.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
+
+std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+
+std::filesystem::path write_path(const std::filesystem::path& dir) {
+    const auto p = dir / "path.csv";
+    std::ofstream(p) << "t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg\n"
+                        "0,5.55,45.08,2500,45,-5,0\n"
+                        "6,5.62,45.13,2300,50,-8,10\n"
+                        "12,5.70,45.18,2200,60,-8,0\n";
+    return p;
+}
+
+std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
+    auto in = OIIO::ImageInput::open(p.string());
+    EXPECT_TRUE(in) << p;
+    if (!in) return {};
+    w = in->spec().width, h = in->spec().height;
+    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
+    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
+    return px;
+}
+
+TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
+    const auto dir = temp_dir("fly_frames");
+    const auto out = dir / "frames";
+    const Result r = run("TERRASHADE_VALIDATION=1 " +
+                         ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+                                quote(write_path(dir).string()) + " --out " + quote(out.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("wrote 3 frames"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(out / "frames.csv"));
+    std::vector<unsigned char> previous;
+    for (int i = 0; i < 3; ++i) {
+        int w = 0, h = 0;
+        const auto px = read_rgb(out / ("frame_000" + std::to_string(i) + ".png"), w, h);
+        ASSERT_EQ(w, 320);
+        ASSERT_EQ(h, 180);
+        double mean = 0;
+        for (unsigned char v : px) mean += v;
+        mean /= double(px.size());
+        EXPECT_GT(mean, 30.0) << "frame " << i << " is black";
+        // The top rows are sky (bluer than red), the bottom rows terrain.
+        double top_b = 0, top_r = 0;
+        for (int x = 0; x < w; ++x) top_r += px[3 * std::size_t(x)], top_b += px[3 * std::size_t(x) + 2];
+        EXPECT_GT(top_b, top_r) << "frame " << i << ": no sky at the top";
+        if (!previous.empty()) {
+            double diff = 0;
+            for (std::size_t k = 0; k < px.size(); ++k) diff += std::abs(int(px[k]) - int(previous[k]));
+            EXPECT_GT(diff / double(px.size()), 2.0) << "frame " << i << " equals the one before";
+        }
+        previous = px;
+    }
+}
+
+TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
+    const Result r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + ts_cmd("fly " + quote(kDem)));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
+    // The window test is part of the suite: without xvfb-run it fails (scripts/setup.sh installs xvfb).
+    ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
+    const auto dir = temp_dir("fly_window");
+    const Result r = run("TERRASHADE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " +
+                         ts_cmd("fly " + quote(kDem) + " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
+                                quote(write_path(dir).string())));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+}
+
+TEST(FlyCli, BadInputExitsTwoBeforeWork) {
+    const auto dir = temp_dir("fly_bad");
+    const Result no_out = run(ts_cmd("fly " + quote(kDem) + " --frames 2"));
+    EXPECT_EQ(no_out.exit_code, 2);
+    EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
+    const Result size = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --size 12"));
+    EXPECT_EQ(size.exit_code, 2);
+    EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
+    const auto bad = dir / "bad.csv";
+    std::ofstream(bad) << "0,5.6,45.1,2000,0,0\n";
+    const Result path = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --path " +
+                                   quote(bad.string())));
+    EXPECT_EQ(path.exit_code, 2);
+    EXPECT_NE(path.err.find("7 numbers"), std::string::npos) << path.err;
+}
+
+TEST(FlyCli, HelpListsTheKeys) {
+    const Result r = run(ts_cmd("fly --help"));
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* key : {"Esc", "W/S", "screenshot", "recording", "time of day"})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}
+
+}  // namespace
+}  // namespace ts::cli_test

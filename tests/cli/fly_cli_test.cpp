@@ -60,10 +60,14 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
         for (unsigned char v : px) mean += v;
         mean /= double(px.size());
         EXPECT_GT(mean, 30.0) << "frame " << i << " is black";
-        // The top rows are sky (bluer than red), the bottom rows terrain.
-        double top_b = 0, top_r = 0;
-        for (int x = 0; x < w; ++x) top_r += px[3 * std::size_t(x)], top_b += px[3 * std::size_t(x) + 2];
-        EXPECT_GT(top_b, top_r) << "frame " << i << ": no sky at the top";
+        // The top row is the bright day sky, the bottom row darker ground.
+        double top = 0, bottom = 0;
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                top += px[3 * std::size_t(x) + std::size_t(c)],
+                    bottom += px[3 * (std::size_t(h - 1) * std::size_t(w) + std::size_t(x)) + std::size_t(c)];
+        EXPECT_GT(top / (3.0 * w), 150.0) << "frame " << i << ": no sky at the top";
+        EXPECT_LT(bottom, top) << "frame " << i << ": no ground at the bottom";
         if (!previous.empty()) {
             double diff = 0;
             for (std::size_t k = 0; k < px.size(); ++k) diff += std::abs(int(px[k]) - int(previous[k]));

@@ -59,6 +59,7 @@ struct FlyArgs {
     std::string record = "fly_recording.csv";
     int directions = 16;
     double pixel_error = 2.0;
+    double lod_quantile = 0.99;
     int patch_quads = 16;
     double haze_km = 250.0;
     double fov_deg = 60.0;
@@ -137,7 +138,7 @@ void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPat
     double worst_error = 0, frame_ms_sum = 0;
     std::size_t tris_sum = 0;
     ProgressBar bar("frames", std::uint64_t(a.frames), "frames");
-    std::string csv = "frame,t_s,patches,triangles,screen_error_px,select_ms,draw_ms\n";
+    std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms\n";
     for (int i = 0; i < a.frames; ++i) {
         const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
         const fly::CameraPose aircraft = session.pose_of(path.at(t));
@@ -150,8 +151,8 @@ void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPat
         write_rgba_png(std::filesystem::path(a.out) / name, session.renderer().width(), session.renderer().height(),
                        rgba);
         char line[160];
-        std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f\n", i, t, st.patches, st.triangles,
-                      st.screen_error_px, st.select_ms, draw_ms);
+        std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f\n", i, t, st.patches, st.triangles,
+                      st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms);
         csv += line;
         worst_error = std::max(worst_error, st.screen_error_px);
         frame_ms_sum += draw_ms + st.select_ms;
@@ -358,6 +359,7 @@ void run_fly(const FlyArgs& a) {
     if (!(a.pixel_error > 0.05 && a.pixel_error <= 100)) throw InputError("--pixel-error must be in (0.05, 100]");
     if (a.patch_quads < 4 || a.patch_quads > 128 || (a.patch_quads & (a.patch_quads - 1)) != 0)
         throw InputError("--patch-quads must be a power of two in [4, 128]");
+    if (!(a.lod_quantile >= 0.5 && a.lod_quantile <= 1.0)) throw InputError("--lod-quantile must be in [0.5, 1]");
     if (!(a.fov_deg > 5 && a.fov_deg < 150)) throw InputError("--fov must be in (5, 150) degrees");
     if (!(a.haze_km >= 0)) throw InputError("--haze-km must be >= 0");
     IoPlan plan;
@@ -384,6 +386,7 @@ void run_fly(const FlyArgs& a) {
     settings.directions = a.directions;
     settings.lod.pixel_error = a.pixel_error;
     settings.lod.patch_quads = a.patch_quads;
+    settings.lod.error_quantile = a.lod_quantile;
     settings.haze_km = a.haze_km;
     settings.fov_deg = a.fov_deg;
     const dem::Dem dem = load_dem_input(a.dem);
@@ -429,6 +432,9 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--directions", args->directions, "horizon azimuths of the visibility (once per DEM)")
         ->capture_default_str();
     cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
+        ->capture_default_str();
+    cmd->add_option("--lod-quantile", args->lod_quantile,
+                    "terrain LOD: which quantile of the per-texel mesh errors meets --pixel-error (1 = every texel)")
         ->capture_default_str();
     cmd->add_option("--patch-quads", args->patch_quads, "terrain LOD: quads per patch side (power of two)")
         ->capture_default_str();

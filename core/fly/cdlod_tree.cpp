@@ -22,9 +22,11 @@ double box_distance(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3&
 
 }  // namespace
 
-double mesh_error_m(const terrain::HeightGrid& g, int s) {
+double mesh_error_m(const terrain::HeightGrid& g, int s, double quantile) {
     if (s <= 1) return 0.0;
     double worst = 0.0;
+    std::vector<float> errors;
+    if (quantile < 1.0) errors.reserve(std::size_t(g.width) * std::size_t(g.height));
     for (int r = 0; r < g.height; ++r) {
         const int r0 = (r / s) * s, r1 = std::min(r0 + s, g.height - 1);
         const double fr = r1 > r0 ? double(r - r0) / double(r1 - r0) : 0.0;
@@ -37,9 +39,13 @@ double mesh_error_m(const terrain::HeightGrid& g, int s) {
                                          : h00 + fr * (h01 - h00) + fc * (h11 - h01);
             const double e = std::abs(height_at(g, c, r) - mesh);
             if (e > worst) worst = e;
+            if (quantile < 1.0) errors.push_back(float(e));
         }
     }
-    return worst;
+    if (quantile >= 1.0 || errors.empty()) return worst;
+    const std::size_t rank = std::min(errors.size() - 1, std::size_t(quantile * double(errors.size())));
+    std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(rank), errors.end());
+    return errors[rank];
 }
 
 bool box_in_frustum(const glm::dmat4& m, const glm::dvec3& lo, const glm::dvec3& hi) {
@@ -72,9 +78,16 @@ CdlodTree::CdlodTree(const terrain::HeightGrid& g, const GridFrame& frame, const
     levels_ = 1;
     while (double(n) * double(1 << (levels_ - 1)) < double(extent)) ++levels_;
 
+    if (!(options_.error_quantile >= 0.5 && options_.error_quantile <= 1.0))
+        throw std::invalid_argument("CdlodTree: error_quantile must be in [0.5, 1]");
     error_m_.assign(std::size_t(levels_ + 1), 0.0);
-    for (int k = 1; k <= levels_; ++k)
-        error_m_[std::size_t(k)] = std::max(error_m_[std::size_t(k - 1)], mesh_error_m(g, 1 << k));
+    max_error_m_.assign(std::size_t(levels_ + 1), 0.0);
+    for (int k = 1; k <= levels_; ++k) {
+        max_error_m_[std::size_t(k)] = std::max(max_error_m_[std::size_t(k - 1)], mesh_error_m(g, 1 << k, 1.0));
+        const double q = options_.error_quantile >= 1.0 ? max_error_m_[std::size_t(k)]
+                                                         : mesh_error_m(g, 1 << k, options_.error_quantile);
+        error_m_[std::size_t(k)] = std::max(error_m_[std::size_t(k - 1)], q);
+    }
 
     boxes_.resize(std::size_t(levels_));
     diag_m_.assign(std::size_t(levels_), 0.0);
@@ -181,9 +194,13 @@ bool CdlodTree::select_node(int k, int ix, int iy, const CdlodView& view, const 
         out.patches.push_back(p);
         out.triangles += quadrant < 0 ? triangles_per_patch() : triangles_per_patch() / 4;
         const double d = std::max(box_distance(view.eye, bb.lo, bb.hi), 1.0);
-        double e = error_m_[std::size_t(k)] * k_px / d;
-        if (!top) e = std::max(e, error_m_[std::size_t(k + 1)] * k_px / std::max(d, double(p.morph_start_m)));
-        out.screen_error_px = std::max(out.screen_error_px, e);
+        auto bound = [&](const std::vector<double>& delta) {
+            double e = delta[std::size_t(k)] * k_px / d;
+            if (!top) e = std::max(e, delta[std::size_t(k + 1)] * k_px / std::max(d, double(p.morph_start_m)));
+            return e;
+        };
+        out.screen_error_px = std::max(out.screen_error_px, bound(error_m_));
+        out.screen_error_max_px = std::max(out.screen_error_max_px, bound(max_error_m_));
     };
     if (k == 0 || box_distance(view.eye, b.lo, b.hi) > ranges[std::size_t(k - 1)]) {
         add(-1, b);
@@ -204,6 +221,7 @@ void CdlodTree::select(const CdlodView& view, CdlodSelection& out) const {
     out.patches.clear();
     out.triangles = 0;
     out.screen_error_px = 0;
+    out.screen_error_max_px = 0;
     const double k_px = view.viewport_height_px / (2.0 * std::tan(0.5 * view.vertical_fov_rad));
     std::vector<double> ranges;
     compute_ranges(k_px, ranges);

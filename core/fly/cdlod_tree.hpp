@@ -6,8 +6,11 @@
 //
 //   screen error (px) = delta * K / d,   K = viewport height / (2 tan(vertical fov / 2))
 //
-// with delta_k the largest vertical distance, over the whole DEM, between the level-0 heights
-// and the level-k mesh (the same triangles the GPU draws), made non-decreasing in k. Level k is
+// with delta_k a high quantile (error_quantile, 0.99 by default; 1 = the largest) of the vertical
+// distance, over every texel of the DEM, between the level-0 heights and the level-k mesh (the
+// same triangles the GPU draws), made non-decreasing in k. The largest one is kept beside it and
+// reported: on a coarse DEM of mountains a few peaks and cliff texels stand hundreds of metres
+// off their neighbours' mesh, and the strict maximum would keep the whole DEM at full resolution. Level k is
 // used out to r_k and morphs into level k+1 over its last (1 - morph_start_ratio) of it
 // (cdlod_shared.h), so within its band it shows at worst delta_{k+1} from distance
 // morph_start_ratio * r_k on:  r_k >= delta_{k+1} K / (morph_start_ratio * tau).
@@ -38,6 +41,9 @@ struct CdlodOptions {
     double pixel_error = 2.0;
     // Where in its range a level starts morphing into the next (0..1).
     double morph_start_ratio = 0.7;
+    // Which quantile of the per-texel mesh errors delta_k is (0.5..1; 1 = the maximum, a strict
+    // bound everywhere).
+    double error_quantile = 0.99;
 };
 
 // One draw: a patch (or one quadrant of it) of a level.
@@ -66,6 +72,8 @@ struct CdlodSelection {
     // delta_{k+1} K / d over patches, d the nearest distance of the patch's box beyond its
     // morph start (delta_k K / d for an unmorphed part nearer than it).
     double screen_error_px = 0;
+    // The same bound with the largest per-texel error of each level instead of the quantile.
+    double screen_error_max_px = 0;
 };
 
 class CdlodTree {
@@ -75,8 +83,9 @@ public:
     int levels() const { return levels_; }
     int patch_quads() const { return options_.patch_quads; }
     const CdlodOptions& options() const { return options_; }
-    // delta_k (metres), level 0 = 0.
+    // delta_k (metres, the quantile the ranges use), level 0 = 0; and the largest per-texel error.
     double level_error_m(int level) const { return error_m_[std::size_t(level)]; }
+    double level_max_error_m(int level) const { return max_error_m_[std::size_t(level)]; }
     // r_k for a view (metres); the top level's is infinite.
     double range_m(int level, double k_px) const;
     std::size_t triangles_per_patch() const { return std::size_t(2) * std::size_t(options_.patch_quads * options_.patch_quads); }
@@ -102,16 +111,17 @@ private:
     const GridFrame& frame_;
     CdlodOptions options_;
     int levels_ = 0;
-    std::vector<double> error_m_;
+    std::vector<double> error_m_, max_error_m_;
     std::vector<double> diag_m_;           // the largest 3D box diagonal per level
     std::vector<int> nodes_x_, nodes_y_;
     std::vector<std::vector<Box>> boxes_;  // per level, row-major nodes
 };
 
 // delta of a mesh with a vertex every `spacing` texels (clamped to the last row and column,
-// as the shader clamps) against the grid's heights: the largest |h - mesh| over all texels.
+// as the shader clamps) against the grid's heights: the `quantile` of |h - mesh| over all
+// texels (1 = the largest; ranks as bench's percentile: the value of rank floor(q n)).
 // Triangles split along the (0,0)-(1,1) diagonal of each quad, as the index buffer does.
-double mesh_error_m(const terrain::HeightGrid& grid, int spacing);
+double mesh_error_m(const terrain::HeightGrid& grid, int spacing, double quantile = 1.0);
 
 // The eight corners' frustum test of a box given in eye-relative metres: false only when every
 // corner is outside one clip plane.

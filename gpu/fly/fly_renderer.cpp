@@ -39,7 +39,7 @@ DeviceHandle<VkRenderPass> make_render_pass(VkDevice device) {
     std::array<VkAttachmentDescription, 2> attachments{};
     attachments[0].format = kColorFormat;
     attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the sky covers every pixel
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // terrain and sky cover every pixel
     attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -96,7 +96,7 @@ DeviceHandle<VkRenderPass> make_render_pass(VkDevice device) {
 }
 
 DeviceHandle<VkPipeline> make_pipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass pass,
-                                       const char* vertex, const char* fragment, bool depth) {
+                                       const char* vertex, const char* fragment, bool terrain) {
     ShaderModule vs(device, spirv(vertex)), fs(device, spirv(fragment));
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
     stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -126,9 +126,12 @@ DeviceHandle<VkPipeline> make_pipeline(VkDevice device, VkPipelineLayout layout,
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineDepthStencilStateCreateInfo depth_state{};
     depth_state.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-    depth_state.depthTestEnable = depth ? VK_TRUE : VK_FALSE;
-    depth_state.depthWriteEnable = depth ? VK_TRUE : VK_FALSE;
-    depth_state.depthCompareOp = VK_COMPARE_OP_GREATER;  // reversed Z
+    // Reversed Z. The terrain goes first and writes depth; the sky is drawn at depth 0 (infinitely
+    // far) only where nothing was (EQUAL against the clear value), so it is shaded once per pixel
+    // it covers instead of under the terrain too.
+    depth_state.depthTestEnable = VK_TRUE;
+    depth_state.depthWriteEnable = terrain ? VK_TRUE : VK_FALSE;
+    depth_state.depthCompareOp = terrain ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
     VkPipelineColorBlendAttachmentState blend_attachment{};
     blend_attachment.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
@@ -280,10 +283,6 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_layout_.get(), 0, 1, &set_, 0, nullptr);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
-
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_layout_.get(), 0, 1, &set_, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, indices_.get(), 0, VK_INDEX_TYPE_UINT32);
@@ -294,6 +293,9 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
         const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
         vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);
     }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_layout_.get(), 0, 1, &set_, 0, nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRenderPass(cmd);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The flythrough's drawing on Vulkan: a render pass into an RGBA8 colour target (already
-// exposed and display-encoded by the shaders) with a reversed-Z depth buffer, the sky
-// (fly_sky.*) then the terrain's CDLOD patches (fly_terrain.*), one push-constant block per
-// patch. The window blits that target into its swapchain image; --frames copies it to memory:
+// exposed and display-encoded by the shaders) with a reversed-Z depth buffer, the terrain's
+// CDLOD patches (fly_terrain.*, one push-constant block per patch) then the sky (fly_sky.*)
+// where no terrain was drawn. The window blits that target into its swapchain image; --frames copies it to memory:
 // the same pixels either way.
 //
 // One frame in flight: record() and the host-side updates happen while the device is idle

@@ -142,6 +142,7 @@ void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     stats.patches = selection_.patches.size();
     stats.triangles = selection_.triangles;
     stats.screen_error_px = selection_.screen_error_px;
+    stats.screen_error_max_px = selection_.screen_error_max_px;
 
     const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, camera.roll_deg);
     u.view_projection = glm::mat4(vp);

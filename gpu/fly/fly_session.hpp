@@ -33,7 +33,7 @@ struct FlySettings {
 struct FlyFrameStats {
     double select_ms = 0;
     std::size_t patches = 0, triangles = 0;
-    double screen_error_px = 0;
+    double screen_error_px = 0, screen_error_max_px = 0;
 };
 
 class FlySession {

@@ -13,7 +13,8 @@ layout(push_constant) uniform Patch {
 } patch_;
 
 layout(location = 0) out vec2 v_texel;  // level-0 texel-centre coordinates
-layout(location = 1) out vec3 v_relative;  // eye-relative position after the curvature drop
+layout(location = 1) out vec3 v_haze;      // the sky's horizon radiance in this azimuth
+layout(location = 2) out float v_transmittance;
 
 float height_at(vec2 t) {
     int w = int(frame.grid.x), h = int(frame.grid.y);
@@ -44,5 +45,9 @@ void main() {
     rel.z -= ts_curvature_drop(dot(rel.xy, rel.xy));
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_texel = tm;
-    v_relative = rel;
+    // Aerial perspective per vertex (it varies slowly over a triangle; the fragment shader
+    // would pay the sky lookup for every pixel).
+    float dist = length(rel);
+    v_haze = sky_radiance(normalize(vec3(rel.xy, 0.0) + vec3(1e-6, 0.0, 0.0)));
+    v_transmittance = frame.grid.w > 0.0 ? exp(-dist / frame.grid.w) : 1.0;
 }

@@ -46,6 +46,19 @@ TEST(CdlodTree, MeshErrorOfAParabolaIsItsMidpointSag) {
     for (int s : {2, 4, 8, 16}) EXPECT_NEAR(mesh_error_m(g, s), a * s * s / 4.0, 1e-3) << "spacing " << s;
 }
 
+TEST(CdlodTree, ASpikeSetsTheMaximumButNotTheQuantile) {
+    const int w = 65, h = 65;
+    std::vector<float> z(std::size_t(w) * h, 500.0f);
+    z[std::size_t(31) * w + 31] = 900.0f;  // one odd texel, 400 m above its neighbours
+    const terrain::HeightGrid g = terrain::HeightGrid::uniform(w, h, z, 30.0, 30.0);
+    EXPECT_NEAR(mesh_error_m(g, 2, 1.0), 400.0, 1e-3);
+    EXPECT_NEAR(mesh_error_m(g, 2, 0.99), 0.0, 1e-3);
+    const GridFrame f(g);
+    const CdlodTree tree(g, f);
+    EXPECT_NEAR(tree.level_max_error_m(1), 400.0, 1e-3);
+    EXPECT_NEAR(tree.level_error_m(1), 0.0, 1e-3);
+}
+
 TEST(CdlodTree, PlaneHasNoErrorAtAnyLevel) {
     const int w = 129, h = 97;
     std::vector<float> z(std::size_t(w) * h);

@@ -19,6 +19,7 @@
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "core/raster/png_writer.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
@@ -97,7 +98,7 @@ std::string solar_time(light::UtcTime t, double lon_deg) {
 fly::FlightPath default_path(const gpu::FlySession& s) {
     const fly::CameraPose start = s.default_pose();
     std::vector<fly::FlightPose> poses;
-    const double h = start.heading_deg * 3.14159265358979323846 / 180.0;
+    const double h = radians(start.heading_deg);
     for (int i = 0; i <= 4; ++i) {
         const double t = 5.0 * i;
         const glm::dvec3 eye = start.eye + glm::dvec3(std::sin(h), std::cos(h), 0.0) * (80.0 * t);
@@ -368,7 +369,9 @@ void run_fly(const FlyArgs& a) {
     if (offscreen) plan.output_directory("--out", a.out);
     plan.check();
 
-    // The window is the first thing to fail without a display: before any heavy work.
+    // The window is the first thing to fail without a display: before any heavy work. The
+    // context is made after it (it needs the window's extensions) but must outlive it.
+    std::unique_ptr<gpu::Context> context;
     std::unique_ptr<gpu::FlyWindow> window;
     gpu::ContextOptions context_options;
     if (!offscreen) {
@@ -391,8 +394,8 @@ void run_fly(const FlyArgs& a) {
     settings.fov_deg = a.fov_deg;
     const dem::Dem dem = load_dem_input(a.dem);
     if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
-    gpu::Context context(context_options);
-    gpu::FlySession session(dem, settings, context);
+    context = std::make_unique<gpu::Context>(context_options);
+    gpu::FlySession session(dem, settings, *context);
     const fly::FlightPath path = given_path ? *given_path : default_path(session);
     const double relight_ms = session.set_time(time);
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg at %s (relight %.0f ms); %d LOD levels, on %s\n",
@@ -406,7 +409,7 @@ void run_fly(const FlyArgs& a) {
         window.reset();
     }
     // TERRASHADE_VALIDATION=1: what the validation layer reported (the tests want none).
-    for (const auto& m : context.validation_messages()) std::fprintf(stderr, "terrashade: validation: %s\n", m.c_str());
+    for (const auto& m : context->validation_messages()) std::fprintf(stderr, "terrashade: validation: %s\n", m.c_str());
 }
 
 }  // namespace

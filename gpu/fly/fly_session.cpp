@@ -7,6 +7,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/tone_map.hpp"
+#include "core/util/angles.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -151,7 +152,7 @@ void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
                        float(settings_.haze_km * 1000.0));
     u.sun_direction = glm::vec4(sun_dir_, float(sun_cos_radius_));
     u.sun_radiance = glm::vec4(sun_radiance_, float(exposure_));
-    const double tan_h = std::tan(0.5 * settings_.fov_deg * 3.14159265358979323846 / 180.0);
+    const double tan_h = std::tan(0.5 * radians(settings_.fov_deg));
     const double tan_v = std::tan(0.5 * proj.vertical_fov_rad());
     u.camera_right = glm::vec4(glm::vec3(axes.right), float(tan_h));
     u.camera_up = glm::vec4(glm::vec3(axes.up), float(tan_v));

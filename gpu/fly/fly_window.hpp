@@ -26,7 +26,6 @@ struct WindowInput {
     // Keys held this frame, as GLFW key codes (GLFW_KEY_*), and keys pressed since the last poll.
     std::vector<int> held, pressed;
     double mouse_dx = 0, mouse_dy = 0;  // pixels moved with the left button down
-    double scroll = 0;
     bool close = false;
 };
 

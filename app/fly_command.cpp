@@ -18,6 +18,7 @@
 #include "app/dem_input.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
+#include "core/mesh/mesh_import.hpp"
 #include "core/raster/png_writer.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/atomic_file.hpp"
@@ -53,6 +54,9 @@ struct FlyArgs {
     std::string size = "960x540";
     std::string vsync = "on";
     std::string path;
+    std::string mesh;
+    double mesh_scale = 1.0;
+    std::string mesh_forward = "+y";
     std::string camera = "chase";
     int frames = 0;
     int exit_after = 0;
@@ -143,7 +147,7 @@ void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPat
     for (int i = 0; i < a.frames; ++i) {
         const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
         const fly::CameraPose aircraft = session.pose_of(path.at(t));
-        session.prepare(camera_for(mode, aircraft), u, st);
+        session.prepare(camera_for(mode, aircraft), u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
         const Stopwatch draw;
         session.renderer().render_to_memory(u, session.patches(), rgba);
         const double draw_ms = draw.milliseconds();
@@ -296,7 +300,8 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
             session.renderer().resize(fw, fh);
         }
         const Stopwatch frame_watch;
-        session.prepare(camera, u, st);
+        const fly::CameraPose aircraft = session.pose_of(path.at(path_t));
+        session.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
         std::uint32_t image = 0;
         const Stopwatch draw_watch;
         if (window.begin(image)) {
@@ -363,9 +368,14 @@ void run_fly(const FlyArgs& a) {
     if (!(a.lod_quantile >= 0.5 && a.lod_quantile <= 1.0)) throw InputError("--lod-quantile must be in [0.5, 1]");
     if (!(a.fov_deg > 5 && a.fov_deg < 150)) throw InputError("--fov must be in (5, 150) degrees");
     if (!(a.haze_km >= 0)) throw InputError("--haze-km must be >= 0");
+    if (!(a.mesh_scale > 0)) throw InputError("--mesh-scale must be > 0");
+    const double forward_yaw = a.mesh_forward == "+y" ? 0.0 : a.mesh_forward == "-x" ? -90.0
+                             : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 1e9;
+    if (forward_yaw > 360.0) throw InputError("--mesh-forward " + a.mesh_forward + ": give +x, -x, +y or -y");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
     plan.input("--path", a.path);
+    plan.input("--mesh", a.mesh);
     if (offscreen) plan.output_directory("--out", a.out);
     plan.check();
 
@@ -382,6 +392,8 @@ void run_fly(const FlyArgs& a) {
         context_options.instance_extensions = gpu::FlyWindow::instance_extensions();
         context_options.device_extensions = gpu::FlyWindow::device_extensions();
     }
+    // A bad mesh file is found before the shading state is computed.
+    if (!a.mesh.empty()) mesh::import_mesh(a.mesh);
     const std::optional<fly::FlightPath> given_path =
         a.path.empty() ? std::nullopt : std::optional<fly::FlightPath>(fly::read_flight_path(a.path));
 
@@ -397,6 +409,7 @@ void run_fly(const FlyArgs& a) {
     context = std::make_unique<gpu::Context>(context_options);
     gpu::FlySession session(dem, settings, *context);
     const fly::FlightPath path = given_path ? *given_path : default_path(session);
+    if (!a.mesh.empty()) session.set_aircraft(mesh::import_mesh(a.mesh), a.mesh_scale, forward_yaw);
     const double relight_ms = session.set_time(time);
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg at %s (relight %.0f ms); %d LOD levels, on %s\n",
                 session.sun().azimuth_deg, session.sun().elevation_deg, light::format_utc_time(time).c_str(),
@@ -427,6 +440,11 @@ void add_fly_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--path", args->path,
                     "flight path CSV: t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg (default: straight over the DEM)");
+    cmd->add_option("--mesh", args->mesh, "aircraft mesh drawn along the path (AC3D, glTF, OBJ, ...)");
+    cmd->add_option("--mesh-scale", args->mesh_scale, "scale of the aircraft mesh")->capture_default_str();
+    cmd->add_option("--mesh-forward", args->mesh_forward,
+                    "the mesh's nose axis after import: +x, -x, +y or -y (the shared Cessna: -x)")
+        ->capture_default_str();
     cmd->add_option("--camera", args->camera, "chase, cockpit, free or orbit (C cycles them)")->capture_default_str();
     cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");
     cmd->add_option("--exit-after", args->exit_after, "close the window after N frames (scripts and tests; 0 = never)");

@@ -12,8 +12,8 @@ enum class CameraMode { chase, cockpit, free, orbit };
 const char* camera_mode_name(CameraMode mode);
 
 struct ChaseOffsets {
-    double back_m = 120.0;  // behind the aircraft along its heading
-    double up_m = 30.0;     // above it
+    double back_m = 60.0;  // behind the aircraft along its heading
+    double up_m = 15.0;    // above it
 };
 CameraPose chase_pose(const CameraPose& aircraft, const ChaseOffsets& offsets = {});
 

@@ -10,11 +10,14 @@ layout(std430, set = 0, binding = 0) readonly buffer Frame {
     vec4 camera_up;        // xyz, w: tan(vertical fov / 2)
     vec4 camera_forward;   // xyz
     vec4 sky_table;        // azimuth count, elevation count, lowest elevation (rad), highest (rad)
+    vec4 sky_sh[16];       // rgb: the sky's order-4 SH (core/light/sky.hpp project_sky_sh)
 } frame;
 layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
 layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m
 layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]; };   // rgb fp16 per texel
 layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
+// The aircraft: 3 vertices per triangle, each position (xyz, model metres), normal, colour.
+layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[]; };
 
 // Sky radiance (the sun's disc apart) in a direction, bilinear in azimuth (wrapping) and
 // elevation (clamped); azimuth counter-clockwise from east as in the rest of terrashade.

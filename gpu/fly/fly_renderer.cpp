@@ -1,5 +1,6 @@
 #include "gpu/fly/fly_renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <stdexcept>
@@ -13,7 +14,7 @@ namespace {
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr int kBindings = 5;
+constexpr int kBindings = 6;
 
 struct PatchPush {
     float col0, row0, spacing, morph_start_m, morph_end_m;
@@ -199,6 +200,8 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     std::memset(radiance_.mapped(), 0, radiance_.size());
     sky_ = context.create_buffer(16, MemoryKind::host_visible);
     std::memset(sky_.mapped(), 0, sky_.size());
+    aircraft_ = context.create_buffer(16, MemoryKind::host_visible);
+    std::memset(aircraft_.mapped(), 0, aircraft_.size());
 
     set_layout_ = DescriptorSetLayout(device, kBindings, kStages);
     pool_ = DescriptorPool(device, 1, kBindings);
@@ -210,6 +213,9 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     sky_pipeline_ = make_pipeline(device, sky_layout_.get(), render_pass_.get(), "fly_sky.vert", "fly_sky.frag", false);
     terrain_pipeline_ =
         make_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert", "fly_terrain.frag", true);
+    aircraft_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(glm::mat4), VK_SHADER_STAGE_VERTEX_BIT);
+    aircraft_pipeline_ = make_pipeline(device, aircraft_layout_.get(), render_pass_.get(), "fly_aircraft.vert",
+                                       "fly_aircraft.frag", true);
     command_pool_ = CommandPool(device, context.device().queue_family());
     commands_ = CommandBuffer(device, command_pool_);
     fence_ = Fence(device);
@@ -219,7 +225,8 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
 FlyRenderer::~FlyRenderer() { context_.device().wait_idle(); }
 
 void FlyRenderer::write_descriptors() {
-    const VkBuffer buffers[kBindings] = {frame_.get(), heights_.get(), rows_.get(), radiance_.get(), sky_.get()};
+    const VkBuffer buffers[kBindings] = {frame_.get(),    heights_.get(), rows_.get(),
+                                         radiance_.get(), sky_.get(),     aircraft_.get()};
     write_storage_buffers(context_.vk_device(), set_, buffers);
 }
 
@@ -266,6 +273,19 @@ void FlyRenderer::set_sky(std::span<const glm::vec4> table) {
     std::memcpy(sky_.mapped(), table.data(), table.size_bytes());
 }
 
+void FlyRenderer::set_aircraft(std::span<const glm::vec4> vertices) {
+    context_.device().wait_idle();
+    aircraft_vertices_ = std::uint32_t(vertices.size() / 3);
+    aircraft_ = context_.create_buffer(std::max<std::size_t>(vertices.size_bytes(), 16), MemoryKind::host_visible);
+    if (!vertices.empty()) std::memcpy(aircraft_.mapped(), vertices.data(), vertices.size_bytes());
+    write_descriptors();
+}
+
+void FlyRenderer::set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw) {
+    aircraft_transform_ = model_to_eye_relative;
+    draw_aircraft_ = draw && aircraft_vertices_ > 0;
+}
+
 void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches) {
     std::memcpy(frame_.mapped(), &frame, sizeof frame);
     VkClearValue clears[2]{};
@@ -292,6 +312,13 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
         const std::uint32_t first = p.quadrant < 0 ? 0 : std::uint32_t(p.quadrant) * quadrant_indices_;
         const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
         vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);
+    }
+    if (draw_aircraft_) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, aircraft_pipeline_.get());
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, aircraft_layout_.get(), 0, 1, &set_, 0, nullptr);
+        vkCmdPushConstants(cmd, aircraft_layout_.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                           &aircraft_transform_);
+        vkCmdDraw(cmd, aircraft_vertices_, 1, 0, 0);
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_layout_.get(), 0, 1, &set_, 0, nullptr);

@@ -36,6 +36,7 @@ struct FlyFrameUniforms {
     glm::vec4 camera_up{0.0f};
     glm::vec4 camera_forward{0.0f};
     glm::vec4 sky_table{0.0f};
+    glm::vec4 sky_sh[16]{};
 };
 
 struct FlyTerrain {
@@ -58,6 +59,12 @@ public:
     void set_radiance(std::span<const std::uint32_t> packed);
     // Sky radiance table, [elevation][azimuth] rgb_.
     void set_sky(std::span<const glm::vec4> table);
+    // The aircraft's triangles: 3 vertices each, 3 vec4 per vertex (position, normal, colour),
+    // in its model frame (metres). Empty: no aircraft.
+    void set_aircraft(std::span<const glm::vec4> vertices);
+    // Where the aircraft is this frame: model -> eye-relative metres; `draw` false skips it
+    // (no mesh, or the cockpit view from inside it).
+    void set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw);
 
     // Records one frame into `cmd` (begun by the caller): the render pass, leaving the colour
     // target in TRANSFER_SRC_OPTIMAL for a blit or a copy.
@@ -83,9 +90,13 @@ private:
     DescriptorSetLayout set_layout_;
     DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
-    PipelineLayout sky_layout_, terrain_layout_;
+    PipelineLayout sky_layout_, terrain_layout_, aircraft_layout_;
     DeviceHandle<VkRenderPass> render_pass_;
-    DeviceHandle<VkPipeline> sky_pipeline_, terrain_pipeline_;
+    DeviceHandle<VkPipeline> sky_pipeline_, terrain_pipeline_, aircraft_pipeline_;
+    Buffer aircraft_;
+    std::uint32_t aircraft_vertices_ = 0;
+    glm::mat4 aircraft_transform_{1.0f};
+    bool draw_aircraft_ = false;
     GpuImage color_, depth_;
     DeviceHandle<VkFramebuffer> framebuffer_;
     Buffer readback_, depth_readback_;

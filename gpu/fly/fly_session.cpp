@@ -6,6 +6,7 @@
 #include <glm/packing.hpp>
 
 #include "core/light/sky.hpp"
+#include "core/mesh/placement.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/progress_bar.hpp"
@@ -67,6 +68,7 @@ double FlySession::set_time(light::UtcTime time) {
     renderer_->set_radiance(packed_);
     const light::Sky& sky = *scene_->last_sky();
     sky_table_ = fly::make_sky_table(sky);
+    sky_sh_ = light::project_sky_sh(sky);
     renderer_->set_sky(sky_table_.rgb);
     const light::SunDisc disc = sky.sun();
     sun_dir_ = glm::vec3(disc.direction);
@@ -121,7 +123,23 @@ fly::CameraPose FlySession::default_pose() const {
     return c;
 }
 
-void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats) {
+void FlySession::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg) {
+    aircraft_yaw_deg_ = forward_yaw_deg;
+    std::vector<glm::vec4> v;
+    v.reserve(m.positions.size() * 3);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec4 c = m.materials[m.material[i / 3]].base_color;
+        v.push_back(glm::vec4(m.positions[i], 1.0f));
+        v.push_back(glm::vec4(m.normals[i], 0.0f));
+        v.push_back(glm::vec4(glm::vec3(c), 1.0f));
+    }
+    renderer_->set_aircraft(v);
+    aircraft_scale_ = scale;
+    aircraft_triangles_ = m.triangle_count();
+}
+
+void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
+                         const fly::CameraPose* aircraft) {
     fly::Projection proj;
     proj.horizontal_fov_deg = settings_.fov_deg;
     proj.width = renderer_->width();
@@ -129,7 +147,7 @@ void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     // The near plane follows the height above the ground: close enough to land, far enough
     // for depth precision (reversed Z keeps it either way).
     const double agl = camera.eye.z - ground_height_m(camera.eye);
-    proj.near_m = std::clamp(0.25 * agl, 0.5, 50.0);
+    proj.near_m = std::clamp(0.25 * agl, 0.5, 20.0);  // the chased aircraft is 60 m away
     const glm::dmat4 vp = fly::eye_relative_view_projection(camera, proj);
 
     const Stopwatch watch;
@@ -157,6 +175,23 @@ void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     u.camera_right = glm::vec4(glm::vec3(axes.right), float(tan_h));
     u.camera_up = glm::vec4(glm::vec3(axes.up), float(tan_v));
     u.camera_forward = glm::vec4(glm::vec3(axes.forward), 0.0f);
+    for (int i = 0; i < 16; ++i) u.sky_sh[i] = glm::vec4(sky_sh_[std::size_t(i)], 0.0f);
+    if (aircraft != nullptr && aircraft_triangles_ > 0) {
+        mesh::Placement p;
+        p.heading_deg = aircraft->heading_deg;
+        p.pitch_deg = aircraft->pitch_deg;
+        p.roll_deg = aircraft->roll_deg;
+        // The model's nose turned onto +y, the placement's forward, first.
+        const double yaw = radians(aircraft_yaw_deg_);
+        const glm::dmat3 to_forward(std::cos(yaw), std::sin(yaw), 0.0, -std::sin(yaw), std::cos(yaw), 0.0, 0.0, 0.0, 1.0);
+        const glm::dmat3 r = mesh::placement_rotation(p) * to_forward * aircraft_scale_;
+        glm::dmat4 m(r);
+        m[3] = glm::dvec4(aircraft->eye - camera.eye, 1.0);
+        renderer_->set_aircraft_transform(glm::mat4(m), true);
+        stats.triangles += aircraft_triangles_;
+    } else {
+        renderer_->set_aircraft_transform(glm::mat4(1.0f), false);
+    }
     u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
                             float(sky_table_.highest_rad));
 }

@@ -14,7 +14,9 @@
 #include "core/fly/flight_path.hpp"
 #include "core/fly/grid_frame.hpp"
 #include "core/fly/sky_table.hpp"
+#include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
+#include "core/mesh/triangle_mesh.hpp"
 #include "core/render/render_scene.hpp"
 #include "gpu/context.hpp"
 #include "gpu/fly/fly_renderer.hpp"
@@ -63,8 +65,15 @@ public:
     // A start above the DEM's south-west, looking over its centre.
     fly::CameraPose default_pose() const;
 
-    // Selects the terrain for this camera and fills the frame's uniforms.
-    void prepare(const fly::CameraPose& camera, FlyFrameUniforms& uniforms, FlyFrameStats& stats);
+    // The aircraft drawn at the path's pose (its model frame in metres, times `scale`), its nose
+    // turned by `forward_yaw_deg` (counter-clockwise about up) onto the model's +y first.
+    void set_aircraft(const mesh::TriangleMesh& mesh, double scale, double forward_yaw_deg);
+    bool has_aircraft() const { return aircraft_triangles_ > 0; }
+
+    // Selects the terrain for this camera and fills the frame's uniforms; `aircraft`: where the
+    // aircraft is this frame (nullptr: not drawn).
+    void prepare(const fly::CameraPose& camera, FlyFrameUniforms& uniforms, FlyFrameStats& stats,
+                 const fly::CameraPose* aircraft = nullptr);
     const std::vector<fly::CdlodPatch>& patches() const { return selection_.patches; }
 
 private:
@@ -82,6 +91,9 @@ private:
     double sun_cos_radius_ = 1.0;
     double exposure_ = 1.0;
     fly::FlySkyTable sky_table_;
+    light::SkySh sky_sh_{};
+    double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
+    std::size_t aircraft_triangles_ = 0;
     fly::CdlodSelection selection_;
     render::LinearImage radiance_;
     std::vector<std::uint32_t> packed_;

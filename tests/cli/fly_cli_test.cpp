@@ -18,6 +18,7 @@ namespace ts::cli_test {
 namespace {
 
 const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
+const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
 
 std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 
@@ -41,11 +42,13 @@ std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int&
 }
 
 TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
+    ASSERT_TRUE(std::filesystem::exists(kCessna)) << "the shared meshes are missing: " << kCessna;
     const auto dir = temp_dir("fly_frames");
     const auto out = dir / "frames";
     const Result r = run("TERRASHADE_VALIDATION=1 " +
                          ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
-                                quote(write_path(dir).string()) + " --out " + quote(out.string())));
+                                quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
+                                " --mesh-forward -x --out " + quote(out.string())));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("wrote 3 frames"), std::string::npos) << r.out;
@@ -75,6 +78,29 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
         }
         previous = px;
     }
+    // The Cessna, chased from 60 m behind, is what differs from the same frame without it: a
+    // small patch in the middle of the picture.
+    const auto bare = dir / "bare";
+    const Result b = run(ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+                                quote(write_path(dir).string()) + " --out " + quote(bare.string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    int w = 0, h = 0;
+    const auto with = read_rgb(out / "frame_0001.png", w, h);
+    const auto without = read_rgb(bare / "frame_0001.png", w, h);
+    ASSERT_EQ(with.size(), without.size());
+    double cx = 0, cy = 0;
+    int changed = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = 3 * (std::size_t(y) * std::size_t(w) + std::size_t(x));
+            const int d = std::abs(with[i] - without[i]) + std::abs(with[i + 1] - without[i + 1]) +
+                          std::abs(with[i + 2] - without[i + 2]);
+            if (d > 30) ++changed, cx += x, cy += y;
+        }
+    ASSERT_GT(changed, 30) << "the aircraft is not drawn";
+    EXPECT_LT(changed, w * h / 10) << "the aircraft covers too much";
+    EXPECT_NEAR(cx / changed, w / 2.0, 0.15 * w);
+    EXPECT_NEAR(cy / changed, h / 2.0, 0.2 * h);
 }
 
 TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {

@@ -124,8 +124,8 @@ void run_bench_fly(const BenchFlyArgs& a) {
                             session.tree().level_max_error_m(k), session.tree().range_m(k, k_px));
         }
         const Figures f = fly_once(session, a.frames, run.aircraft);
-        std::printf("%s%.2f,%.2f,", run.aircraft ? "aircraft " : "",%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", goal, run.quantile, f.fps, f.mean_ms, f.p99_ms,
-                    f.select_ms, f.tris, f.error_px, f.error_max_px);
+        std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", run.aircraft ? "aircraft " : "", goal,
+                    run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
     }
     if (a.mesh.empty()) std::printf("with an aircraft: give --mesh FILE\n");
 }

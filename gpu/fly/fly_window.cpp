@@ -60,14 +60,23 @@ bool display_available(std::string& reason) {
     return true;
 }
 
+namespace {
+std::string glfw_error() {
+    const char* what = nullptr;
+    glfwGetError(&what);
+    return what != nullptr ? std::string(": ") + what : std::string();
+}
+}  // namespace
+
 FlyWindow::FlyWindow(int width, int height, const std::string& title) {
-    if (glfwInit() != GLFW_TRUE) throw InputError("fly: cannot open a window (GLFW could not start)");
+    if (glfwInit() != GLFW_TRUE) throw InputError("fly: cannot open a window (GLFW could not start" + glfw_error() + ")");
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (window_ == nullptr) {
+        const std::string why = glfw_error();
         glfwTerminate();
-        throw InputError("fly: cannot open a window on this display");
+        throw InputError("fly: cannot open a window on this display" + why);
     }
 }
 

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -114,9 +116,16 @@ TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     // The window test is part of the suite: without xvfb-run it fails (scripts/setup.sh installs xvfb).
     ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
     const auto dir = temp_dir("fly_window");
-    const Result r = run("TERRASHADE_VALIDATION=1 xvfb-run -a -s '-screen 0 1024x768x24' " +
-                         ts_cmd("fly " + quote(kDem) + " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
-                                quote(write_path(dir).string())));
+    // xvfb-run -a takes the first free display from -n on; two runs starting together (another
+    // test binary, another checkout) can race for it, so each starts from its own number, and
+    // a lost race (the server gone under us) is tried once more.
+    const std::string server = std::to_string(200 + int(::getpid() % 500));
+    const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
+                                ts_cmd("fly " + quote(kDem) +
+                                       " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
+                                       quote(write_path(dir).string()));
+    Result r = run(command);
+    if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
 }

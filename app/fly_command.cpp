@@ -27,7 +27,7 @@
 #include "core/util/staged_outputs.hpp"
 #include "core/util/stopwatch.hpp"
 #include "gpu/context.hpp"
-#include "gpu/fly/fly_session.hpp"
+#include "gpu/fly/flythrough.hpp"
 #include "gpu/fly/fly_window.hpp"
 
 namespace ts::app {
@@ -99,7 +99,7 @@ std::string solar_time(light::UtcTime t, double lon_deg) {
 
 // The flight when no --path is given: straight over the DEM from the default start, 80 m/s,
 // 20 s.
-fly::FlightPath default_path(const gpu::FlySession& s) {
+fly::FlightPath default_path(const gpu::Flythrough& s) {
     const fly::CameraPose start = s.default_pose();
     std::vector<fly::FlightPose> poses;
     const double h = radians(start.heading_deg);
@@ -134,7 +134,7 @@ std::string stats_line(const gpu::FlyFrameStats& st, double frame_ms, double gpu
     return buf;
 }
 
-void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPath& path, fly::CameraMode mode) {
+void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath& path, fly::CameraMode mode) {
     std::filesystem::create_directories(a.out);
     interrupt::report_progress("frames", std::uint64_t(a.frames));
     gpu::FlyFrameUniforms u;
@@ -146,14 +146,14 @@ void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPat
     std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms\n";
     for (int i = 0; i < a.frames; ++i) {
         const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
-        const fly::CameraPose aircraft = session.pose_of(path.at(t));
-        session.prepare(camera_for(mode, aircraft), u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        const fly::CameraPose aircraft = flight.pose_of(path.at(t));
+        flight.prepare(camera_for(mode, aircraft), u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
         const Stopwatch draw;
-        session.renderer().render_to_memory(u, session.patches(), rgba);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba);
         const double draw_ms = draw.milliseconds();
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
-        write_rgba_png(std::filesystem::path(a.out) / name, session.renderer().width(), session.renderer().height(),
+        write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(), flight.renderer().height(),
                        rgba);
         char line[160];
         std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f\n", i, t, st.patches, st.triangles,
@@ -169,7 +169,7 @@ void run_frames(const FlyArgs& a, gpu::FlySession& session, const fly::FlightPat
         std::ofstream(tmp) << csv;
     });
     std::printf("wrote %d frames (%dx%d) to %s: %.1f ms and %zu triangles a frame on average, screen-space error <= %.2f px\n",
-                a.frames, session.renderer().width(), session.renderer().height(), a.out.c_str(),
+                a.frames, flight.renderer().width(), flight.renderer().height(), a.out.c_str(),
                 frame_ms_sum / std::max(1, a.frames), tris_sum / std::size_t(std::max(1, a.frames)), worst_error);
 }
 
@@ -179,7 +179,7 @@ bool held(const gpu::WindowInput& in, int key) {
     return false;
 }
 
-void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& window, const fly::FlightPath& path,
+void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& window, const fly::FlightPath& path,
                 fly::CameraMode mode, light::UtcTime start_time) {
     std::printf("%s", kKeys);
     std::fflush(stdout);
@@ -188,10 +188,10 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
     double path_t = path.start_s();
     bool paused = false;
     fly::FreeFlight free_flight;
-    free_flight.pose = session.default_pose();
+    free_flight.pose = flight.default_pose();
     fly::Orbit orbit;
-    orbit.centre = {0.0, 0.0, session.ground_height_m({0, 0, 0})};
-    orbit.distance_m = 0.5 * std::hypot(session.frame().to_metric(0, 0).x, session.frame().to_metric(0, 0).y);
+    orbit.centre = {0.0, 0.0, flight.ground_height_m({0, 0, 0})};
+    orbit.distance_m = 0.5 * std::hypot(flight.frame().to_metric(0, 0).x, flight.frame().to_metric(0, 0).y);
     bool recording = false;
     std::vector<fly::FlightPose> recorded;
     double record_t = 0;
@@ -272,7 +272,7 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
             const double turn_h = (held(in, GLFW_KEY_RIGHT) ? 60.0 : 0.0) - (held(in, GLFW_KEY_LEFT) ? 60.0 : 0.0);
             const double turn_p = (held(in, GLFW_KEY_UP) ? 40.0 : 0.0) - (held(in, GLFW_KEY_DOWN) ? 40.0 : 0.0);
             free_flight.turn(turn_h * dt + 0.15 * in.mouse_dx, turn_p * dt - 0.15 * in.mouse_dy);
-            const double floor = session.ground_height_m(free_flight.pose.eye) + 2.0;
+            const double floor = flight.ground_height_m(free_flight.pose.eye) + 2.0;
             free_flight.pose.eye.z = std::max(free_flight.pose.eye.z, floor);
             camera = free_flight.pose;
         } else if (mode == fly::CameraMode::orbit) {
@@ -282,42 +282,42 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
             if (held(in, GLFW_KEY_DOWN)) orbit.zoom(std::pow(2.0, dt));
             camera = orbit.pose();
         } else {
-            camera = camera_for(mode, session.pose_of(path.at(path_t)));
+            camera = camera_for(mode, flight.pose_of(path.at(path_t)));
         }
         if (recording) {
             record_t += dt;
-            const fly::CameraPose& rec = mode == fly::CameraMode::free ? camera : session.pose_of(path.at(path_t));
+            const fly::CameraPose& rec = mode == fly::CameraMode::free ? camera : flight.pose_of(path.at(path_t));
             if (recorded.empty() || record_t > recorded.back().t_s + 1e-3)
-                recorded.push_back(session.flight_pose_of(rec, record_t));
+                recorded.push_back(flight.flight_pose_of(rec, record_t));
         }
-        session.set_time(time);
+        flight.set_time(time);
 
         int fw = 0, fh = 0;
         window.framebuffer_size(fw, fh);
         if (fw == 0 || fh == 0) continue;  // minimised
-        if (fw != session.renderer().width() || fh != session.renderer().height()) {
-            session.context().device().wait_idle();
-            session.renderer().resize(fw, fh);
+        if (fw != flight.renderer().width() || fh != flight.renderer().height()) {
+            flight.context().device().wait_idle();
+            flight.renderer().resize(fw, fh);
         }
         const Stopwatch frame_watch;
-        const fly::CameraPose aircraft = session.pose_of(path.at(path_t));
-        session.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        const fly::CameraPose aircraft = flight.pose_of(path.at(path_t));
+        flight.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
         std::uint32_t image = 0;
         const Stopwatch draw_watch;
         if (window.begin(image)) {
-            session.renderer().record(window.commands(), u, session.patches());
-            window.end(session.renderer().color_image(), session.renderer().width(), session.renderer().height(),
+            flight.renderer().record(window.commands(), u, flight.patches());
+            window.end(flight.renderer().color_image(), flight.renderer().width(), flight.renderer().height(),
                        image);
         }
         draw_ms = draw_watch.milliseconds();
         frame_ms = frame_watch.milliseconds();
         if (screenshot) {
             std::vector<std::uint8_t> rgba;
-            session.renderer().render_to_memory(u, session.patches(), rgba);
+            flight.renderer().render_to_memory(u, flight.patches(), rgba);
             char name[48];
             std::snprintf(name, sizeof name, "fly_screenshot_%03d.png", shots++);
             const std::filesystem::path file = std::filesystem::path(shot_dir) / name;
-            write_rgba_png(file, session.renderer().width(), session.renderer().height(), rgba);
+            write_rgba_png(file, flight.renderer().width(), flight.renderer().height(), rgba);
             std::printf("wrote %s\n", file.string().c_str());
         }
         ++fps_frames;
@@ -331,13 +331,13 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
         }
         if (title_time >= 0.25) {
             title_time = 0;
-            const glm::dvec2 ll = session.lonlat_of(camera.eye);
+            const glm::dvec2 ll = flight.lonlat_of(camera.eye);
             char title[320];
             std::snprintf(title, sizeof title,
                           "terrashade fly | %.0f fps %s | %.4f%c %.4f%c %.0f m | hdg %03.0f | %s solar | sun %.0f deg | %s%s%s",
                           fps, stats_line(st, frame_ms, draw_ms).c_str(), std::abs(ll.y), ll.y >= 0 ? 'N' : 'S',
                           std::abs(ll.x), ll.x >= 0 ? 'E' : 'W', camera.eye.z, camera.heading_deg,
-                          solar_time(time, ll.x).c_str(), session.sun().elevation_deg, fly::camera_mode_name(mode),
+                          solar_time(time, ll.x).c_str(), flight.sun().elevation_deg, fly::camera_mode_name(mode),
                           paused ? " | paused" : "", recording ? " | REC" : "");
             window.set_title(title);
         }
@@ -347,7 +347,7 @@ void run_window(const FlyArgs& a, gpu::FlySession& session, gpu::FlyWindow& wind
         write_atomically(a.record, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << fly::flight_path_csv(p); });
         std::printf("wrote %s (%zu poses)\n", a.record.c_str(), recorded.size());
     }
-    session.context().device().wait_idle();
+    flight.context().device().wait_idle();
 }
 
 void run_fly(const FlyArgs& a) {
@@ -407,18 +407,18 @@ void run_fly(const FlyArgs& a) {
     const dem::Dem dem = load_dem_input(a.dem);
     if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
     context = std::make_unique<gpu::Context>(context_options);
-    gpu::FlySession session(dem, settings, *context);
-    const fly::FlightPath path = given_path ? *given_path : default_path(session);
-    if (!a.mesh.empty()) session.set_aircraft(mesh::import_mesh(a.mesh), a.mesh_scale, forward_yaw);
-    const double relight_ms = session.set_time(time);
+    gpu::Flythrough flight(dem, settings, *context);
+    const fly::FlightPath path = given_path ? *given_path : default_path(flight);
+    if (!a.mesh.empty()) flight.set_aircraft(mesh::import_mesh(a.mesh), a.mesh_scale, forward_yaw);
+    const double relight_ms = flight.set_time(time);
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg at %s (relight %.0f ms); %d LOD levels, on %s\n",
-                session.sun().azimuth_deg, session.sun().elevation_deg, light::format_utc_time(time).c_str(),
-                relight_ms, session.tree().levels(), session.context().device_info().name.c_str());
+                flight.sun().azimuth_deg, flight.sun().elevation_deg, light::format_utc_time(time).c_str(),
+                relight_ms, flight.tree().levels(), flight.context().device_info().name.c_str());
     if (offscreen) {
-        run_frames(a, session, path, mode);
+        run_frames(a, flight, path, mode);
     } else {
-        window->attach(session.context(), a.vsync == "on");
-        run_window(a, session, *window, path, mode, time);
+        window->attach(flight.context(), a.vsync == "on");
+        run_window(a, flight, *window, path, mode, time);
         window.reset();
     }
     // TERRASHADE_VALIDATION=1: what the validation layer reported (the tests want none).

@@ -18,7 +18,7 @@
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "gpu/context.hpp"
-#include "gpu/fly/fly_session.hpp"
+#include "gpu/fly/flythrough.hpp"
 
 namespace ts::app {
 namespace {
@@ -38,16 +38,16 @@ struct Figures {
     double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, error_max_px = 0, select_ms = 0;
 };
 
-Figures fly_once(gpu::FlySession& session, int frames, bool with_aircraft) {
+Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
     // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
     // over the ground at the start, looking ahead and down a little.
-    const auto& frame = session.frame();
+    const auto& frame = flight.frame();
     double top = 0;
-    for (float z : session.scene().grid().z) top = std::max(top, double(z));
+    for (float z : flight.scene().grid().z) top = std::max(top, double(z));
     auto pose_at = [&](double f) {
         const glm::dvec2 m = frame.to_metric((0.2 + 0.6 * f) * (frame.width() - 1), (0.8 - 0.6 * f) * (frame.height() - 1));
         fly::CameraPose p;
-        p.eye = {m.x, m.y, std::max(top * 0.8, session.ground_height_m({m.x, m.y, 0}) + 400.0)};
+        p.eye = {m.x, m.y, std::max(top * 0.8, flight.ground_height_m({m.x, m.y, 0}) + 400.0)};
         p.heading_deg = 45.0 + 40.0 * std::sin(6.0 * f);
         p.pitch_deg = -10.0;
         return p;
@@ -65,8 +65,8 @@ Figures fly_once(gpu::FlySession& session, int frames, bool with_aircraft) {
         const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, 0.0);
         aircraft.eye += axes.forward * 60.0;
         aircraft.pitch_deg = 0.0;
-        session.prepare(camera, u, st, with_aircraft ? &aircraft : nullptr);
-        session.renderer().render_to_memory(u, session.patches(), rgba);
+        flight.prepare(camera, u, st, with_aircraft ? &aircraft : nullptr);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba);
         if (i < 0) continue;
         ms.push_back(w.milliseconds());
         fig.tris += double(st.triangles);
@@ -113,17 +113,17 @@ void run_bench_fly(const BenchFlyArgs& a) {
         s.directions = a.directions;
         s.lod.pixel_error = goal;
         s.lod.error_quantile = run.quantile;
-        gpu::FlySession session(dem, s, context);
-        session.set_time(light::parse_utc_time(a.time));
-        if (run.aircraft) session.set_aircraft(aircraft_mesh, 1.0, yaw);
+        gpu::Flythrough flight(dem, s, context);
+        flight.set_time(light::parse_utc_time(a.time));
+        if (run.aircraft) flight.set_aircraft(aircraft_mesh, 1.0, yaw);
         if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft) {
             const double k_px = h / (2.0 * std::tan(0.5 * fly::Projection{s.fov_deg, w, h, 1.0}.vertical_fov_rad()));
             std::printf("level,vertex_spacing_texels,error_q99_m,error_max_m,range_m (goal %.2f px)\n", goal);
-            for (int k = 0; k < session.tree().levels(); ++k)
-                std::printf("%d,%d,%.2f,%.2f,%.0f\n", k, 1 << k, session.tree().level_error_m(k),
-                            session.tree().level_max_error_m(k), session.tree().range_m(k, k_px));
+            for (int k = 0; k < flight.tree().levels(); ++k)
+                std::printf("%d,%d,%.2f,%.2f,%.0f\n", k, 1 << k, flight.tree().level_error_m(k),
+                            flight.tree().level_max_error_m(k), flight.tree().range_m(k, k_px));
         }
-        const Figures f = fly_once(session, a.frames, run.aircraft);
+        const Figures f = fly_once(flight, a.frames, run.aircraft);
         std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", run.aircraft ? "aircraft " : "", goal,
                     run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
     }

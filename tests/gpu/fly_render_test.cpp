@@ -10,7 +10,7 @@
 #include "core/dem/read_dem.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/light/utc_time.hpp"
-#include "gpu/fly/fly_session.hpp"
+#include "gpu/fly/flythrough.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -68,8 +68,8 @@ TEST_F(FlyRenderTest, AShortFlightOverGrenobleHasTerrainSkyAndNoCracks) {
     settings.width = 480;
     settings.height = 270;
     settings.directions = 8;
-    FlySession session(dem, settings, *context_);
-    session.set_time(light::parse_utc_time("2024-06-21T08:00:00Z"));
+    Flythrough flight(dem, settings, *context_);
+    flight.set_time(light::parse_utc_time("2024-06-21T08:00:00Z"));
     // From the DEM's south-west quarter towards its centre, heading north-east, slightly down.
     const glm::dvec2 a = dem.georef.pixel_to_lonlat(0.25 * dem.width, 0.75 * dem.height);
     const glm::dvec2 b = dem.georef.pixel_to_lonlat(0.45 * dem.width, 0.55 * dem.height);
@@ -78,14 +78,14 @@ TEST_F(FlyRenderTest, AShortFlightOverGrenobleHasTerrainSkyAndNoCracks) {
     std::vector<float> depth;
     int levels_drawn = 0;
     for (int i = 0; i < 4; ++i) {
-        const fly::CameraPose pose = session.pose_of(path.at(10.0 * i / 3.0));
+        const fly::CameraPose pose = flight.pose_of(path.at(10.0 * i / 3.0));
         FlyFrameUniforms u;
         FlyFrameStats stats;
-        session.prepare(pose, u, stats);
+        flight.prepare(pose, u, stats);
         int lo = 99, hi = -1;
-        for (const auto& p : session.patches()) lo = std::min(lo, p.level), hi = std::max(hi, p.level);
+        for (const auto& p : flight.patches()) lo = std::min(lo, p.level), hi = std::max(hi, p.level);
         levels_drawn = std::max(levels_drawn, hi - lo + 1);
-        session.renderer().render_to_memory(u, session.patches(), rgba, &depth);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba, &depth);
         const FrameCheck c = check_frame(rgba, depth, settings.width, settings.height);
         SCOPED_TRACE("frame " + std::to_string(i));
         EXPECT_GT(c.terrain_fraction, 0.3);

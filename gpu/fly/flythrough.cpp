@@ -1,4 +1,4 @@
-#include "gpu/fly/fly_session.hpp"
+#include "gpu/fly/flythrough.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,7 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
 
 }  // namespace
 
-FlySession::FlySession(const dem::Dem& dem, const FlySettings& settings, Context& context)
+Flythrough::Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context)
     : dem_(dem), settings_(settings), scene_(make_scene(dem, settings)), frame_(scene_->grid()), context_(context) {
     tree_ = std::make_unique<fly::CdlodTree>(scene_->grid(), frame_, settings_.lod);
     std::vector<float> rows(std::size_t(frame_.height()) * 2);
@@ -47,9 +47,9 @@ FlySession::FlySession(const dem::Dem& dem, const FlySettings& settings, Context
     renderer_ = std::make_unique<FlyRenderer>(context_, terrain, settings_.width, settings_.height);
 }
 
-FlySession::~FlySession() = default;
+Flythrough::~Flythrough() = default;
 
-double FlySession::set_time(light::UtcTime time) {
+double Flythrough::set_time(light::UtcTime time) {
     if (lit_ && time == time_) return 0.0;
     const Stopwatch watch;
     time_ = time;
@@ -78,7 +78,7 @@ double FlySession::set_time(light::UtcTime time) {
     return watch.milliseconds();
 }
 
-fly::CameraPose FlySession::pose_of(const fly::FlightPose& p) const {
+fly::CameraPose Flythrough::pose_of(const fly::FlightPose& p) const {
     const glm::dvec2 px = dem_.georef.lonlat_to_pixel({p.lon_deg, p.lat_deg});
     const glm::dvec2 m = frame_.to_metric(px.x - 0.5, px.y - 0.5);
     fly::CameraPose c;
@@ -89,17 +89,17 @@ fly::CameraPose FlySession::pose_of(const fly::FlightPose& p) const {
     return c;
 }
 
-glm::dvec2 FlySession::lonlat_of(const glm::dvec3& eye) const {
+glm::dvec2 Flythrough::lonlat_of(const glm::dvec3& eye) const {
     const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
     return dem_.georef.pixel_to_lonlat(g.x + 0.5, g.y + 0.5);
 }
 
-fly::FlightPose FlySession::flight_pose_of(const fly::CameraPose& c, double t_s) const {
+fly::FlightPose Flythrough::flight_pose_of(const fly::CameraPose& c, double t_s) const {
     const glm::dvec2 ll = lonlat_of(c.eye);
     return {t_s, ll.x, ll.y, c.eye.z, c.heading_deg, c.pitch_deg, c.roll_deg};
 }
 
-double FlySession::ground_height_m(const glm::dvec3& eye) const {
+double Flythrough::ground_height_m(const glm::dvec3& eye) const {
     const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
     const terrain::HeightGrid& grid = scene_->grid();
     const double x = std::clamp(g.x, 0.0, double(grid.width - 1)), y = std::clamp(g.y, 0.0, double(grid.height - 1));
@@ -110,7 +110,7 @@ double FlySession::ground_height_m(const glm::dvec3& eye) const {
     return top + fr * (bottom - top);
 }
 
-fly::CameraPose FlySession::default_pose() const {
+fly::CameraPose Flythrough::default_pose() const {
     const glm::dvec2 sw = frame_.to_metric(0.15 * (frame_.width() - 1), 0.85 * (frame_.height() - 1));
     double top = 0;
     for (float z : scene_->grid().z) top = std::max(top, double(z));
@@ -123,7 +123,7 @@ fly::CameraPose FlySession::default_pose() const {
     return c;
 }
 
-void FlySession::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg) {
+void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg) {
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
     v.reserve(m.positions.size() * 3);
@@ -138,7 +138,7 @@ void FlySession::set_aircraft(const mesh::TriangleMesh& m, double scale, double 
     aircraft_triangles_ = m.triangle_count();
 }
 
-void FlySession::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
+void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
                          const fly::CameraPose* aircraft) {
     fly::Projection proj;
     proj.horizontal_fov_deg = settings_.fov_deg;

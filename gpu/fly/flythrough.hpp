@@ -38,11 +38,11 @@ struct FlyFrameStats {
     double screen_error_px = 0, screen_error_max_px = 0;
 };
 
-class FlySession {
+class Flythrough {
 public:
-    // `context` (made with the settings' window extensions, if any) must outlive the session.
-    FlySession(const dem::Dem& dem, const FlySettings& settings, Context& context);
-    ~FlySession();
+    // `context` (made with the settings' window extensions, if any) must outlive the flight.
+    Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context);
+    ~Flythrough();
 
     Context& context() { return context_; }
     FlyRenderer& renderer() { return *renderer_; }

@@ -25,4 +25,7 @@ void add_tiles_command(CLI::App& root);
 // `terrashade spheres`: the bounding sphere decomposition of a mesh (app/spheres_command.cpp).
 void add_spheres_command(CLI::App& root);
 
+// `terrashade fly`: the flythrough window or its frames offscreen (app/fly_command.cpp; GPU build only).
+void add_fly_command(CLI::App& root);
+
 }  // namespace ts::app

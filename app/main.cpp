@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     ts::app::add_tiles_command(root);
 #ifdef TERRASHADE_HAS_GPU
     ts::app::add_devices_command(root);
+    ts::app::add_fly_command(root);
 #endif
     ts::app::explain_non_numbers(root);
     try {

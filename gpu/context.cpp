@@ -10,8 +10,9 @@ std::shared_ptr<ValidationLog> make_log(const ContextOptions& options) {
     return options.validation_log ? options.validation_log : std::make_shared<ValidationLog>();
 }
 
-Instance make_instance(const std::shared_ptr<ValidationLog>& log) {
+Instance make_instance(const std::shared_ptr<ValidationLog>& log, const std::vector<std::string>& extensions) {
     InstanceOptions options;
+    options.extensions = extensions;
     options.validation = log != nullptr;
     options.log = log.get();
     return Instance(options);
@@ -21,11 +22,11 @@ Instance make_instance(const std::shared_ptr<ValidationLog>& log) {
 
 Context::Context(ContextOptions options)
     : log_(make_log(options)),
-      instance_(make_instance(log_)),
+      instance_(make_instance(log_, options.instance_extensions)),
       messenger_(log_ ? DebugMessenger(instance_.get(), *log_) : DebugMessenger()),
       devices_(enumerate_physical_devices(instance_.get())),
       device_index_(choose_device(devices_, options.device_index).index),
-      device_(devices_[device_index_]) {}
+      device_(devices_[device_index_], options.device_extensions) {}
 
 Context::~Context() = default;
 

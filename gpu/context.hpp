@@ -27,6 +27,9 @@ struct ContextOptions {
     // Where those messages go; made by the Context if empty. Pass one to read it after the
     // Context is gone (messages at device and instance destruction land there too).
     std::shared_ptr<ValidationLog> validation_log;
+    // Extensions a window needs (its surface's on the instance, VK_KHR_swapchain on the device).
+    std::vector<std::string> instance_extensions;
+    std::vector<std::string> device_extensions;
 };
 
 class Context {
@@ -37,6 +40,7 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    VkInstance vk_instance() const { return instance_.get(); }
     const Device& device() const { return device_; }
     VkDevice vk_device() const { return device_.get(); }
     const PhysicalDeviceInfo& device_info() const { return devices_[device_index_]; }

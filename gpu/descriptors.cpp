@@ -7,13 +7,13 @@
 
 namespace ts::gpu {
 
-DescriptorSetLayout::DescriptorSetLayout(VkDevice device, std::uint32_t storage_buffers) {
+DescriptorSetLayout::DescriptorSetLayout(VkDevice device, std::uint32_t storage_buffers, VkShaderStageFlags stages) {
     std::vector<VkDescriptorSetLayoutBinding> bindings(storage_buffers);
     for (std::uint32_t i = 0; i < storage_buffers; ++i) {
         bindings[i].binding = i;
         bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[i].descriptorCount = 1;
-        bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        bindings[i].stageFlags = stages;
     }
     VkDescriptorSetLayoutCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;

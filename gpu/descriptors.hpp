@@ -13,7 +13,9 @@ namespace ts::gpu {
 class DescriptorSetLayout {
 public:
     DescriptorSetLayout() = default;
-    DescriptorSetLayout(VkDevice device, std::uint32_t storage_buffers);
+    // `stages`: the shader stages that see the buffers (compute kernels by default).
+    DescriptorSetLayout(VkDevice device, std::uint32_t storage_buffers,
+                        VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT);
     VkDescriptorSetLayout get() const { return layout_.get(); }
 
 private:

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/util/error.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace ts::gpu {
@@ -27,7 +28,7 @@ bool has_device_extension(VkPhysicalDevice device, const char* name) {
 
 }  // namespace
 
-Device::Device(const PhysicalDeviceInfo& physical)
+Device::Device(const PhysicalDeviceInfo& physical, const std::vector<std::string>& extra)
     : physical_(physical.handle), limits_(physical.limits) {
     if (!physical.usable()) throw std::logic_error("gpu::Device: " + physical.name + " " + physical.unusable_reason);
     queue_family_ = *physical.compute_queue_family;
@@ -43,6 +44,11 @@ Device::Device(const PhysicalDeviceInfo& physical)
     // The spec requires enabling the portability subset wherever a device offers it (MoltenVK).
     std::vector<const char*> extensions;
     if (has_device_extension(physical_, kPortabilitySubset)) extensions.push_back(kPortabilitySubset);
+    for (const std::string& name : extra) {
+        if (!has_device_extension(physical_, name.c_str()))
+            throw InputError("vulkan: " + physical.name + " lacks the device extension " + name);
+        extensions.push_back(name.c_str());
+    }
 
     VkDeviceCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;

@@ -2,6 +2,8 @@
 // The logical device with one compute queue. Everything else (buffers, pipelines, command
 // pools) is created from it and must be destroyed before it.
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gpu/vulkan_api.hpp"
 
@@ -11,7 +13,9 @@ namespace ts::gpu {
 
 class Device {
 public:
-    explicit Device(const PhysicalDeviceInfo& physical);
+    // `extensions`: device extensions to enable besides the portability subset (a window's
+    // VK_KHR_swapchain); ts::InputError if the device lacks one.
+    explicit Device(const PhysicalDeviceInfo& physical, const std::vector<std::string>& extensions = {});
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;

@@ -86,6 +86,12 @@ Instance::Instance(const InstanceOptions& options) : validation_(options.validat
             chain = &features;
         }
     }
+    for (const std::string& name : options.extensions) {
+        if (!has_instance_extension(name.c_str())) {
+            throw InputError("vulkan: the instance extension " + name + " is missing; install libvulkan1 and a driver with window-system support");
+        }
+        extensions.push_back(name.c_str());
+    }
     // Drivers layered over another API (MoltenVK) are listed only when asked for; harmless elsewhere.
     VkInstanceCreateFlags flags = 0;
     if (has_instance_extension(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {

@@ -3,6 +3,7 @@
 // validation is asked for. Failing to create one (no loader manifest, no driver) becomes a
 // one-line ts::InputError naming the package to install.
 #include <string>
+#include <vector>
 
 #include "gpu/vulkan_api.hpp"
 
@@ -27,6 +28,8 @@ struct InstanceOptions {
     // Must outlive the instance; required when validation is on (the messenger chained to
     // vkCreateInstance reports into it too).
     ValidationLog* log = nullptr;
+    // Further instance extensions (a window's surface extensions); ts::InputError if missing.
+    std::vector<std::string> extensions;
 };
 
 class Instance {

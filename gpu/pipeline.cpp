@@ -16,9 +16,10 @@ ShaderModule::ShaderModule(VkDevice device, std::span<const std::uint32_t> spirv
     module_ = {device, module, vkDestroyShaderModule};
 }
 
-PipelineLayout::PipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout, std::uint32_t push_constant_bytes) {
+PipelineLayout::PipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout, std::uint32_t push_constant_bytes,
+                               VkShaderStageFlags stages) {
     VkPushConstantRange range{};
-    range.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    range.stageFlags = stages;
     range.offset = 0;
     range.size = push_constant_bytes;
     VkPipelineLayoutCreateInfo info{};

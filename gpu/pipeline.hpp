@@ -24,7 +24,9 @@ class PipelineLayout {
 public:
     PipelineLayout() = default;
     // push_constant_bytes may be 0 (no push constants); else a multiple of 4.
-    PipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout, std::uint32_t push_constant_bytes);
+    // `stages`: the shader stages that see the push constants.
+    PipelineLayout(VkDevice device, VkDescriptorSetLayout set_layout, std::uint32_t push_constant_bytes,
+                   VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT);
     VkPipelineLayout get() const { return layout_.get(); }
 
 private:

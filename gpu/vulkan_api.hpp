@@ -97,7 +97,20 @@
     X(vkCmdFillBuffer)                       \
     X(vkCmdUpdateBuffer)                     \
     X(vkCmdResetQueryPool)                   \
-    X(vkCmdWriteTimestamp)
+    X(vkCmdWriteTimestamp)                   \
+    X(vkCreateRenderPass)                    \
+    X(vkDestroyRenderPass)                   \
+    X(vkCreateFramebuffer)                   \
+    X(vkDestroyFramebuffer)                  \
+    X(vkCreateGraphicsPipelines)             \
+    X(vkCmdBeginRenderPass)                  \
+    X(vkCmdEndRenderPass)                    \
+    X(vkCmdDraw)                             \
+    X(vkCmdDrawIndexed)                      \
+    X(vkCmdBindIndexBuffer)                  \
+    X(vkCmdSetViewport)                      \
+    X(vkCmdSetScissor)                       \
+    X(vkCmdBlitImage)
 
 namespace ts::gpu {
 namespace vulkan_functions {

@@ -129,6 +129,9 @@ void add_bench_command(CLI::App& root) {
     add_bench_sun_command(*bench);
     add_bench_spheres_command(*bench);
     add_bench_tiles_command(*bench);
+#ifdef TERRASHADE_HAS_GPU
+    add_bench_fly_command(*bench);
+#endif
     // Further areas: add_bench_<area>_command(*bench); declared in app/bench/bench_command.hpp.
 }
 

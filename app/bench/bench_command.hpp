@@ -20,5 +20,7 @@ void add_bench_sun_command(CLI::App& bench);
 void add_bench_spheres_command(CLI::App& bench);
 // `terrashade bench tiles` (bench_tiles_command.cpp): tiles/s per style, and gdaldem + gdal2tiles.
 void add_bench_tiles_command(CLI::App& bench);
+// `terrashade bench fly` (bench_fly_command.cpp; GPU build only): flythrough fps and LOD figures.
+void add_bench_fly_command(CLI::App& bench);
 
 }  // namespace ts::app

@@ -1,0 +1,149 @@
+// `terrashade bench fly`: the flythrough's frame rate offscreen (the window's pipeline without
+// presenting), along a fixed path over a DEM at 960x540: fps (mean), the 99th-percentile frame
+// time, triangles per frame and the screen-space error bound of the LOD selection; and the same
+// with a coarser LOD goal as a baseline for the ratio. docs/flythrough.md records the figures.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/bench/bench_command.hpp"
+#include "app/bench/error_stats.hpp"
+#include "app/dem_input.hpp"
+#include "core/fly/flight_path.hpp"
+#include "core/fly/fly_camera.hpp"
+#include "core/light/utc_time.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/util/error.hpp"
+#include "core/util/stopwatch.hpp"
+#include "gpu/context.hpp"
+#include "gpu/fly/flythrough.hpp"
+
+namespace ts::app {
+namespace {
+
+struct BenchFlyArgs {
+    DemInput dem;
+    std::string size = "960x540";
+    int frames = 120;
+    double pixel_error = 2.0;
+    int directions = 16;
+    std::string time = "2024-06-21T07:30:00Z";
+    std::string mesh;  // an aircraft 60 m ahead of the camera: the run is repeated with it
+    std::string mesh_forward = "+y";
+};
+
+struct Figures {
+    double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, error_max_px = 0, select_ms = 0;
+};
+
+Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
+    // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
+    // over the ground at the start, looking ahead and down a little.
+    const auto& frame = flight.frame();
+    double top = 0;
+    for (float z : flight.scene().grid().z) top = std::max(top, double(z));
+    auto pose_at = [&](double f) {
+        const glm::dvec2 m = frame.to_metric((0.2 + 0.6 * f) * (frame.width() - 1), (0.8 - 0.6 * f) * (frame.height() - 1));
+        fly::CameraPose p;
+        p.eye = {m.x, m.y, std::max(top * 0.8, flight.ground_height_m({m.x, m.y, 0}) + 400.0)};
+        p.heading_deg = 45.0 + 40.0 * std::sin(6.0 * f);
+        p.pitch_deg = -10.0;
+        return p;
+    };
+    std::vector<double> ms;
+    std::vector<std::uint8_t> rgba;
+    Figures fig;
+    gpu::FlyFrameUniforms u;
+    gpu::FlyFrameStats st;
+    for (int i = -3; i < frames; ++i) {  // three warm-up frames
+        const double f = double(std::max(i, 0)) / double(std::max(frames - 1, 1));
+        const Stopwatch w;
+        const fly::CameraPose camera = pose_at(f);
+        fly::CameraPose aircraft = camera;
+        const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, 0.0);
+        aircraft.eye += axes.forward * 60.0;
+        aircraft.pitch_deg = 0.0;
+        flight.prepare(camera, u, st, with_aircraft ? &aircraft : nullptr);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba);
+        if (i < 0) continue;
+        ms.push_back(w.milliseconds());
+        fig.tris += double(st.triangles);
+        fig.error_px = std::max(fig.error_px, st.screen_error_px);
+        fig.error_max_px = std::max(fig.error_max_px, st.screen_error_max_px);
+        fig.select_ms += st.select_ms;
+    }
+    double sum = 0;
+    for (double v : ms) sum += v;
+    fig.mean_ms = sum / double(ms.size());
+    fig.fps = 1000.0 / fig.mean_ms;
+    fig.p99_ms = bench::percentile(ms, 0.99);
+    fig.tris /= double(frames);
+    fig.select_ms /= double(frames);
+    return fig;
+}
+
+void run_bench_fly(const BenchFlyArgs& a) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(a.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || w < 16 || h < 16)
+        throw InputError("--size " + a.size + ": give WIDTHxHEIGHT");
+    if (a.frames < 2) throw InputError("--frames must be >= 2");
+    const dem::Dem dem = load_dem_input(a.dem);
+    gpu::Context context;
+    std::printf("bench fly: %s, %dx%d texels, %d frames at %dx%d on %s\n", a.dem.files.front().c_str(), dem.width,
+                dem.height, a.frames, w, h, context.device_info().name.c_str());
+    std::printf("lod_goal_px,lod_quantile,fps_mean,frame_ms_mean,frame_ms_p99,select_ms,triangles_per_frame,"
+                "screen_error_px,screen_error_worst_texel_px\n");
+    struct Run {
+        double goal, quantile;
+        bool aircraft;
+    };
+    // The goal at the default quantile, then every texel held to it (strict), then a 4x coarser
+    // goal; with --mesh, the first again with the aircraft.
+    std::vector<Run> runs = {{a.pixel_error, 0.99, false}, {a.pixel_error, 1.0, false}, {4.0 * a.pixel_error, 0.99, false}};
+    if (!a.mesh.empty()) runs.push_back({a.pixel_error, 0.99, true});
+    const mesh::TriangleMesh aircraft_mesh = a.mesh.empty() ? mesh::TriangleMesh{} : mesh::import_mesh(a.mesh);
+    const double yaw = a.mesh_forward == "-x" ? -90.0 : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 0.0;
+    for (const Run& run : runs) {
+        const double goal = run.goal;
+        gpu::FlySettings s;
+        s.width = w, s.height = h;
+        s.directions = a.directions;
+        s.lod.pixel_error = goal;
+        s.lod.error_quantile = run.quantile;
+        gpu::Flythrough flight(dem, s, context);
+        flight.set_time(light::parse_utc_time(a.time));
+        if (run.aircraft) flight.set_aircraft(aircraft_mesh, 1.0, yaw);
+        if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft) {
+            const double k_px = h / (2.0 * std::tan(0.5 * fly::Projection{s.fov_deg, w, h, 1.0}.vertical_fov_rad()));
+            std::printf("level,vertex_spacing_texels,error_q99_m,error_max_m,range_m (goal %.2f px)\n", goal);
+            for (int k = 0; k < flight.tree().levels(); ++k)
+                std::printf("%d,%d,%.2f,%.2f,%.0f\n", k, 1 << k, flight.tree().level_error_m(k),
+                            flight.tree().level_max_error_m(k), flight.tree().range_m(k, k_px));
+        }
+        const Figures f = fly_once(flight, a.frames, run.aircraft);
+        std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", run.aircraft ? "aircraft " : "", goal,
+                    run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
+    }
+    if (a.mesh.empty()) std::printf("with an aircraft: give --mesh FILE\n");
+}
+
+}  // namespace
+
+void add_bench_fly_command(CLI::App& bench) {
+    auto a = std::make_shared<BenchFlyArgs>();
+    CLI::App* cmd = bench.add_subcommand("fly", "flythrough frame rate offscreen: fps, p99 frame time, triangles, LOD error");
+    add_dem_input_options(*cmd, a->dem);
+    cmd->add_option("--size", a->size, "frame size")->capture_default_str();
+    cmd->add_option("--frames", a->frames, "frames along the path")->capture_default_str();
+    cmd->add_option("--pixel-error", a->pixel_error, "LOD goal (px); also run at 4x as the baseline")->capture_default_str();
+    cmd->add_option("--directions", a->directions, "horizon azimuths of the visibility")->capture_default_str();
+    cmd->add_option("--time", a->time, "UTC time of the sun")->capture_default_str();
+    cmd->add_option("--mesh", a->mesh, "an aircraft mesh: the first run again with it 60 m ahead of the camera");
+    cmd->add_option("--mesh-forward", a->mesh_forward, "its nose axis: +x, -x, +y, -y")->capture_default_str();
+    cmd->callback([a] { run_bench_fly(*a); });
+}
+
+}  // namespace ts::app

@@ -1,0 +1,468 @@
+// `terrashade fly`: a flight over real terrain in a window (GLFW + Vulkan swapchain), or N
+// frames of a flight path rendered offscreen with the same pipeline (--frames N --out DIR).
+// docs/flythrough.md describes the LOD, the shading and the controls.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/command.hpp"
+#include "app/dem_input.hpp"
+#include "app/interrupt_watcher.hpp"
+#include "app/io_plan.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/raster/png_writer.hpp"
+#include "core/util/angles.hpp"
+#include "core/util/atomic_file.hpp"
+#include "core/util/error.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/util/staged_outputs.hpp"
+#include "core/util/stopwatch.hpp"
+#include "gpu/context.hpp"
+#include "gpu/fly/flythrough.hpp"
+#include "gpu/fly/fly_window.hpp"
+
+namespace ts::app {
+namespace {
+
+constexpr const char* kKeys =
+    "Keys (window):\n"
+    "  Esc           quit (or close the window)\n"
+    "  C             camera: chase -> cockpit -> free -> orbit\n"
+    "  W/S A/D R/F   free flight: forward/back, left/right, up/down (Shift: x5)\n"
+    "  mouse drag    look around (free), turn around the point (orbit)\n"
+    "  arrows        turn (free) / orbit; Up/Down in orbit zoom\n"
+    "  = / -         speed x1.5 / /1.5 (free flight)\n"
+    "  Space         pause / resume the path\n"
+    "  [ / ]         time of day -15 / +15 minutes;  , / .  -1 / +1 hour\n"
+    "  P or F12      screenshot (PNG in --out, default the current directory)\n"
+    "  K             start / stop recording the flight to --record (CSV, the --path format)\n"
+    "  H             print these keys\n";
+
+struct FlyArgs {
+    DemInput dem;
+    std::string time = "2024-06-21T07:30:00Z";
+    std::string sky = "clear";
+    std::string size = "960x540";
+    std::string vsync = "on";
+    std::string path;
+    std::string mesh;
+    double mesh_scale = 1.0;
+    std::string mesh_forward = "+y";
+    std::string camera = "chase";
+    int frames = 0;
+    int exit_after = 0;
+    std::string out;
+    std::string record = "fly_recording.csv";
+    int directions = 16;
+    double pixel_error = 2.0;
+    double lod_quantile = 0.99;
+    int patch_quads = 16;
+    double haze_km = 250.0;
+    double fov_deg = 60.0;
+};
+
+void parse_size(const std::string& text, int& w, int& h) {
+    char x = 0;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X') || w < 16 ||
+        h < 16 || w > 8192 || h > 8192)
+        throw InputError("--size " + text + ": give WIDTHxHEIGHT, 16..8192 each (e.g. 960x540)");
+}
+
+fly::CameraMode parse_camera_mode(const std::string& s) {
+    if (s == "chase") return fly::CameraMode::chase;
+    if (s == "cockpit") return fly::CameraMode::cockpit;
+    if (s == "free") return fly::CameraMode::free;
+    if (s == "orbit") return fly::CameraMode::orbit;
+    throw InputError("--camera " + s + ": give chase, cockpit, free or orbit");
+}
+
+// Mean local solar time (UTC + longitude / 15 h), "HH:MM".
+std::string solar_time(light::UtcTime t, double lon_deg) {
+    const double day_s = 86400.0;
+    const double utc_s = std::fmod(
+        double(std::chrono::duration_cast<std::chrono::seconds>(t.time_since_epoch()).count()), day_s);
+    double s = std::fmod(utc_s + lon_deg / 15.0 * 3600.0 + day_s, day_s);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%02d:%02d", int(s / 3600.0), int(std::fmod(s, 3600.0) / 60.0));
+    return buf;
+}
+
+// The flight when no --path is given: straight over the DEM from the default start, 80 m/s,
+// 20 s.
+fly::FlightPath default_path(const gpu::Flythrough& s) {
+    const fly::CameraPose start = s.default_pose();
+    std::vector<fly::FlightPose> poses;
+    const double h = radians(start.heading_deg);
+    for (int i = 0; i <= 4; ++i) {
+        const double t = 5.0 * i;
+        const glm::dvec3 eye = start.eye + glm::dvec3(std::sin(h), std::cos(h), 0.0) * (80.0 * t);
+        fly::CameraPose p = start;
+        p.eye = eye;
+        p.pitch_deg = 0.0;
+        poses.push_back(s.flight_pose_of(p, t));
+    }
+    return fly::FlightPath(std::move(poses));
+}
+
+fly::CameraPose camera_for(fly::CameraMode mode, const fly::CameraPose& aircraft) {
+    if (mode == fly::CameraMode::cockpit) return aircraft;
+    fly::CameraPose c = fly::chase_pose(aircraft);
+    return c;
+}
+
+void write_rgba_png(const std::filesystem::path& file, int w, int h, const std::vector<std::uint8_t>& rgba) {
+    std::vector<std::uint8_t> rgb(std::size_t(w) * std::size_t(h) * 3);
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
+        for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = rgba[4 * i + std::size_t(c)];
+    write_atomically(file, [&](const std::filesystem::path& tmp) { raster::write_png(tmp, file, w, h, 3, rgb.data()); });
+}
+
+std::string stats_line(const gpu::FlyFrameStats& st, double frame_ms, double gpu_ms) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%.1f ms (select %.2f, draw %.1f) %zu patches %zu tris err<=%.2f px", frame_ms,
+                  st.select_ms, gpu_ms, st.patches, st.triangles, st.screen_error_px);
+    return buf;
+}
+
+void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath& path, fly::CameraMode mode) {
+    std::filesystem::create_directories(a.out);
+    interrupt::report_progress("frames", std::uint64_t(a.frames));
+    gpu::FlyFrameUniforms u;
+    gpu::FlyFrameStats st;
+    std::vector<std::uint8_t> rgba;
+    double worst_error = 0, frame_ms_sum = 0;
+    std::size_t tris_sum = 0;
+    ProgressBar bar("frames", std::uint64_t(a.frames), "frames");
+    std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms\n";
+    for (int i = 0; i < a.frames; ++i) {
+        const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
+        const fly::CameraPose aircraft = flight.pose_of(path.at(t));
+        flight.prepare(camera_for(mode, aircraft), u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        const Stopwatch draw;
+        flight.renderer().render_to_memory(u, flight.patches(), rgba);
+        const double draw_ms = draw.milliseconds();
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", i);
+        write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(), flight.renderer().height(),
+                       rgba);
+        char line[160];
+        std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f\n", i, t, st.patches, st.triangles,
+                      st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms);
+        csv += line;
+        worst_error = std::max(worst_error, st.screen_error_px);
+        frame_ms_sum += draw_ms + st.select_ms;
+        tris_sum += st.triangles;
+        bar.advance();
+    }
+    bar.finish();
+    write_atomically(std::filesystem::path(a.out) / "frames.csv", [&](const std::filesystem::path& tmp) {
+        std::ofstream(tmp) << csv;
+    });
+    std::printf("wrote %d frames (%dx%d) to %s: %.1f ms and %zu triangles a frame on average, screen-space error <= %.2f px\n",
+                a.frames, flight.renderer().width(), flight.renderer().height(), a.out.c_str(),
+                frame_ms_sum / std::max(1, a.frames), tris_sum / std::size_t(std::max(1, a.frames)), worst_error);
+}
+
+bool held(const gpu::WindowInput& in, int key) {
+    for (int k : in.held)
+        if (k == key) return true;
+    return false;
+}
+
+void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& window, const fly::FlightPath& path,
+                fly::CameraMode mode, light::UtcTime start_time) {
+    std::printf("%s", kKeys);
+    std::fflush(stdout);
+    const std::string shot_dir = a.out.empty() ? "." : a.out;
+    light::UtcTime time = start_time;
+    double path_t = path.start_s();
+    bool paused = false;
+    fly::FreeFlight free_flight;
+    free_flight.pose = flight.default_pose();
+    fly::Orbit orbit;
+    orbit.centre = {0.0, 0.0, flight.ground_height_m({0, 0, 0})};
+    orbit.distance_m = 0.5 * std::hypot(flight.frame().to_metric(0, 0).x, flight.frame().to_metric(0, 0).y);
+    bool recording = false;
+    std::vector<fly::FlightPose> recorded;
+    double record_t = 0;
+    int shots = 0;
+    gpu::FlyFrameUniforms u;
+    gpu::FlyFrameStats st;
+    auto last = std::chrono::steady_clock::now();
+    double fps_time = 0, title_time = 1.0;
+    int fps_frames = 0;
+    double fps = 0, frame_ms = 0, draw_ms = 0;
+    fly::CameraPose camera;
+    int frames_drawn = 0;
+    while (true) {
+        const gpu::WindowInput in = window.poll();
+        if (in.close) break;
+        if (a.exit_after > 0 && frames_drawn >= a.exit_after) break;
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::min(0.25, std::chrono::duration<double>(now - last).count());
+        last = now;
+        bool quit = false;
+        bool screenshot = false;
+        for (int key : in.pressed) {
+            switch (key) {
+                case GLFW_KEY_ESCAPE: quit = true; break;
+                case GLFW_KEY_C:
+                    if (mode == fly::CameraMode::free) {
+                        mode = fly::CameraMode::orbit;
+                    } else if (mode == fly::CameraMode::orbit) {
+                        mode = fly::CameraMode::chase;
+                    } else if (mode == fly::CameraMode::chase) {
+                        mode = fly::CameraMode::cockpit;
+                    } else {
+                        mode = fly::CameraMode::free;
+                        free_flight.pose = camera;
+                        free_flight.pose.roll_deg = 0;
+                    }
+                    break;
+                case GLFW_KEY_SPACE: paused = !paused; break;
+                case GLFW_KEY_LEFT_BRACKET: time -= std::chrono::minutes(15); break;
+                case GLFW_KEY_RIGHT_BRACKET: time += std::chrono::minutes(15); break;
+                case GLFW_KEY_COMMA: time -= std::chrono::hours(1); break;
+                case GLFW_KEY_PERIOD: time += std::chrono::hours(1); break;
+                case GLFW_KEY_EQUAL: free_flight.speed_mps *= 1.5; break;
+                case GLFW_KEY_MINUS: free_flight.speed_mps /= 1.5; break;
+                case GLFW_KEY_P:
+                case GLFW_KEY_F12: screenshot = true; break;
+                case GLFW_KEY_H: std::printf("%s", kKeys); break;
+                case GLFW_KEY_K:
+                    if (!recording) {
+                        recording = true;
+                        recorded.clear();
+                        record_t = 0;
+                        std::printf("recording to %s\n", a.record.c_str());
+                    } else {
+                        recording = false;
+                        const fly::FlightPath p(recorded);
+                        write_atomically(a.record, [&](const std::filesystem::path& tmp) {
+                            std::ofstream(tmp) << fly::flight_path_csv(p);
+                        });
+                        std::printf("wrote %s (%zu poses)\n", a.record.c_str(), recorded.size());
+                    }
+                    break;
+                default: break;
+            }
+        }
+        if (quit) break;
+        std::fflush(stdout);
+        if (!paused) {
+            path_t += dt;
+            if (path_t > path.start_s() + path.duration_s()) path_t = path.start_s();
+        }
+        const double boost = held(in, GLFW_KEY_LEFT_SHIFT) ? 5.0 : 1.0;
+        if (mode == fly::CameraMode::free) {
+            const double f = (held(in, GLFW_KEY_W) ? 1.0 : 0.0) - (held(in, GLFW_KEY_S) ? 1.0 : 0.0);
+            const double r = (held(in, GLFW_KEY_D) ? 1.0 : 0.0) - (held(in, GLFW_KEY_A) ? 1.0 : 0.0);
+            const double up = (held(in, GLFW_KEY_R) ? 1.0 : 0.0) - (held(in, GLFW_KEY_F) ? 1.0 : 0.0);
+            free_flight.move(f, r, up, dt * boost);
+            const double turn_h = (held(in, GLFW_KEY_RIGHT) ? 60.0 : 0.0) - (held(in, GLFW_KEY_LEFT) ? 60.0 : 0.0);
+            const double turn_p = (held(in, GLFW_KEY_UP) ? 40.0 : 0.0) - (held(in, GLFW_KEY_DOWN) ? 40.0 : 0.0);
+            free_flight.turn(turn_h * dt + 0.15 * in.mouse_dx, turn_p * dt - 0.15 * in.mouse_dy);
+            const double floor = flight.ground_height_m(free_flight.pose.eye) + 2.0;
+            free_flight.pose.eye.z = std::max(free_flight.pose.eye.z, floor);
+            camera = free_flight.pose;
+        } else if (mode == fly::CameraMode::orbit) {
+            const double turn_h = (held(in, GLFW_KEY_RIGHT) ? 45.0 : 0.0) - (held(in, GLFW_KEY_LEFT) ? 45.0 : 0.0);
+            orbit.turn(turn_h * dt + 0.2 * in.mouse_dx, 0.2 * in.mouse_dy);
+            if (held(in, GLFW_KEY_UP)) orbit.zoom(std::pow(0.5, dt));
+            if (held(in, GLFW_KEY_DOWN)) orbit.zoom(std::pow(2.0, dt));
+            camera = orbit.pose();
+        } else {
+            camera = camera_for(mode, flight.pose_of(path.at(path_t)));
+        }
+        if (recording) {
+            record_t += dt;
+            const fly::CameraPose& rec = mode == fly::CameraMode::free ? camera : flight.pose_of(path.at(path_t));
+            if (recorded.empty() || record_t > recorded.back().t_s + 1e-3)
+                recorded.push_back(flight.flight_pose_of(rec, record_t));
+        }
+        flight.set_time(time);
+
+        int fw = 0, fh = 0;
+        window.framebuffer_size(fw, fh);
+        if (fw == 0 || fh == 0) continue;  // minimised
+        if (fw != flight.renderer().width() || fh != flight.renderer().height()) {
+            flight.context().device().wait_idle();
+            flight.renderer().resize(fw, fh);
+        }
+        const Stopwatch frame_watch;
+        const fly::CameraPose aircraft = flight.pose_of(path.at(path_t));
+        flight.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        std::uint32_t image = 0;
+        const Stopwatch draw_watch;
+        if (window.begin(image)) {
+            flight.renderer().record(window.commands(), u, flight.patches());
+            window.end(flight.renderer().color_image(), flight.renderer().width(), flight.renderer().height(),
+                       image);
+        }
+        draw_ms = draw_watch.milliseconds();
+        frame_ms = frame_watch.milliseconds();
+        if (screenshot) {
+            std::vector<std::uint8_t> rgba;
+            flight.renderer().render_to_memory(u, flight.patches(), rgba);
+            char name[48];
+            std::snprintf(name, sizeof name, "fly_screenshot_%03d.png", shots++);
+            const std::filesystem::path file = std::filesystem::path(shot_dir) / name;
+            write_rgba_png(file, flight.renderer().width(), flight.renderer().height(), rgba);
+            std::printf("wrote %s\n", file.string().c_str());
+        }
+        ++fps_frames;
+        ++frames_drawn;
+        fps_time += dt;
+        title_time += dt;
+        if (fps_time >= 0.5) {
+            fps = fps_frames / fps_time;
+            fps_frames = 0;
+            fps_time = 0;
+        }
+        if (title_time >= 0.25) {
+            title_time = 0;
+            const glm::dvec2 ll = flight.lonlat_of(camera.eye);
+            char title[320];
+            std::snprintf(title, sizeof title,
+                          "terrashade fly | %.0f fps %s | %.4f%c %.4f%c %.0f m | hdg %03.0f | %s solar | sun %.0f deg | %s%s%s",
+                          fps, stats_line(st, frame_ms, draw_ms).c_str(), std::abs(ll.y), ll.y >= 0 ? 'N' : 'S',
+                          std::abs(ll.x), ll.x >= 0 ? 'E' : 'W', camera.eye.z, camera.heading_deg,
+                          solar_time(time, ll.x).c_str(), flight.sun().elevation_deg, fly::camera_mode_name(mode),
+                          paused ? " | paused" : "", recording ? " | REC" : "");
+            window.set_title(title);
+        }
+    }
+    if (recording && !recorded.empty()) {
+        const fly::FlightPath p(recorded);
+        write_atomically(a.record, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << fly::flight_path_csv(p); });
+        std::printf("wrote %s (%zu poses)\n", a.record.c_str(), recorded.size());
+    }
+    flight.context().device().wait_idle();
+}
+
+void run_fly(const FlyArgs& a) {
+    gpu::FlySettings settings;
+    parse_size(a.size, settings.width, settings.height);
+    if (a.vsync != "on" && a.vsync != "off") throw InputError("--vsync " + a.vsync + ": give on or off");
+    const fly::CameraMode mode = parse_camera_mode(a.camera);
+    const light::UtcTime time = light::parse_utc_time(a.time);
+    light::parse_sky_options(a.sky);
+    if (a.frames < 0) throw InputError("--frames must be >= 1");
+    if (a.exit_after < 0) throw InputError("--exit-after must be >= 0");
+    const bool offscreen = a.frames > 0;
+    if (offscreen && a.out.empty()) throw InputError("fly: --frames N needs --out DIR");
+    if (a.directions < 4 || a.directions > 256) throw InputError("--directions must be in [4, 256]");
+    if (!(a.pixel_error > 0.05 && a.pixel_error <= 100)) throw InputError("--pixel-error must be in (0.05, 100]");
+    if (a.patch_quads < 4 || a.patch_quads > 128 || (a.patch_quads & (a.patch_quads - 1)) != 0)
+        throw InputError("--patch-quads must be a power of two in [4, 128]");
+    if (!(a.lod_quantile >= 0.5 && a.lod_quantile <= 1.0)) throw InputError("--lod-quantile must be in [0.5, 1]");
+    if (!(a.fov_deg > 5 && a.fov_deg < 150)) throw InputError("--fov must be in (5, 150) degrees");
+    if (!(a.haze_km >= 0)) throw InputError("--haze-km must be >= 0");
+    if (!(a.mesh_scale > 0)) throw InputError("--mesh-scale must be > 0");
+    const double forward_yaw = a.mesh_forward == "+y" ? 0.0 : a.mesh_forward == "-x" ? -90.0
+                             : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 1e9;
+    if (forward_yaw > 360.0) throw InputError("--mesh-forward " + a.mesh_forward + ": give +x, -x, +y or -y");
+    IoPlan plan;
+    plan.inputs("DEM", a.dem.files);
+    plan.input("--path", a.path);
+    plan.input("--mesh", a.mesh);
+    if (offscreen) plan.output_directory("--out", a.out);
+    plan.check();
+
+    // The window is the first thing to fail without a display: before any heavy work. The
+    // context is made after it (it needs the window's extensions) but must outlive it.
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<gpu::FlyWindow> window;
+    gpu::ContextOptions context_options;
+    if (!offscreen) {
+        std::string reason;
+        if (!gpu::display_available(reason))
+            throw InputError("fly: " + reason + "; render offscreen with --frames N --out DIR");
+        window = std::make_unique<gpu::FlyWindow>(settings.width, settings.height, "terrashade fly");
+        context_options.instance_extensions = gpu::FlyWindow::instance_extensions();
+        context_options.device_extensions = gpu::FlyWindow::device_extensions();
+    }
+    // A bad mesh file is found before the shading state is computed.
+    if (!a.mesh.empty()) mesh::import_mesh(a.mesh);
+    const std::optional<fly::FlightPath> given_path =
+        a.path.empty() ? std::nullopt : std::optional<fly::FlightPath>(fly::read_flight_path(a.path));
+
+    settings.sky = a.sky;
+    settings.directions = a.directions;
+    settings.lod.pixel_error = a.pixel_error;
+    settings.lod.patch_quads = a.patch_quads;
+    settings.lod.error_quantile = a.lod_quantile;
+    settings.haze_km = a.haze_km;
+    settings.fov_deg = a.fov_deg;
+    const dem::Dem dem = load_dem_input(a.dem);
+    if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
+    context = std::make_unique<gpu::Context>(context_options);
+    gpu::Flythrough flight(dem, settings, *context);
+    const fly::FlightPath path = given_path ? *given_path : default_path(flight);
+    if (!a.mesh.empty()) flight.set_aircraft(mesh::import_mesh(a.mesh), a.mesh_scale, forward_yaw);
+    const double relight_ms = flight.set_time(time);
+    std::printf("sun: azimuth %.2f deg, elevation %.2f deg at %s (relight %.0f ms); %d LOD levels, on %s\n",
+                flight.sun().azimuth_deg, flight.sun().elevation_deg, light::format_utc_time(time).c_str(),
+                relight_ms, flight.tree().levels(), flight.context().device_info().name.c_str());
+    if (offscreen) {
+        run_frames(a, flight, path, mode);
+    } else {
+        window->attach(flight.context(), a.vsync == "on");
+        run_window(a, flight, *window, path, mode, time);
+        window.reset();
+    }
+    // TERRASHADE_VALIDATION=1: what the validation layer reported (the tests want none).
+    for (const auto& m : context->validation_messages()) std::fprintf(stderr, "terrashade: validation: %s\n", m.c_str());
+}
+
+}  // namespace
+
+void add_fly_command(CLI::App& root) {
+    auto args = std::make_shared<FlyArgs>();
+    CLI::App* cmd = root.add_subcommand("fly", "fly over the terrain in a window (Vulkan), or render a path's frames offscreen");
+    cmd->footer(kKeys);
+    add_dem_input_options(*cmd, args->dem);
+    cmd->add_option("--time", args->time, "UTC time of the sun (ISO 8601; [ and ] change it in the window)")
+        ->capture_default_str();
+    cmd->add_option("--sky", args->sky, "sky model: clear[:turbidity=T], overcast, or an HDR map")->capture_default_str();
+    cmd->add_option("--size", args->size, "window or frame size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--vsync", args->vsync, "on: present at the display's rate; off: as fast as it renders")
+        ->capture_default_str();
+    cmd->add_option("--path", args->path,
+                    "flight path CSV: t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg (default: straight over the DEM)");
+    cmd->add_option("--mesh", args->mesh, "aircraft mesh drawn along the path (AC3D, glTF, OBJ, ...)");
+    cmd->add_option("--mesh-scale", args->mesh_scale, "scale of the aircraft mesh")->capture_default_str();
+    cmd->add_option("--mesh-forward", args->mesh_forward,
+                    "the mesh's nose axis after import: +x, -x, +y or -y (the shared Cessna: -x)")
+        ->capture_default_str();
+    cmd->add_option("--camera", args->camera, "chase, cockpit, free or orbit (C cycles them)")->capture_default_str();
+    cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");
+    cmd->add_option("--exit-after", args->exit_after, "close the window after N frames (scripts and tests; 0 = never)");
+    cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
+    cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
+    cmd->add_option("--directions", args->directions, "horizon azimuths of the visibility (once per DEM)")
+        ->capture_default_str();
+    cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
+        ->capture_default_str();
+    cmd->add_option("--lod-quantile", args->lod_quantile,
+                    "terrain LOD: which quantile of the per-texel mesh errors meets --pixel-error (1 = every texel)")
+        ->capture_default_str();
+    cmd->add_option("--patch-quads", args->patch_quads, "terrain LOD: quads per patch side (power of two)")
+        ->capture_default_str();
+    cmd->add_option("--haze-km", args->haze_km, "aerial perspective: distance of 1/e transmittance (0 = none)")
+        ->capture_default_str();
+    cmd->add_option("--fov", args->fov_deg, "horizontal field of view in degrees")->capture_default_str();
+    cmd->callback([args] { run_fly(*args); });
+}
+
+}  // namespace ts::app

@@ -1,0 +1,48 @@
+// The flythrough's resources as every fly_* shader sees them (gpu/fly/fly_renderer.cpp fills
+// them; FrameUniforms there mirrors the Frame block field by field).
+layout(std430, set = 0, binding = 0) readonly buffer Frame {
+    mat4 view_projection;  // eye-relative metres -> clip (reversed Z, infinite far)
+    vec4 eye;              // xyz: the eye in the grid frame's metres
+    vec4 grid;             // width, height, centre column, haze distance (m; 0 = no haze)
+    vec4 sun_direction;    // xyz unit ENU, w: cos of the disc's angular radius
+    vec4 sun_radiance;     // rgb radiance inside the disc, w: exposure scale
+    vec4 camera_right;     // xyz, w: tan(horizontal fov / 2)
+    vec4 camera_up;        // xyz, w: tan(vertical fov / 2)
+    vec4 camera_forward;   // xyz
+    vec4 sky_table;        // azimuth count, elevation count, lowest elevation (rad), highest (rad)
+    vec4 sky_sh[16];       // rgb: the sky's order-4 SH (core/light/sky.hpp project_sky_sh)
+} frame;
+layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
+layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m
+layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]; };   // rgb fp16 per texel
+layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
+// The aircraft: 3 vertices per triangle, each position (xyz, model metres), normal, colour.
+layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[]; };
+
+// Sky radiance (the sun's disc apart) in a direction, bilinear in azimuth (wrapping) and
+// elevation (clamped); azimuth counter-clockwise from east as in the rest of terrashade.
+vec3 sky_radiance(vec3 dir) {
+    int na = int(frame.sky_table.x), ne = int(frame.sky_table.y);
+    float az = atan(dir.y, dir.x);
+    if (az < 0.0) az += 6.283185307179586;
+    float el = asin(clamp(dir.z, -1.0, 1.0));
+    float u = az / 6.283185307179586 * float(na);
+    float v = (el - frame.sky_table.z) / (frame.sky_table.w - frame.sky_table.z) * float(ne - 1);
+    v = clamp(v, 0.0, float(ne - 1));
+    int a0 = int(floor(u)) % na, a1 = (a0 + 1) % na;
+    int e0 = min(int(floor(v)), ne - 2), e1 = e0 + 1;
+    float fu = fract(u), fv = v - float(e0);
+    vec3 top = mix(sky[e0 * na + a0].rgb, sky[e0 * na + a1].rgb, fu);
+    vec3 bottom = mix(sky[e1 * na + a0].rgb, sky[e1 * na + a1].rgb, fu);
+    return mix(top, bottom, fv);
+}
+
+// ACES filmic (Narkowicz 2015) then the sRGB OETF: core/render/tone_map.hpp's filmic() and
+// core/raster/srgb.hpp, per channel, on exposed radiance.
+vec3 display_code(vec3 exposed) {
+    vec3 x = max(exposed, vec3(0.0));
+    vec3 f = clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+    vec3 low = 12.92 * f;
+    vec3 high = 1.055 * pow(f, vec3(1.0 / 2.4)) - 0.055;
+    return mix(low, high, step(vec3(0.0031308), f));
+}

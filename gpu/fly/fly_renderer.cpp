@@ -1,0 +1,366 @@
+#include "gpu/fly/fly_renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <stdexcept>
+
+#include "gpu/spirv.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace ts::gpu {
+namespace {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr int kBindings = 6;
+
+struct PatchPush {
+    float col0, row0, spacing, morph_start_m, morph_end_m;
+    std::uint32_t quads;
+};
+
+Buffer upload(const Context& ctx, const void* data, std::size_t bytes, VkBufferUsageFlags usage) {
+    Buffer staging = ctx.create_buffer(bytes, MemoryKind::host_visible);
+    std::memcpy(staging.mapped(), data, bytes);
+    Buffer target(ctx.device(), bytes, MemoryKind::device_local, usage);
+    CommandPool pool(ctx.vk_device(), ctx.device().queue_family());
+    CommandBuffer cmd(ctx.vk_device(), pool);
+    cmd.begin();
+    VkBufferCopy region{0, 0, bytes};
+    vkCmdCopyBuffer(cmd.get(), staging.get(), target.get(), 1, &region);
+    cmd.end();
+    Fence fence(ctx.vk_device());
+    submit_and_wait(ctx.device().queue(), cmd.get(), fence);
+    return target;
+}
+
+DeviceHandle<VkRenderPass> make_render_pass(VkDevice device) {
+    std::array<VkAttachmentDescription, 2> attachments{};
+    attachments[0].format = kColorFormat;
+    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // terrain and sky cover every pixel
+    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    attachments[1].format = kDepthFormat;
+    attachments[1].samples = VK_SAMPLE_COUNT_1_BIT;
+    attachments[1].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_STORE;  // read back by tests (coverage)
+    attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[1].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    attachments[1].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &color_ref;
+    subpass.pDepthStencilAttachment = &depth_ref;
+    // The previous frame's blit or copy read the colour target, and its depth test wrote the
+    // depth buffer: both finish before this frame writes them again.
+    std::array<VkSubpassDependency, 3> dependencies{};
+    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[0].dstSubpass = 0;
+    dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dependencies[0].srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dependencies[1].srcSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[1].dstSubpass = 0;
+    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
+    dependencies[1].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    dependencies[1].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+    // And the blit or copy after the pass reads what it wrote.
+    dependencies[2].srcSubpass = 0;
+    dependencies[2].dstSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[2].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[2].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[2].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    dependencies[2].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    VkRenderPassCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+    info.attachmentCount = std::uint32_t(attachments.size());
+    info.pAttachments = attachments.data();
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = std::uint32_t(dependencies.size());
+    info.pDependencies = dependencies.data();
+    VkRenderPass pass = VK_NULL_HANDLE;
+    check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass");
+    return {device, pass, vkDestroyRenderPass};
+}
+
+DeviceHandle<VkPipeline> make_pipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass pass,
+                                       const char* vertex, const char* fragment, bool terrain) {
+    ShaderModule vs(device, spirv(vertex)), fs(device, spirv(fragment));
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = vs.get();
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = fs.get();
+    stages[1].pName = "main";
+    VkPipelineVertexInputStateCreateInfo input{};
+    input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    VkPipelineInputAssemblyStateCreateInfo assembly{};
+    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{};
+    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{};
+    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depth_state{};
+    depth_state.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+    // Reversed Z. The terrain goes first and writes depth; the sky is drawn at depth 0 (infinitely
+    // far) only where nothing was (EQUAL against the clear value), so it is shaded once per pixel
+    // it covers instead of under the terrain too.
+    depth_state.depthTestEnable = VK_TRUE;
+    depth_state.depthWriteEnable = terrain ? VK_TRUE : VK_FALSE;
+    depth_state.depthCompareOp = terrain ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
+    VkPipelineColorBlendAttachmentState blend_attachment{};
+    blend_attachment.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blend{};
+    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+    blend.attachmentCount = 1;
+    blend.pAttachments = &blend_attachment;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{};
+    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    VkGraphicsPipelineCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    info.stageCount = 2;
+    info.pStages = stages.data();
+    info.pVertexInputState = &input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth_state;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    info.renderPass = pass;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
+    return {device, pipeline, vkDestroyPipeline};
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> patch_indices(int n) {
+    std::vector<std::uint32_t> out;
+    out.reserve(std::size_t(6 * n * n));
+    const int half = n / 2;
+    const auto v = [n](int i, int j) { return std::uint32_t(i + j * (n + 1)); };
+    for (int q = 0; q < 4; ++q) {
+        const int i0 = (q & 1) * half, j0 = (q >> 1) * half;
+        for (int j = j0; j < j0 + half; ++j)
+            for (int i = i0; i < i0 + half; ++i) {
+                out.insert(out.end(), {v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+                out.insert(out.end(), {v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+            }
+    }
+    return out;
+}
+
+FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int width, int height)
+    : context_(context),
+      grid_width_(terrain.width),
+      grid_height_(terrain.height),
+      patch_quads_(terrain.patch_quads),
+      width_(width),
+      height_(height) {
+    const VkDevice device = context.vk_device();
+    heights_ = upload(context, terrain.heights.data(), terrain.heights.size_bytes(), 0);
+    rows_ = upload(context, terrain.rows.data(), terrain.rows.size_bytes(), 0);
+    const std::vector<std::uint32_t> indices = patch_indices(patch_quads_);
+    quadrant_indices_ = std::uint32_t(indices.size() / 4);
+    indices_ = upload(context, indices.data(), indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
+    radiance_ = context.create_buffer(std::size_t(grid_width_) * std::size_t(grid_height_) * 8, MemoryKind::host_visible);
+    std::memset(radiance_.mapped(), 0, radiance_.size());
+    sky_ = context.create_buffer(16, MemoryKind::host_visible);
+    std::memset(sky_.mapped(), 0, sky_.size());
+    aircraft_ = context.create_buffer(16, MemoryKind::host_visible);
+    std::memset(aircraft_.mapped(), 0, aircraft_.size());
+
+    set_layout_ = DescriptorSetLayout(device, kBindings, kStages);
+    pool_ = DescriptorPool(device, 1, kBindings);
+    set_ = pool_.allocate(set_layout_.get(), kBindings);
+    write_descriptors();
+    sky_layout_ = PipelineLayout(device, set_layout_.get(), 0, kStages);
+    terrain_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(PatchPush), VK_SHADER_STAGE_VERTEX_BIT);
+    render_pass_ = make_render_pass(device);
+    sky_pipeline_ = make_pipeline(device, sky_layout_.get(), render_pass_.get(), "fly_sky.vert", "fly_sky.frag", false);
+    terrain_pipeline_ =
+        make_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert", "fly_terrain.frag", true);
+    aircraft_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(glm::mat4), VK_SHADER_STAGE_VERTEX_BIT);
+    aircraft_pipeline_ = make_pipeline(device, aircraft_layout_.get(), render_pass_.get(), "fly_aircraft.vert",
+                                       "fly_aircraft.frag", true);
+    command_pool_ = CommandPool(device, context.device().queue_family());
+    commands_ = CommandBuffer(device, command_pool_);
+    fence_ = Fence(device);
+    create_targets();
+}
+
+FlyRenderer::~FlyRenderer() { context_.device().wait_idle(); }
+
+void FlyRenderer::write_descriptors() {
+    const VkBuffer buffers[kBindings] = {frame_.get(),    heights_.get(), rows_.get(),
+                                         radiance_.get(), sky_.get(),     aircraft_.get()};
+    write_storage_buffers(context_.vk_device(), set_, buffers);
+}
+
+void FlyRenderer::create_targets() {
+    const VkDevice device = context_.vk_device();
+    framebuffer_.reset();
+    color_ = GpuImage(context_.device(), std::uint32_t(width_), std::uint32_t(height_), kColorFormat,
+                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    depth_ = GpuImage(context_.device(), std::uint32_t(width_), std::uint32_t(height_), kDepthFormat,
+                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                      VK_IMAGE_ASPECT_DEPTH_BIT);
+    const VkImageView views[2] = {color_.view(), depth_.view()};
+    VkFramebufferCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+    info.renderPass = render_pass_.get();
+    info.attachmentCount = 2;
+    info.pAttachments = views;
+    info.width = std::uint32_t(width_);
+    info.height = std::uint32_t(height_);
+    info.layers = 1;
+    VkFramebuffer fb = VK_NULL_HANDLE;
+    check(vkCreateFramebuffer(device, &info, nullptr, &fb), "vkCreateFramebuffer");
+    framebuffer_ = {device, fb, vkDestroyFramebuffer};
+    readback_ = context_.create_buffer(std::size_t(width_) * std::size_t(height_) * 4, MemoryKind::host_visible);
+    depth_readback_ = context_.create_buffer(std::size_t(width_) * std::size_t(height_) * 4, MemoryKind::host_visible);
+}
+
+void FlyRenderer::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width, height_ = height;
+    create_targets();
+}
+
+void FlyRenderer::set_radiance(std::span<const std::uint32_t> packed) {
+    if (packed.size_bytes() != radiance_.size()) throw std::logic_error("FlyRenderer::set_radiance: wrong size");
+    std::memcpy(radiance_.mapped(), packed.data(), packed.size_bytes());
+}
+
+void FlyRenderer::set_sky(std::span<const glm::vec4> table) {
+    if (table.size_bytes() != sky_.size()) {
+        sky_ = context_.create_buffer(table.size_bytes(), MemoryKind::host_visible);
+        write_descriptors();
+    }
+    std::memcpy(sky_.mapped(), table.data(), table.size_bytes());
+}
+
+void FlyRenderer::set_aircraft(std::span<const glm::vec4> vertices) {
+    context_.device().wait_idle();
+    aircraft_vertices_ = std::uint32_t(vertices.size() / 3);
+    aircraft_ = context_.create_buffer(std::max<std::size_t>(vertices.size_bytes(), 16), MemoryKind::host_visible);
+    if (!vertices.empty()) std::memcpy(aircraft_.mapped(), vertices.data(), vertices.size_bytes());
+    write_descriptors();
+}
+
+void FlyRenderer::set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw) {
+    aircraft_transform_ = model_to_eye_relative;
+    draw_aircraft_ = draw && aircraft_vertices_ > 0;
+}
+
+void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches) {
+    std::memcpy(frame_.mapped(), &frame, sizeof frame);
+    VkClearValue clears[2]{};
+    clears[1].depthStencil = {0.0f, 0};  // reversed Z: 0 is infinitely far
+    VkRenderPassBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+    begin.renderPass = render_pass_.get();
+    begin.framebuffer = framebuffer_.get();
+    begin.renderArea = {{0, 0}, {std::uint32_t(width_), std::uint32_t(height_)}};
+    begin.clearValueCount = 2;
+    begin.pClearValues = clears;
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {std::uint32_t(width_), std::uint32_t(height_)}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_pipeline_.get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_layout_.get(), 0, 1, &set_, 0, nullptr);
+    vkCmdBindIndexBuffer(cmd, indices_.get(), 0, VK_INDEX_TYPE_UINT32);
+    for (const fly::CdlodPatch& p : patches) {
+        const PatchPush push{p.col0, p.row0, p.spacing, p.morph_start_m, p.morph_end_m, std::uint32_t(patch_quads_)};
+        vkCmdPushConstants(cmd, terrain_layout_.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        const std::uint32_t first = p.quadrant < 0 ? 0 : std::uint32_t(p.quadrant) * quadrant_indices_;
+        const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
+        vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);
+    }
+    if (draw_aircraft_) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, aircraft_pipeline_.get());
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, aircraft_layout_.get(), 0, 1, &set_, 0, nullptr);
+        vkCmdPushConstants(cmd, aircraft_layout_.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                           &aircraft_transform_);
+        vkCmdDraw(cmd, aircraft_vertices_, 1, 0, 0);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_layout_.get(), 0, 1, &set_, 0, nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRenderPass(cmd);
+}
+
+void FlyRenderer::render_to_memory(const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches,
+                                   std::vector<std::uint8_t>& rgba, std::vector<float>* depth) {
+    commands_.reset();
+    commands_.begin();
+    record(commands_.get(), frame, patches);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {std::uint32_t(width_), std::uint32_t(height_), 1};
+    vkCmdCopyImageToBuffer(commands_.get(), color_.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.get(), 1, &region);
+    if (depth != nullptr) {
+        VkBufferImageCopy depth_region = region;
+        depth_region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+        vkCmdCopyImageToBuffer(commands_.get(), depth_.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               depth_readback_.get(), 1, &depth_region);
+    }
+    VkBufferMemoryBarrier to_host{};
+    to_host.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    to_host.srcQueueFamilyIndex = to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_host.buffer = readback_.get();
+    to_host.size = VK_WHOLE_SIZE;
+    VkBufferMemoryBarrier depth_to_host = to_host;
+    depth_to_host.buffer = depth_readback_.get();
+    const VkBufferMemoryBarrier barriers[2] = {to_host, depth_to_host};
+    vkCmdPipelineBarrier(commands_.get(), VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr,
+                         depth != nullptr ? 2 : 1, barriers, 0, nullptr);
+    commands_.end();
+    submit_and_wait(context_.device().queue(), commands_.get(), fence_);
+    rgba.resize(std::size_t(width_) * std::size_t(height_) * 4);
+    std::memcpy(rgba.data(), readback_.mapped(), rgba.size());
+    if (depth != nullptr) {
+        depth->resize(std::size_t(width_) * std::size_t(height_));
+        std::memcpy(depth->data(), depth_readback_.mapped(), depth->size() * sizeof(float));
+    }
+}
+
+}  // namespace ts::gpu

@@ -1,0 +1,113 @@
+#pragma once
+// The flythrough's drawing on Vulkan: a render pass into an RGBA8 colour target (already
+// exposed and display-encoded by the shaders) with a reversed-Z depth buffer, the terrain's
+// CDLOD patches (fly_terrain.*, one push-constant block per patch) then the sky (fly_sky.*)
+// where no terrain was drawn. The window blits that target into its swapchain image; --frames copies it to memory:
+// the same pixels either way.
+//
+// One frame in flight: record() and the host-side updates happen while the device is idle
+// (the caller waits for each frame's fence), so the frame and radiance buffers are plain
+// mapped memory.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/fly/cdlod_tree.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/command.hpp"
+#include "gpu/context.hpp"
+#include "gpu/descriptors.hpp"
+#include "gpu/fly/gpu_image.hpp"
+#include "gpu/pipeline.hpp"
+
+namespace ts::gpu {
+
+// The Frame block of gpu/fly/fly_frame.glsl, field by field (std430: mat4 then vec4s).
+struct FlyFrameUniforms {
+    glm::mat4 view_projection{1.0f};
+    glm::vec4 eye{0.0f};
+    glm::vec4 grid{0.0f};
+    glm::vec4 sun_direction{0.0f};
+    glm::vec4 sun_radiance{0.0f};
+    glm::vec4 camera_right{0.0f};
+    glm::vec4 camera_up{0.0f};
+    glm::vec4 camera_forward{0.0f};
+    glm::vec4 sky_table{0.0f};
+    glm::vec4 sky_sh[16]{};
+};
+
+struct FlyTerrain {
+    int width = 0, height = 0;
+    std::span<const float> heights;     // [row][col], no voids
+    std::span<const float> rows;        // per row: dx_m, north_m
+    int patch_quads = 16;
+};
+
+class FlyRenderer {
+public:
+    FlyRenderer(const Context& context, const FlyTerrain& terrain, int width, int height);
+    ~FlyRenderer();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    void resize(int width, int height);  // the device must be idle
+
+    // Per-texel radiance, 2 words per texel (packHalf2x16 of r,g and of b,0).
+    void set_radiance(std::span<const std::uint32_t> packed);
+    // Sky radiance table, [elevation][azimuth] rgb_.
+    void set_sky(std::span<const glm::vec4> table);
+    // The aircraft's triangles: 3 vertices each, 3 vec4 per vertex (position, normal, colour),
+    // in its model frame (metres). Empty: no aircraft.
+    void set_aircraft(std::span<const glm::vec4> vertices);
+    // Where the aircraft is this frame: model -> eye-relative metres; `draw` false skips it
+    // (no mesh, or the cockpit view from inside it).
+    void set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw);
+
+    // Records one frame into `cmd` (begun by the caller): the render pass, leaving the colour
+    // target in TRANSFER_SRC_OPTIMAL for a blit or a copy.
+    void record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches);
+    VkImage color_image() const { return color_.get(); }
+
+    // Offscreen: record, copy the target to memory, submit and wait; RGBA8, rows top down.
+    // With `depth`: the depth buffer too (reversed Z: 0 where no terrain was drawn).
+    void render_to_memory(const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches,
+                          std::vector<std::uint8_t>& rgba, std::vector<float>* depth = nullptr);
+
+    const Context& context() const { return context_; }
+
+private:
+    void create_targets();
+    void write_descriptors();
+
+    const Context& context_;
+    int grid_width_ = 0, grid_height_ = 0, patch_quads_ = 16;
+    int width_ = 0, height_ = 0;
+    std::uint32_t quadrant_indices_ = 0;
+    Buffer heights_, rows_, indices_, frame_, radiance_, sky_;
+    DescriptorSetLayout set_layout_;
+    DescriptorPool pool_;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    PipelineLayout sky_layout_, terrain_layout_, aircraft_layout_;
+    DeviceHandle<VkRenderPass> render_pass_;
+    DeviceHandle<VkPipeline> sky_pipeline_, terrain_pipeline_, aircraft_pipeline_;
+    Buffer aircraft_;
+    std::uint32_t aircraft_vertices_ = 0;
+    glm::mat4 aircraft_transform_{1.0f};
+    bool draw_aircraft_ = false;
+    GpuImage color_, depth_;
+    DeviceHandle<VkFramebuffer> framebuffer_;
+    Buffer readback_, depth_readback_;
+    CommandPool command_pool_;
+    CommandBuffer commands_;
+    Fence fence_;
+    bool color_written_ = false;
+};
+
+// The index buffer of an N x N patch: quadrant by quadrant (NW, NE, SW, SE), each quad two
+// triangles split along its (0,0)-(1,1) diagonal (core/fly/cdlod_tree.hpp's mesh_error_m).
+std::vector<std::uint32_t> patch_indices(int quads);
+
+}  // namespace ts::gpu

@@ -1,0 +1,199 @@
+#include "gpu/fly/flythrough.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/packing.hpp>
+
+#include "core/light/sky.hpp"
+#include "core/mesh/placement.hpp"
+#include "core/render/tone_map.hpp"
+#include "core/util/angles.hpp"
+#include "core/util/progress_bar.hpp"
+#include "core/util/stopwatch.hpp"
+
+namespace ts::gpu {
+namespace {
+
+std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings& s) {
+    render::SceneOptions options;
+    options.view = render::ViewKind::map;
+    options.sky = light::parse_sky_options(s.sky);
+    options.renderer.directions = s.directions;
+    ProgressBar bar("visibility", std::uint64_t(dem.width) * std::uint64_t(dem.height) * std::uint64_t(s.directions),
+                    "rays");
+    options.renderer.progress = &bar;
+    auto scene = std::make_unique<render::Scene>(dem, options);
+    bar.finish();
+    return scene;
+}
+
+}  // namespace
+
+Flythrough::Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context)
+    : dem_(dem), settings_(settings), scene_(make_scene(dem, settings)), frame_(scene_->grid()), context_(context) {
+    tree_ = std::make_unique<fly::CdlodTree>(scene_->grid(), frame_, settings_.lod);
+    std::vector<float> rows(std::size_t(frame_.height()) * 2);
+    for (int r = 0; r < frame_.height(); ++r) {
+        rows[std::size_t(2 * r)] = float(frame_.row_dx_m()[std::size_t(r)]);
+        rows[std::size_t(2 * r + 1)] = float(frame_.row_north_m()[std::size_t(r)]);
+    }
+    FlyTerrain terrain;
+    terrain.width = frame_.width();
+    terrain.height = frame_.height();
+    terrain.heights = scene_->grid().z;
+    terrain.rows = rows;
+    terrain.patch_quads = settings_.lod.patch_quads;
+    renderer_ = std::make_unique<FlyRenderer>(context_, terrain, settings_.width, settings_.height);
+}
+
+Flythrough::~Flythrough() = default;
+
+double Flythrough::set_time(light::UtcTime time) {
+    if (lit_ && time == time_) return 0.0;
+    const Stopwatch watch;
+    time_ = time;
+    lit_ = true;
+    sun_ = scene_->sun_at(time);
+    scene_->render(sun_, radiance_);
+    const std::size_t texels = radiance_.rgb.size();
+    packed_.resize(2 * texels);
+    for (std::size_t t = 0; t < texels; ++t) {
+        const glm::vec3 c = radiance_.rgb[t];
+        const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+        const glm::vec3 v = finite ? glm::max(c, glm::vec3(0.0f)) : glm::vec3(0.0f);
+        packed_[2 * t] = glm::packHalf2x16(glm::vec2(v.x, v.y));
+        packed_[2 * t + 1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+    }
+    renderer_->set_radiance(packed_);
+    const light::Sky& sky = *scene_->last_sky();
+    sky_table_ = fly::make_sky_table(sky);
+    sky_sh_ = light::project_sky_sh(sky);
+    renderer_->set_sky(sky_table_.rgb);
+    const light::SunDisc disc = sky.sun();
+    sun_dir_ = glm::vec3(disc.direction);
+    sun_radiance_ = fly::sun_disc_radiance(disc);
+    sun_cos_radius_ = std::cos(disc.angular_radius_rad);
+    exposure_ = render::image_exposure_scale(radiance_, render::Exposure{});
+    return watch.milliseconds();
+}
+
+fly::CameraPose Flythrough::pose_of(const fly::FlightPose& p) const {
+    const glm::dvec2 px = dem_.georef.lonlat_to_pixel({p.lon_deg, p.lat_deg});
+    const glm::dvec2 m = frame_.to_metric(px.x - 0.5, px.y - 0.5);
+    fly::CameraPose c;
+    c.eye = {m.x, m.y, p.height_m};
+    c.heading_deg = p.heading_deg;
+    c.pitch_deg = p.pitch_deg;
+    c.roll_deg = p.roll_deg;
+    return c;
+}
+
+glm::dvec2 Flythrough::lonlat_of(const glm::dvec3& eye) const {
+    const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
+    return dem_.georef.pixel_to_lonlat(g.x + 0.5, g.y + 0.5);
+}
+
+fly::FlightPose Flythrough::flight_pose_of(const fly::CameraPose& c, double t_s) const {
+    const glm::dvec2 ll = lonlat_of(c.eye);
+    return {t_s, ll.x, ll.y, c.eye.z, c.heading_deg, c.pitch_deg, c.roll_deg};
+}
+
+double Flythrough::ground_height_m(const glm::dvec3& eye) const {
+    const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
+    const terrain::HeightGrid& grid = scene_->grid();
+    const double x = std::clamp(g.x, 0.0, double(grid.width - 1)), y = std::clamp(g.y, 0.0, double(grid.height - 1));
+    const int c0 = std::min(int(x), grid.width - 2), r0 = std::min(int(y), grid.height - 2);
+    const double fc = x - c0, fr = y - r0;
+    const double top = grid.at(c0, r0) + fc * (grid.at(c0 + 1, r0) - grid.at(c0, r0));
+    const double bottom = grid.at(c0, r0 + 1) + fc * (grid.at(c0 + 1, r0 + 1) - grid.at(c0, r0 + 1));
+    return top + fr * (bottom - top);
+}
+
+fly::CameraPose Flythrough::default_pose() const {
+    const glm::dvec2 sw = frame_.to_metric(0.15 * (frame_.width() - 1), 0.85 * (frame_.height() - 1));
+    double top = 0;
+    for (float z : scene_->grid().z) top = std::max(top, double(z));
+    fly::CameraPose c;
+    c.eye = {sw.x, sw.y, top + 500.0};
+    double h = 0, p = 0;
+    fly::direction_angles(glm::dvec3(-sw.x, -sw.y, ground_height_m({0, 0, 0}) - c.eye.z), h, p);
+    c.heading_deg = h;
+    c.pitch_deg = std::max(p, -25.0);
+    return c;
+}
+
+void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg) {
+    aircraft_yaw_deg_ = forward_yaw_deg;
+    std::vector<glm::vec4> v;
+    v.reserve(m.positions.size() * 3);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec4 c = m.materials[m.material[i / 3]].base_color;
+        v.push_back(glm::vec4(m.positions[i], 1.0f));
+        v.push_back(glm::vec4(m.normals[i], 0.0f));
+        v.push_back(glm::vec4(glm::vec3(c), 1.0f));
+    }
+    renderer_->set_aircraft(v);
+    aircraft_scale_ = scale;
+    aircraft_triangles_ = m.triangle_count();
+}
+
+void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
+                         const fly::CameraPose* aircraft) {
+    fly::Projection proj;
+    proj.horizontal_fov_deg = settings_.fov_deg;
+    proj.width = renderer_->width();
+    proj.height = renderer_->height();
+    // The near plane follows the height above the ground: close enough to land, far enough
+    // for depth precision (reversed Z keeps it either way).
+    const double agl = camera.eye.z - ground_height_m(camera.eye);
+    proj.near_m = std::clamp(0.25 * agl, 0.5, 20.0);  // the chased aircraft is 60 m away
+    const glm::dmat4 vp = fly::eye_relative_view_projection(camera, proj);
+
+    const Stopwatch watch;
+    fly::CdlodView view;
+    view.eye = camera.eye;
+    view.eye_relative_view_projection = vp;
+    view.viewport_height_px = proj.height;
+    view.vertical_fov_rad = proj.vertical_fov_rad();
+    tree_->select(view, selection_);
+    stats.select_ms = watch.milliseconds();
+    stats.patches = selection_.patches.size();
+    stats.triangles = selection_.triangles;
+    stats.screen_error_px = selection_.screen_error_px;
+    stats.screen_error_max_px = selection_.screen_error_max_px;
+
+    const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, camera.roll_deg);
+    u.view_projection = glm::mat4(vp);
+    u.eye = glm::vec4(glm::vec3(camera.eye), 0.0f);
+    u.grid = glm::vec4(float(frame_.width()), float(frame_.height()), float(frame_.centre_col()),
+                       float(settings_.haze_km * 1000.0));
+    u.sun_direction = glm::vec4(sun_dir_, float(sun_cos_radius_));
+    u.sun_radiance = glm::vec4(sun_radiance_, float(exposure_));
+    const double tan_h = std::tan(0.5 * radians(settings_.fov_deg));
+    const double tan_v = std::tan(0.5 * proj.vertical_fov_rad());
+    u.camera_right = glm::vec4(glm::vec3(axes.right), float(tan_h));
+    u.camera_up = glm::vec4(glm::vec3(axes.up), float(tan_v));
+    u.camera_forward = glm::vec4(glm::vec3(axes.forward), 0.0f);
+    for (int i = 0; i < 16; ++i) u.sky_sh[i] = glm::vec4(sky_sh_[std::size_t(i)], 0.0f);
+    if (aircraft != nullptr && aircraft_triangles_ > 0) {
+        mesh::Placement p;
+        p.heading_deg = aircraft->heading_deg;
+        p.pitch_deg = aircraft->pitch_deg;
+        p.roll_deg = aircraft->roll_deg;
+        // The model's nose turned onto +y, the placement's forward, first.
+        const double yaw = radians(aircraft_yaw_deg_);
+        const glm::dmat3 to_forward(std::cos(yaw), std::sin(yaw), 0.0, -std::sin(yaw), std::cos(yaw), 0.0, 0.0, 0.0, 1.0);
+        const glm::dmat3 r = mesh::placement_rotation(p) * to_forward * aircraft_scale_;
+        glm::dmat4 m(r);
+        m[3] = glm::dvec4(aircraft->eye - camera.eye, 1.0);
+        renderer_->set_aircraft_transform(glm::mat4(m), true);
+        stats.triangles += aircraft_triangles_;
+    } else {
+        renderer_->set_aircraft_transform(glm::mat4(1.0f), false);
+    }
+    u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
+                            float(sky_table_.highest_rad));
+}
+
+}  // namespace ts::gpu

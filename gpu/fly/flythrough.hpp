@@ -1,0 +1,102 @@
+#pragma once
+// What `terrashade fly`, `bench fly` and the tests share: a DEM made ready to fly over. Once: the
+// view-independent shading state (render::Scene on the DEM grid), the CDLOD tree, the Vulkan
+// renderer with the heights uploaded. On each change of time: the per-texel radiance of that
+// sun and sky (the fused diffuse pass over the cached transfer vectors) and the sky table,
+// uploaded. Each frame: the LOD selection for the camera and the frame's uniforms.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/dem/dem.hpp"
+#include "core/fly/camera_rig.hpp"
+#include "core/fly/cdlod_tree.hpp"
+#include "core/fly/flight_path.hpp"
+#include "core/fly/grid_frame.hpp"
+#include "core/fly/sky_table.hpp"
+#include "core/light/sky.hpp"
+#include "core/light/utc_time.hpp"
+#include "core/mesh/triangle_mesh.hpp"
+#include "core/render/render_scene.hpp"
+#include "gpu/context.hpp"
+#include "gpu/fly/fly_renderer.hpp"
+
+namespace ts::gpu {
+
+struct FlySettings {
+    std::string sky = "clear";
+    int directions = 16;
+    fly::CdlodOptions lod;
+    double haze_km = 250.0;
+    double fov_deg = 60.0;
+    int width = 960, height = 540;
+};
+
+struct FlyFrameStats {
+    double select_ms = 0;
+    std::size_t patches = 0, triangles = 0;
+    double screen_error_px = 0, screen_error_max_px = 0;
+};
+
+class Flythrough {
+public:
+    // `context` (made with the settings' window extensions, if any) must outlive the flight.
+    Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context);
+    ~Flythrough();
+
+    Context& context() { return context_; }
+    FlyRenderer& renderer() { return *renderer_; }
+    const fly::GridFrame& frame() const { return frame_; }
+    const fly::CdlodTree& tree() const { return *tree_; }
+    const render::Scene& scene() const { return *scene_; }
+    const FlySettings& settings() const { return settings_; }
+
+    // Relights when `time` differs from the last one (returns the milliseconds it took, 0 if not).
+    double set_time(light::UtcTime time);
+    light::UtcTime time() const { return time_; }
+    const render::SunState& sun() const { return sun_; }
+
+    // A path pose in the grid frame, and back (for recording).
+    fly::CameraPose pose_of(const fly::FlightPose& p) const;
+    fly::FlightPose flight_pose_of(const fly::CameraPose& c, double t_s) const;
+    glm::dvec2 lonlat_of(const glm::dvec3& eye) const;
+    // The terrain's height under a metric position (bilinear, clamped onto the grid).
+    double ground_height_m(const glm::dvec3& eye) const;
+    // A start above the DEM's south-west, looking over its centre.
+    fly::CameraPose default_pose() const;
+
+    // The aircraft drawn at the path's pose (its model frame in metres, times `scale`), its nose
+    // turned by `forward_yaw_deg` (counter-clockwise about up) onto the model's +y first.
+    void set_aircraft(const mesh::TriangleMesh& mesh, double scale, double forward_yaw_deg);
+    bool has_aircraft() const { return aircraft_triangles_ > 0; }
+
+    // Selects the terrain for this camera and fills the frame's uniforms; `aircraft`: where the
+    // aircraft is this frame (nullptr: not drawn).
+    void prepare(const fly::CameraPose& camera, FlyFrameUniforms& uniforms, FlyFrameStats& stats,
+                 const fly::CameraPose* aircraft = nullptr);
+    const std::vector<fly::CdlodPatch>& patches() const { return selection_.patches; }
+
+private:
+    const dem::Dem& dem_;
+    FlySettings settings_;
+    std::unique_ptr<render::Scene> scene_;
+    fly::GridFrame frame_;
+    std::unique_ptr<fly::CdlodTree> tree_;
+    Context& context_;
+    std::unique_ptr<FlyRenderer> renderer_;
+    light::UtcTime time_{};
+    bool lit_ = false;
+    render::SunState sun_;
+    glm::vec3 sun_dir_{0, 0, 1}, sun_radiance_{0.0f};
+    double sun_cos_radius_ = 1.0;
+    double exposure_ = 1.0;
+    fly::FlySkyTable sky_table_;
+    light::SkySh sky_sh_{};
+    double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
+    std::size_t aircraft_triangles_ = 0;
+    fly::CdlodSelection selection_;
+    render::LinearImage radiance_;
+    std::vector<std::uint32_t> packed_;
+};
+
+}  // namespace ts::gpu

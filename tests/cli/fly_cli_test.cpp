@@ -1,0 +1,157 @@
+// `terrashade fly`: a short path over the shared Grenoble DEM rendered offscreen (--frames) with
+// the validation layer on, the window opened and closed under xvfb-run, the one-line message
+// without a display, and bad input found before any work.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include "cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
+const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+
+std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+
+std::filesystem::path write_path(const std::filesystem::path& dir) {
+    const auto p = dir / "path.csv";
+    std::ofstream(p) << "t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg\n"
+                        "0,5.55,45.08,2500,45,-5,0\n"
+                        "6,5.62,45.13,2300,50,-8,10\n"
+                        "12,5.70,45.18,2200,60,-8,0\n";
+    return p;
+}
+
+std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
+    auto in = OIIO::ImageInput::open(p.string());
+    EXPECT_TRUE(in) << p;
+    if (!in) return {};
+    w = in->spec().width, h = in->spec().height;
+    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
+    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
+    return px;
+}
+
+TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
+    ASSERT_TRUE(std::filesystem::exists(kCessna)) << "the shared meshes are missing: " << kCessna;
+    const auto dir = temp_dir("fly_frames");
+    const auto out = dir / "frames";
+    const Result r = run("TERRASHADE_VALIDATION=1 " +
+                         ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+                                quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
+                                " --mesh-forward -x --out " + quote(out.string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("wrote 3 frames"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(out / "frames.csv"));
+    std::vector<unsigned char> previous;
+    for (int i = 0; i < 3; ++i) {
+        int w = 0, h = 0;
+        const auto px = read_rgb(out / ("frame_000" + std::to_string(i) + ".png"), w, h);
+        ASSERT_EQ(w, 320);
+        ASSERT_EQ(h, 180);
+        double mean = 0;
+        for (unsigned char v : px) mean += v;
+        mean /= double(px.size());
+        EXPECT_GT(mean, 30.0) << "frame " << i << " is black";
+        // The top row is the bright day sky, the bottom row darker ground.
+        double top = 0, bottom = 0;
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                top += px[3 * std::size_t(x) + std::size_t(c)],
+                    bottom += px[3 * (std::size_t(h - 1) * std::size_t(w) + std::size_t(x)) + std::size_t(c)];
+        EXPECT_GT(top / (3.0 * w), 150.0) << "frame " << i << ": no sky at the top";
+        EXPECT_LT(bottom, top) << "frame " << i << ": no ground at the bottom";
+        if (!previous.empty()) {
+            double diff = 0;
+            for (std::size_t k = 0; k < px.size(); ++k) diff += std::abs(int(px[k]) - int(previous[k]));
+            EXPECT_GT(diff / double(px.size()), 2.0) << "frame " << i << " equals the one before";
+        }
+        previous = px;
+    }
+    // The Cessna, chased from 60 m behind, is what differs from the same frame without it: a
+    // small patch in the middle of the picture.
+    const auto bare = dir / "bare";
+    const Result b = run(ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+                                quote(write_path(dir).string()) + " --out " + quote(bare.string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    int w = 0, h = 0;
+    const auto with = read_rgb(out / "frame_0001.png", w, h);
+    const auto without = read_rgb(bare / "frame_0001.png", w, h);
+    ASSERT_EQ(with.size(), without.size());
+    double cx = 0, cy = 0;
+    int changed = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = 3 * (std::size_t(y) * std::size_t(w) + std::size_t(x));
+            const int d = std::abs(with[i] - without[i]) + std::abs(with[i + 1] - without[i + 1]) +
+                          std::abs(with[i + 2] - without[i + 2]);
+            if (d > 30) ++changed, cx += x, cy += y;
+        }
+    ASSERT_GT(changed, 30) << "the aircraft is not drawn";
+    EXPECT_LT(changed, w * h / 10) << "the aircraft covers too much";
+    EXPECT_NEAR(cx / changed, w / 2.0, 0.15 * w);
+    EXPECT_NEAR(cy / changed, h / 2.0, 0.2 * h);
+}
+
+TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
+    const Result r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + ts_cmd("fly " + quote(kDem)));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
+    // The window test is part of the suite: without xvfb-run it fails (scripts/setup.sh installs xvfb).
+    ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
+    const auto dir = temp_dir("fly_window");
+    // xvfb-run -a takes the first free display from -n on; two runs starting together (another
+    // test binary, another checkout) can race for it, so each starts from its own number, and
+    // a lost race (the server gone under us) is tried once more.
+    const std::string server = std::to_string(200 + int(::getpid() % 500));
+    const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
+                                ts_cmd("fly " + quote(kDem) +
+                                       " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
+                                       quote(write_path(dir).string()));
+    Result r = run(command);
+    if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+}
+
+TEST(FlyCli, BadInputExitsTwoBeforeWork) {
+    const auto dir = temp_dir("fly_bad");
+    const Result no_out = run(ts_cmd("fly " + quote(kDem) + " --frames 2"));
+    EXPECT_EQ(no_out.exit_code, 2);
+    EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
+    const Result size = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --size 12"));
+    EXPECT_EQ(size.exit_code, 2);
+    EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
+    const auto bad = dir / "bad.csv";
+    std::ofstream(bad) << "0,5.6,45.1,2000,0,0\n";
+    const Result path = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --path " +
+                                   quote(bad.string())));
+    EXPECT_EQ(path.exit_code, 2);
+    EXPECT_NE(path.err.find("7 numbers"), std::string::npos) << path.err;
+}
+
+TEST(FlyCli, HelpListsTheKeys) {
+    const Result r = run(ts_cmd("fly --help"));
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* key : {"Esc", "W/S", "screenshot", "recording", "time of day"})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}
+
+}  // namespace
+}  // namespace ts::cli_test

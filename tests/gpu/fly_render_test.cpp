@@ -1,0 +1,111 @@
+// The flythrough's offscreen frames (gpu/fly) over a shared DEM, with the validation layer on:
+// terrain and sky present, no black frames, frames that change as the camera moves, and no
+// crack pixels (sky seen through the terrain) between LOD patches.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/dem/read_dem.hpp"
+#include "core/fly/flight_path.hpp"
+#include "core/light/utc_time.hpp"
+#include "gpu/fly/flythrough.hpp"
+#include "tests/gpu/validated_context.hpp"
+
+namespace ts::gpu {
+namespace {
+
+class FlyRenderTest : public test_support::ValidatedTest {};
+
+struct FrameCheck {
+    double terrain_fraction = 0, sky_fraction = 0;
+    double terrain_mean = 0, sky_mean = 0;
+    double black_terrain_fraction = 0;
+    int crack_pixels = 0;
+};
+
+// depth > 0: terrain drawn (reversed Z, cleared to 0). A crack is a sky pixel with terrain both
+// above and below it in the same column: a height field seen by an upright camera covers each
+// column of the middle of the picture (nearly vertical planes) in one run.
+FrameCheck check_frame(const std::vector<std::uint8_t>& rgba, const std::vector<float>& depth, int w, int h) {
+    FrameCheck c;
+    std::size_t terrain = 0, sky = 0, black = 0;
+    double sum = 0, sky_sum = 0;
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
+        const double r = rgba[4 * i], g = rgba[4 * i + 1], b = rgba[4 * i + 2];
+        if (depth[i] > 0.0f) {
+            ++terrain;
+            sum += (r + g + b) / 3.0;
+            if (r + g + b == 0) ++black;
+        } else {
+            ++sky;
+            sky_sum += (r + g + b) / 3.0;
+        }
+    }
+    const double n = double(w) * double(h);
+    c.terrain_fraction = double(terrain) / n;
+    c.sky_fraction = double(sky) / n;
+    c.terrain_mean = terrain ? sum / double(terrain) : 0;
+    c.sky_mean = sky ? sky_sum / double(sky) : 0;
+    c.black_terrain_fraction = terrain ? double(black) / double(terrain) : 0;
+    for (int x = int(0.3 * w); x < int(0.7 * w); ++x) {
+        int top = -1, bottom = -1;
+        for (int y = 0; y < h; ++y)
+            if (depth[std::size_t(y) * std::size_t(w) + std::size_t(x)] > 0.0f) {
+                if (top < 0) top = y;
+                bottom = y;
+            }
+        for (int y = top + 1; top >= 0 && y < bottom; ++y)
+            if (depth[std::size_t(y) * std::size_t(w) + std::size_t(x)] == 0.0f) ++c.crack_pixels;
+    }
+    return c;
+}
+
+TEST_F(FlyRenderTest, AShortFlightOverGrenobleHasTerrainSkyAndNoCracks) {
+    const dem::Dem dem = dem::read_dem(std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif");
+    FlySettings settings;
+    settings.width = 480;
+    settings.height = 270;
+    settings.directions = 8;
+    Flythrough flight(dem, settings, *context_);
+    flight.set_time(light::parse_utc_time("2024-06-21T08:00:00Z"));
+    // From the DEM's south-west quarter towards its centre, heading north-east, slightly down.
+    const glm::dvec2 a = dem.georef.pixel_to_lonlat(0.25 * dem.width, 0.75 * dem.height);
+    const glm::dvec2 b = dem.georef.pixel_to_lonlat(0.45 * dem.width, 0.55 * dem.height);
+    const fly::FlightPath path({{0, a.x, a.y, 2600, 45, -8, 0}, {10, b.x, b.y, 2400, 50, -10, 0}});
+    std::vector<std::uint8_t> rgba, previous;
+    std::vector<float> depth;
+    int levels_drawn = 0;
+    for (int i = 0; i < 4; ++i) {
+        const fly::CameraPose pose = flight.pose_of(path.at(10.0 * i / 3.0));
+        FlyFrameUniforms u;
+        FlyFrameStats stats;
+        flight.prepare(pose, u, stats);
+        int lo = 99, hi = -1;
+        for (const auto& p : flight.patches()) lo = std::min(lo, p.level), hi = std::max(hi, p.level);
+        levels_drawn = std::max(levels_drawn, hi - lo + 1);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba, &depth);
+        const FrameCheck c = check_frame(rgba, depth, settings.width, settings.height);
+        SCOPED_TRACE("frame " + std::to_string(i));
+        EXPECT_GT(c.terrain_fraction, 0.3);
+        EXPECT_GT(c.sky_fraction, 0.05);
+        EXPECT_GT(c.terrain_mean, 25.0);        // lit, not black
+        EXPECT_LT(c.black_terrain_fraction, 0.01);
+        // A clear morning sky is brighter than the ground it lights, and not burnt out.
+        EXPECT_GT(c.sky_mean, c.terrain_mean);
+        EXPECT_LT(c.sky_mean, 252.0);
+        EXPECT_EQ(c.crack_pixels, 0);
+        EXPECT_LE(stats.screen_error_px, settings.lod.pixel_error * (1 + 1e-5));
+        if (!previous.empty()) {
+            double diff = 0;
+            for (std::size_t k = 0; k < rgba.size(); ++k) diff += std::abs(int(rgba[k]) - int(previous[k]));
+            EXPECT_GT(diff / double(rgba.size()), 2.0) << "the frame did not change as the camera moved";
+        }
+        previous = rgba;
+    }
+    EXPECT_GE(levels_drawn, 2);  // LOD levels meet in the frames: their seams are checked
+}
+
+}  // namespace
+}  // namespace ts::gpu

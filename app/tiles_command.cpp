@@ -12,6 +12,7 @@
 
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "app/tiles_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -56,14 +57,25 @@ void run_tiles(const TilesCommandArgs& a) {
     tiles::TileJob job = tile_job(a.tiles);
     const bool mbtiles = a.out.ends_with(".mbtiles");
     if (a.out.empty()) throw InputError("tiles: --out DIR or FILE.mbtiles");
+    IoPlan plan;
+    plan.inputs("DEM", a.dem.files);
+    if (mbtiles) {
+        plan.output("--out", a.out, {".mbtiles"});
+    } else {
+        std::error_code ec;
+        if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
+            throw input_error(a.out, "is a file; --out takes a directory (XYZ tiles) or FILE.mbtiles");
+        plan.output_directory("--out", a.out);
+    }
+    plan.check();
 
     const dem::Dem dem = load_dem_input(a.dem);
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
     }
-    const std::vector<tiles::TileId> plan = tiles::plan_tiles(dem, job);
-    if (plan.empty())
+    const std::vector<tiles::TileId> tile_plan = tiles::plan_tiles(dem, job);
+    if (tile_plan.empty())
         throw input_error(dem.source, "covers no Web Mercator tile (it lies beyond +-85.05 deg latitude?)");
 
     // The output, before any shading: an unwritable one fails here.
@@ -97,7 +109,7 @@ void run_tiles(const TilesCommandArgs& a) {
     const Stopwatch watch;
     tiles::TileExportStats stats;
     {
-        ProgressBar bar("tiles", plan.size(), "tiles");
+        ProgressBar bar("tiles", tile_plan.size(), "tiles");
         stats = tiles::export_tiles(dem, job, *sink, &bar);
         bar.finish();
     }

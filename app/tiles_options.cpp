@@ -43,6 +43,13 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         ->capture_default_str();
     cmd.add_option("--directions", a.directions, "relief/svf/color: horizon azimuths of the visibility")
         ->capture_default_str();
+    cmd.add_option("--block-texels", a.block_texels,
+                   "relief/svf/color: levels larger than this many texels a side are shaded in blocks of it, "
+                   "bounding memory (0 = whole levels; docs/tiles.md)")
+        ->capture_default_str();
+    cmd.add_option("--block-halo", a.block_halo,
+                   "relief/color: texels around each block it is shaded with (the reach of cast shadows)")
+        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")->capture_default_str()->check(CLI::Range(0, 256));
 }
 
@@ -67,6 +74,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
         s.exaggeration = e;
     }
     s.directions = a.directions;
+    s.block_texels = a.block_texels;
+    s.block_halo_texels = a.block_halo;
     s.threads = a.threads;
     tiles::check_tile_job(job);
     return job;

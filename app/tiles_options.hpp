@@ -20,6 +20,8 @@ struct TilesArgs {
     double z_factor = 1.0;
     std::string exaggeration = "auto";
     int directions = 16;
+    int block_texels = 2048;
+    int block_halo = 256;
     int threads = 0;
 };
 

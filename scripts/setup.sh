@@ -35,6 +35,8 @@ TEST_PKGS=(
   xvfb xauth                # window tests
   python3-matplotlib python3-numpy  # charts in docs/
   unzip
+  chromium                  # headless browser: the tile viewer page's test (docs/tiles/check_page.mjs)
+  nodejs                    # runs that test and installs the page's npm packages
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
 
@@ -48,5 +50,17 @@ if [ "${#need[@]}" -gt 0 ]; then
   echo "setup: installing ${#need[@]} packages: ${need[*]}"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+fi
+# npm (Debian's own package when the installed nodejs does not bring it), then the tile viewer's
+# packages from the npm registry into docs/tiles/node_modules (not committed): MapLibre GL JS for
+# the page, playwright-core to drive Debian's chromium in its test. Redone when the lock changes.
+if ! command -v npm >/dev/null 2>&1; then
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends npm >/dev/null
+fi
+viewer="$(cd "$(dirname "$0")/.." && pwd)/docs/tiles"
+if ! cmp -s "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed" 2>/dev/null; then
+  echo "setup: npm ci in docs/tiles"
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  cp "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed"
 fi
 echo "setup: all dependencies present"

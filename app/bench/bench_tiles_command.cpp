@@ -5,6 +5,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -12,8 +14,14 @@
 #include <vector>
 
 #include "app/bench/bench_command.hpp"
+#include "app/bench/synthetic_mosaic.hpp"
 #include "app/dem_input.hpp"
+#include "app/io_plan.hpp"
 #include "app/tiles_options.hpp"
+#include "core/raster/raster_writer.hpp"
+#include "core/raster/srgb.hpp"
+#include "core/tiles/reference_relief.hpp"
+#include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_export.hpp"
 #include "core/tiles/xyz_directory.hpp"
 #include "core/util/error.hpp"
@@ -30,7 +38,67 @@ struct BenchTilesArgs {
     std::vector<std::string> styles = {"hillshade", "multidirectional", "relief", "svf", "color"};
     bool classic = true;
     bool keep = false;
+    std::vector<double> reference_at;  // LON,LAT: relief against the ray-traced reference there
+    int reference_texels = 96;
+    int reference_azimuths = 720;
+    std::string reference_out;
 };
+
+std::uint8_t srgb_code(float linear) {
+    return std::uint8_t(std::lround(255.0f * raster::srgb_oetf(std::clamp(linear, 0.0f, 1.0f))));
+}
+
+// `relief` as the tiles are cut from it (the source of the last zoom's level and exaggeration)
+// against the ray-traced reference on an N x N window of that level around LON,LAT: errors in
+// display-linear values and in the tiles' sRGB codes; both as grey PNGs in --reference-out.
+void run_reference(const BenchTilesArgs& a, const dem::Dem& dem, tiles::TileJob job) {
+    job.shading.style = tiles::TileStyle::relief;
+    const int pixel_zoom = job.z1 + tiles::tile_size_shift(job.tile_size);
+    const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, pixel_zoom);
+    const Stopwatch watch;
+    const tiles::ShadeSource source = tiles::make_shade_source(dem, job.shading, zs.level, zs.vertical_scale);
+    const double relief_s = watch.seconds();
+    const glm::dvec2 px = dem.georef.lonlat_to_pixel({a.reference_at[0], a.reference_at[1]});
+    const int n = a.reference_texels, scale = 1 << zs.level;
+    tiles::LevelWindow w;
+    w.width = std::min(n, source.width), w.height = std::min(n, source.height);
+    w.col0 = std::clamp(int(px.x / scale) - w.width / 2, 0, source.width - w.width);
+    w.row0 = std::clamp(int(px.y / scale) - w.height / 2, 0, source.height - w.height);
+    render::ReferenceOptions ro;
+    ro.azimuths = a.reference_azimuths;
+    ro.threads = job.shading.threads;
+    const Stopwatch watch_ref;
+    const std::vector<float> ref = tiles::reference_relief(dem, job.shading, zs.level, zs.vertical_scale, w, ro);
+    const double ref_s = watch_ref.seconds();
+    std::vector<std::uint8_t> got_png, ref_png;
+    double sum = 0, sum2 = 0, code2 = 0;
+    std::vector<int> code_err;
+    for (int r = 0; r < w.height; ++r)
+        for (int c = 0; c < w.width; ++c) {
+            const float g = source.values[std::size_t(w.row0 + r) * std::size_t(source.width) + std::size_t(w.col0 + c)];
+            const float b = ref[std::size_t(r) * std::size_t(w.width) + std::size_t(c)];
+            got_png.push_back(srgb_code(g)), ref_png.push_back(srgb_code(std::isnan(b) ? 0.0f : b));
+            if (std::isnan(b) || std::isnan(g)) continue;
+            sum += g - b, sum2 += double(g - b) * (g - b);
+            const int e = int(got_png.back()) - int(ref_png.back());
+            code2 += double(e) * e;
+            code_err.push_back(std::abs(e));
+        }
+    const double m = double(code_err.size());
+    std::sort(code_err.begin(), code_err.end());
+    std::printf("reference: relief at zoom %d (level %d, vertical x%.3g) vs ray-traced (%d azimuths) on %dx%d texels "
+                "at col %d row %d\n", job.z1, zs.level, zs.vertical_scale, ro.azimuths, w.width, w.height, w.col0, w.row0);
+    std::printf("reference: display-linear bias %+.4f rmse %.4f (flat open ground = %.2f); sRGB codes rmse %.2f, "
+                "median |e| %d, p95 %d, max %d; time %.1f s relief (whole level), %.1f s reference (window)\n",
+                sum / m, std::sqrt(sum2 / m), double(tiles::kReliefFlatGrey), std::sqrt(code2 / m),
+                code_err[code_err.size() / 2], code_err[std::size_t(0.95 * (m - 1))], code_err.back(), relief_s, ref_s);
+    if (!a.reference_out.empty()) {
+        fs::create_directories(a.reference_out);
+        raster::write_u8_image(fs::path(a.reference_out) / "relief.png", w.width, w.height, 1, got_png.data(), nullptr);
+        raster::write_u8_image(fs::path(a.reference_out) / "reference.png", w.width, w.height, 1, ref_png.data(), nullptr);
+        std::printf("reference: wrote relief.png and reference.png in %s\n", a.reference_out.c_str());
+    }
+}
 
 // CPU seconds (user + system) of this process, or of its finished children: the machine may be
 // shared, so beside wall-clock rates the bench reports tiles per CPU-second.
@@ -38,6 +106,13 @@ double cpu_seconds(int who) {
     rusage u{};
     getrusage(who, &u);
     return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// Peak resident memory of this process so far, GB (Linux reports ru_maxrss in KiB).
+double peak_rss_gb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) * 1024.0 / 1e9;
 }
 
 bool on_path(const std::string& tool) {
@@ -56,14 +131,28 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     if (base.zoom.empty()) base.zoom = "8-12";
     tiles::TileJob job = tile_job(base);
     for (const auto& s : a.styles) tiles::parse_tile_style(s);  // a bad name fails before any work
-    const dem::Dem dem = load_dem_input(a.dem);
+    IoPlan plan;
+    plan.output_directory("--reference-out", a.reference_out);
+    plan.check();
+    const std::string& first = a.dem.files.front();
+    const bool synthetic = first.starts_with("synthetic:");
+    int synthetic_n = 0;
+    if (synthetic && (std::sscanf(first.c_str(), "synthetic:%d", &synthetic_n) != 1))
+        throw InputError(first + ": give synthetic:N (an N x N mosaic)");
+    const dem::Dem dem = synthetic ? synthetic_mosaic(synthetic_n, job.shading.threads) : load_dem_input(a.dem);
     const int threads = thread_count(job.shading.threads);
+    if (!a.reference_at.empty()) {
+        run_reference(a, dem, job);
+        return;
+    }
     const fs::path root = fs::temp_directory_path() / ("terrashade_bench_tiles_" + std::to_string(::getpid()));
     fs::create_directories(root);
     std::printf("bench tiles: %s, zooms %d-%d, %d-px tiles, %d threads\n", dem.source.c_str(), job.z0, job.z1,
                 job.tile_size, threads);
-    std::printf("%-17s %7s %9s %10s %9s %12s %8s %13s\n", "style", "tiles", "total_s", "tiles/s", "shade_s",
-                "cut_tiles/s", "cpu_s", "tiles/cpu_s");
+    std::printf("DEM %dx%d (%.2f GB of heights); peak RSS with it loaded %.2f GB\n", dem.width, dem.height,
+                double(dem.z.size()) * 4 / 1e9, peak_rss_gb());
+    std::printf("%-17s %7s %9s %10s %9s %12s %8s %13s %11s\n", "style", "tiles", "total_s", "tiles/s", "shade_s",
+                "cut_tiles/s", "cpu_s", "tiles/cpu_s", "peak_rss_GB");
     double hillshade_rate = 0, hillshade_cpu_rate = 0;
     for (const auto& name : a.styles) {
         job.shading.style = tiles::parse_tile_style(name);
@@ -74,12 +163,16 @@ void run_bench_tiles(const BenchTilesArgs& a) {
         const tiles::TileExportStats s = tiles::export_tiles(dem, job, sink, nullptr);
         const double total = watch.seconds(), cpu = cpu_seconds(RUSAGE_SELF) - cpu0;
         const double made = double(s.written + s.empty);
-        std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12.1f %8.3f %13.1f\n", name.c_str(), s.written, total, made / total,
-                    s.source_seconds, s.tile_seconds > 0 ? made / s.tile_seconds : 0.0, cpu, made / cpu);
+        // Peak RSS is the process's so far: with several styles, the largest of them and before.
+        std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12.1f %8.3f %13.1f %11.2f\n", name.c_str(), s.written, total,
+                    made / total, s.source_seconds, s.tile_seconds > 0 ? made / s.tile_seconds : 0.0, cpu, made / cpu,
+                    peak_rss_gb());
         if (job.shading.style == tiles::TileStyle::hillshade) hillshade_rate = made / total, hillshade_cpu_rate = made / cpu;
         std::fflush(stdout);
     }
-    if (a.classic) {
+    if (a.classic && synthetic) {
+        std::printf("classic: skipped (a synthetic mosaic has no file to give gdaldem)\n");
+    } else if (a.classic) {
         if (!on_path("gdaldem") || !on_path("gdal2tiles.py")) {
             std::printf("classic: skipped (gdaldem or gdal2tiles.py not installed: Debian gdal-bin, python3-gdal)\n");
         } else {
@@ -126,12 +219,21 @@ void add_bench_tiles_command(CLI::App& bench) {
     auto a = std::make_shared<BenchTilesArgs>();
     CLI::App* cmd = bench.add_subcommand(
         "tiles", "Map tiles per second per style over zooms 8-12, and gdaldem + gdal2tiles.py as a ratio");
-    add_dem_input_options(*cmd, a->dem);
+    add_dem_input_options(*cmd, a->dem);  // or synthetic:N (synthetic_mosaic.hpp)
     add_tiles_options(*cmd, a->tiles, false);
     cmd->add_option("--zoom", a->tiles.zoom, "Zooms Z0-Z1 (default 8-12)");
     cmd->add_option("--styles", a->styles, "Styles to measure (default all)")->delimiter(',');
     cmd->add_flag("!--no-classic", a->classic, "Skip the gdaldem + gdal2tiles.py pipeline");
     cmd->add_flag("--keep", a->keep, "Keep the tiles (printed path) to look at them");
+    cmd->add_option("--reference", a->reference_at,
+                    "LON,LAT: instead of the speeds, relief (at the last zoom's level) against the ray-traced "
+                    "reference on a window there")
+        ->expected(2)->delimiter(',');
+    cmd->add_option("--reference-texels", a->reference_texels, "--reference: window side, level texels")
+        ->capture_default_str()->check(CLI::Range(4, 1024));
+    cmd->add_option("--reference-azimuths", a->reference_azimuths, "--reference: raymarched horizon azimuths")
+        ->capture_default_str()->check(CLI::Range(16, 8192));
+    cmd->add_option("--reference-out", a->reference_out, "--reference: directory for relief.png and reference.png");
     cmd->callback([a] { run_bench_tiles(*a); });
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/light/sun_position.hpp"
 #include "core/raster/image_io_plugin/float_image_io.hpp"
+#include "core/raster/cog_writer.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/material/material_sources.hpp"
 #include "core/terrain/terrain_normals.hpp"
@@ -202,7 +203,12 @@ double write_image(const std::string& path, const LinearImage& image, const Expo
         scaled = geo::Georef(image.width, image.height, t, geo->crs_ptr(), geo->pixel_is_area());
         geo = &scaled;
     }
-    raster::write_u8_image(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), geo);
+    // A georeferenced map as a Cloud-Optimized GeoTIFF (tiled, with overviews): GIS and web
+    // clients read any window or zoom of it without the whole file.
+    if (geo && geo->valid() && ext != ".png")
+        raster::write_cog_u8(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), *geo);
+    else
+        raster::write_u8_image(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), geo);
     return scale;
 }
 

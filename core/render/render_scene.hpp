@@ -127,8 +127,9 @@ private:
 SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time);
 
 // Writes a picture by extension: .png / .tif / .tiff (8-bit sRGB after exposure and the
-// filmic curve; a .tif of a map view is georeferenced with `georef`, whose size may differ from
-// the image's: it is scaled), .exr (linear, no tone mapping). With alpha: RGBA. Atomic.
+// filmic curve; a .tif of a map view is a Cloud-Optimized GeoTIFF (core/raster/cog_writer.hpp)
+// georeferenced with `georef`, whose size may differ from the image's: it is scaled), .exr
+// (linear, no tone mapping). With alpha: RGBA. Atomic.
 // Returns the exposure scale used (1 for EXR).
 double write_image(const std::string& path, const LinearImage& image, const Exposure& exposure,
                    const geo::Georef* georef);

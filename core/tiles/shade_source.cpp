@@ -35,19 +35,23 @@ render::MaterialRaster grey_materials(std::size_t n, float albedo) {
     return m;
 }
 
-render::RendererOptions renderer_options(const TileShading& s, ProgressBar* progress) {
+render::RendererOptions renderer_options(const TileShading& s, ProgressBar* progress,
+                                         visibility::VisibilityBackend* backend) {
     render::RendererOptions o;
     o.directions = s.directions;
     o.threads = s.threads;
     o.progress = progress;
+    o.visibility = backend;
     return o;
 }
 
-// One frame of radiance on `grid` with `materials`.
+// One frame of radiance on `grid` with `materials`; `backend` null = the CPU on `grid`.
 std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::MaterialRaster materials,
-                                    const TileShading& s, ProgressBar* progress) {
+                                    const TileShading& s, ProgressBar* progress,
+                                    visibility::VisibilityBackend* backend = nullptr) {
     render::NormalField normals = render::terrain_normals(grid, s.threads);
-    auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals), renderer_options(s, progress));
+    auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals),
+                                               renderer_options(s, progress, backend));
     const render::ViewShading view = render::compute_view_shading(*state, {});
     render::FrameRenderer frame(*state, view);
     const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
@@ -70,63 +74,148 @@ double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
     return render::luminance(radiance[std::size_t(n / 2) * n + n / 2]);
 }
 
+struct Rect {
+    int col0 = 0, row0 = 0, width = 0, height = 0;
+};
+
+// The horizons (and what derives from them) of the receivers of a window of the level, over
+// the whole level: a block's state is built on its window grid, while its sky sees every
+// texel of the level (exact sweep; the same horizons as the whole-level computation).
+class LevelWindowVisibility final : public visibility::VisibilityBackend {
+public:
+    LevelWindowVisibility(const terrain::HeightGrid& level, const Rect& window) : level_(level), window_(window) {}
+    std::string name() const override { return cpu_->name(); }
+    visibility::VisibilityResult compute(const terrain::HeightGrid& /*window grid*/,
+                                         const visibility::VisibilityRequest& request) override {
+        visibility::VisibilityRequest r = request;
+        r.horizon.window = {window_.col0, window_.row0, window_.width, window_.height};
+        return cpu_->compute(level_, r);
+    }
+
+private:
+    const terrain::HeightGrid& level_;
+    Rect window_;
+    std::unique_ptr<visibility::VisibilityBackend> cpu_ = visibility::make_cpu_visibility_backend();
+};
+
+// A window of a grid as a grid of its own, its heights (and void mask) copied into `z`/`voids`.
+terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,
+                                std::vector<std::uint8_t>& voids) {
+    z.resize(std::size_t(w.width) * std::size_t(w.height));
+    voids.assign(g.void_mask.empty() ? 0 : z.size(), 0);
+    for (int r = 0; r < w.height; ++r) {
+        const std::size_t from = g.index(w.col0, w.row0 + r), to = std::size_t(r) * std::size_t(w.width);
+        std::copy_n(g.z.data() + from, w.width, z.data() + to);
+        if (!voids.empty()) std::copy_n(g.void_mask.data() + from, w.width, voids.data() + to);
+    }
+    terrain::HeightGrid out;
+    out.width = w.width, out.height = w.height;
+    out.z = z;
+    out.void_mask = voids;
+    out.dx_m.assign(g.dx_m.begin() + w.row0, g.dx_m.begin() + w.row0 + w.height);
+    out.dy_m.assign(g.dy_m.begin() + w.row0, g.dy_m.begin() + w.row0 + w.height);
+    return out;
+}
+
+// The blocks a level is shaded in: one (the whole level) when it fits.
+std::vector<Rect> level_blocks(int width, int height, int block) {
+    if (block <= 0 || (width <= block && height <= block)) return {{0, 0, width, height}};
+    std::vector<Rect> out;
+    for (int r = 0; r < height; r += block)
+        for (int c = 0; c < width; c += block) out.push_back({c, r, std::min(block, width - c), std::min(block, height - r)});
+    return out;
+}
+
 }  // namespace
 
 ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int level, double vertical_scale,
                               ProgressBar* progress) {
-    const dem::Dem lvl = dem_level(dem, level, s.threads);
+    dem::Dem lvl = dem_level(dem, level, s.threads);
     ShadeSource out;
     out.level = level;
     out.width = lvl.width, out.height = lvl.height;
     out.vertical_scale = vertical_scale;
     const std::size_t n = lvl.z.size();
     if (!uses_visibility(s.style)) {
-        out.values = lvl.z;
+        out.values = std::move(lvl.z);
         return out;
     }
     // The heights as shaded: exaggerated (the metric spacing stays true).
-    const terrain::HeightGrid true_grid = terrain::metric_view(lvl);
     std::vector<float> scaled(n);
     for (std::size_t k = 0; k < n; ++k) scaled[k] = float(lvl.z[k] * vertical_scale);
-    terrain::HeightGrid grid = true_grid;
+    terrain::HeightGrid grid = terrain::metric_view(lvl);
     grid.z = scaled;
+    terrain::HeightGrid true_grid = grid;
+    true_grid.z = lvl.z;
+    if (s.style != TileStyle::color) {
+        // Only the colours need the true heights (a snow line does not move with the
+        // exaggeration): free them for the rest.
+        std::vector<float>().swap(lvl.z);
+        true_grid.z = {};
+    }
+    out.channels = s.style == TileStyle::color ? 3 : 1;
+    out.values.resize(std::size_t(out.channels) * n);
+    const double flat = s.style == TileStyle::svf ? 1.0 : flat_reference(grid, s);
 
-    switch (s.style) {
-        case TileStyle::relief: {
-            const auto radiance = render_frame(grid, grey_materials(n, 1.0f), s, progress);
-            const double flat = flat_reference(grid, s);
-            out.values.resize(n);
-            for (std::size_t k = 0; k < n; ++k)
-                out.values[k] = std::clamp(float(kReliefFlatGrey * render::luminance(radiance[k]) / flat), 0.0f, 1.0f);
-            break;
-        }
-        case TileStyle::svf: {
+    const std::vector<Rect> blocks = level_blocks(grid.width, grid.height, s.block_texels);
+    const bool whole = blocks.size() == 1;
+    std::vector<float> wz, wtrue;
+    std::vector<std::uint8_t> wvoids, wtrue_voids;
+    for (const Rect& core : blocks) {
+        // The window each block is shaded on: its core grown by the halo (sun shadows, normals
+        // at the edge), clamped to the level; svf takes its horizons for the core alone.
+        const int halo = whole || s.style == TileStyle::svf ? 0 : std::max(1, s.block_halo_texels);
+        Rect w;
+        w.col0 = std::max(0, core.col0 - halo), w.row0 = std::max(0, core.row0 - halo);
+        w.width = std::min(grid.width, core.col0 + core.width + halo) - w.col0;
+        w.height = std::min(grid.height, core.row0 + core.height + halo) - w.row0;
+        std::vector<float> values;  // per window texel, `channels` each
+        if (s.style == TileStyle::svf) {
             visibility::VisibilityRequest request;
             request.horizon.directions = s.directions;
             request.horizon.threads = s.threads;
-            request.horizon.progress = progress;
+            request.horizon.progress = whole ? progress : nullptr;
+            request.horizon.window = {w.col0, w.row0, w.width, w.height};
             request.svf = true;
             const auto result = visibility::make_cpu_visibility_backend()->compute(grid, request);
-            out.values.resize(n);
-            for (std::size_t k = 0; k < n; ++k) {
+            values.resize(result.svf.size());
+            for (std::size_t k = 0; k < values.size(); ++k) {
                 const float v = std::isnan(result.svf[k]) ? 1.0f : result.svf[k];
-                out.values[k] = raster::srgb_eotf(std::clamp((v - kSvfBlack) / (1.0f - kSvfBlack), 0.0f, 1.0f));
+                values[k] = raster::srgb_eotf(std::clamp((v - kSvfBlack) / (1.0f - kSvfBlack), 0.0f, 1.0f));
             }
-            break;
+        } else {
+            std::unique_ptr<LevelWindowVisibility> backend;
+            terrain::HeightGrid g = grid, tg = true_grid;
+            if (!whole) {
+                g = window_grid(grid, w, wz, wvoids);
+                if (s.style == TileStyle::color) tg = window_grid(true_grid, w, wtrue, wtrue_voids);
+                backend = std::make_unique<LevelWindowVisibility>(grid, w);
+            }
+            const std::size_t m = std::size_t(w.width) * std::size_t(w.height);
+            if (s.style == TileStyle::relief) {
+                const auto radiance = render_frame(g, grey_materials(m, 1.0f), s, whole ? progress : nullptr, backend.get());
+                values.resize(m);
+                for (std::size_t k = 0; k < m; ++k)
+                    values[k] = std::clamp(float(kReliefFlatGrey * render::luminance(radiance[k]) / flat), 0.0f, 1.0f);
+            } else {
+                // Land cover from the true heights and slopes; the light on the exaggerated form.
+                const render::NormalField true_normals = render::terrain_normals(tg, s.threads);
+                const auto radiance = render_frame(g, render::rule_materials(tg, true_normals), s,
+                                                   whole ? progress : nullptr, backend.get());
+                const float scale = float(kColorExposure / flat);
+                values.resize(3 * m);
+                for (std::size_t k = 0; k < m; ++k)
+                    for (int c = 0; c < 3; ++c) values[3 * k + std::size_t(c)] = radiance[k][c] * scale;
+            }
         }
-        case TileStyle::color: {
-            // Land cover from the true heights and slopes (a snow line does not move with the
-            // exaggeration); the light on the exaggerated form.
-            const render::NormalField true_normals = render::terrain_normals(true_grid, s.threads);
-            const auto radiance = render_frame(grid, render::rule_materials(true_grid, true_normals), s, progress);
-            const float scale = float(kColorExposure / flat_reference(grid, s));
-            out.channels = 3;
-            out.values.resize(3 * n);
-            for (std::size_t k = 0; k < n; ++k)
-                for (int c = 0; c < 3; ++c) out.values[3 * k + std::size_t(c)] = radiance[k][c] * scale;
-            break;
+        // The core's rows into the level's raster.
+        const std::size_t ch = std::size_t(out.channels);
+        for (int r = 0; r < core.height; ++r) {
+            const float* from = values.data() + (std::size_t(core.row0 - w.row0 + r) * std::size_t(w.width) +
+                                                 std::size_t(core.col0 - w.col0)) * ch;
+            float* to = out.values.data() + (std::size_t(core.row0 + r) * std::size_t(grid.width) + std::size_t(core.col0)) * ch;
+            std::copy_n(from, std::size_t(core.width) * ch, to);
         }
-        default: break;
     }
     return out;
 }

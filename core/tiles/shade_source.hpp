@@ -12,6 +12,14 @@
 //   color                         the renderer's rule materials, linear RGB exposed for the filmic
 //                                 curve (render --view map's look, with a fixed exposure)
 // Heights are multiplied by z-factor x exaggeration before any of this (zoom_exaggeration.hpp).
+//
+// Memory: a level wider or taller than TileShading::block_texels is shaded block by block, so
+// the ~200 bytes per texel of a shading state are held for one block's window at a time, not
+// the level (the level itself costs ~12 bytes per texel: heights, shaded heights, values). A
+// block's sky (log-SH visibility, svf) still sees the whole level: its receivers' horizons are
+// swept over every texel of the level, equal to the whole-level result. Its sun shadows and
+// normals come from its window, the block grown by block_halo_texels on each side: a shadow
+// longer than the halo is cut at the halo's edge.
 #include <vector>
 
 #include "core/dem/dem.hpp"

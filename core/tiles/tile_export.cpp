@@ -47,6 +47,8 @@ void check_tile_job(const TileJob& job) {
     if (!(s.sun_elevation_deg >= -90 && s.sun_elevation_deg <= 90)) throw InputError("--sun-elevation: -90..90 degrees");
     if (!std::isfinite(s.sun_azimuth_deg)) throw InputError("--sun-azimuth: a number of degrees");
     if (s.directions < 4) throw InputError("--directions: at least 4");
+    if (s.block_texels != 0 && s.block_texels < 64) throw InputError("--block-texels: 0 (never) or at least 64");
+    if (s.block_halo_texels < 1) throw InputError("--block-halo: at least 1 texel");
 }
 
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
@@ -60,7 +62,8 @@ std::string describe_job(const TileJob& job) {
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
            ",\"sun_elevation\":" + number(s.sun_elevation_deg) + ",\"z_factor\":" + number(s.z_factor) +
            ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto\"")) +
-           ",\"directions\":" + std::to_string(s.directions) + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
+           ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
+           ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
            number(s.sky.turbidity) + "}\n";
 }
 

@@ -33,6 +33,12 @@ struct TileShading {
     std::optional<double> exaggeration;
     light::SkyOptions sky;     // relief, color
     int directions = 16;       // horizon azimuths of the visibility (relief, svf, color)
+    // Levels wider or taller than this many texels are shaded in blocks of it (relief, svf,
+    // color), so memory follows the block, not the DEM (shade_source.hpp). 0 = never.
+    int block_texels = 2048;
+    // relief, color: each block is shaded on its window grown by this many texels per side (the
+    // sun's cast shadows reach that far; the sky sees the whole level).
+    int block_halo_texels = 256;
     int threads = 0;
 };
 

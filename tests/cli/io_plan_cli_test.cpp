@@ -89,6 +89,10 @@ TEST(IoPlanCli, EveryCommandChecksItsPathsBeforeTheWork) {
         {"bench sh --csv " + quote(missing_dir + ".csv"), "(--csv)"},
         {"bench relight " + quote(kDem) + " --keep " + quote((dir / "x.jpg" / "k").string()), "(--keep)"},
         {"bench transfer /nonexistent/dem.tif", "no such file"},
+        {"tiles " + quote(kDem) + " --zoom 8-14 --directions 256 --out " + quote(missing_dir + ".mbtiles"),
+         "does not exist (--out)"},
+        {"tiles " + quote(kDem) + " --zoom 8-14 --out " + quote((dir / "x.jpg").string()), "is a file"},
+        {"tiles /nonexistent/dem.tif --zoom 8 --out " + quote((dir / "tiles").string()), "no such file (DEM)"},
     };
     for (const auto& [args, what] : cases) {
         const Timed t = timed_run(args);
@@ -96,6 +100,7 @@ TEST(IoPlanCli, EveryCommandChecksItsPathsBeforeTheWork) {
         EXPECT_LT(t.seconds, 3.0) << args;
     }
     EXPECT_FALSE(fs::exists(dir / "frames"));
+    EXPECT_FALSE(fs::exists(dir / "tiles"));
     EXPECT_EQ(hidden_files(dir), 0);
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -64,6 +65,54 @@ TEST(RenderCli, MapTifIsGeoreferencedAndSunVisibilityInRange) {
     // A low sun over the Alps: some texels in shadow, some lit.
     EXPECT_LT(s["minimum"].get<double>(), 0.01);
     EXPECT_GT(s["maximum"].get<double>(), 0.99);
+}
+
+std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
+    auto in = OIIO::ImageInput::open(p.string());
+    if (!in) return {};
+    w = in->spec().width, h = in->spec().height;
+    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
+    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
+    return px;
+}
+
+// A map .tif is a Cloud-Optimized GeoTIFF: gdalinfo reports the COG layout, 256-px blocks,
+// overviews and the DEM's CRS and corners; GDAL's validator (python3-gdal) accepts it with its
+// full check of the tile leaders and trailers; its pixels are the PNG's.
+TEST(RenderCli, MapTifIsACloudOptimizedGeoTiffWithOverviews) {
+    const auto dir = temp_dir("render_cog");
+    const auto tif = dir / "map.tif", png = dir / "map.png";
+    const std::string args = "render " + quote(kDem) + " --directions 8 --sun-azimuth 135 --sun-elevation 30 --out ";
+    ASSERT_EQ(run(ts_cmd(args + quote(tif.string()))).exit_code, 0);
+    ASSERT_EQ(run(ts_cmd(args + quote(png.string()))).exit_code, 0);
+    const Result info = run("gdalinfo -json " + quote(tif.string()));
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    const auto j = nlohmann::json::parse(info.out);
+    EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["LAYOUT"], "COG") << info.out.substr(0, 2000);
+    EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["COMPRESSION"], "DEFLATE");
+    EXPECT_EQ(j["size"][0], 500);
+    EXPECT_EQ(j["size"][1], 500);
+    ASSERT_EQ(j["bands"].size(), 3u);
+    EXPECT_EQ(j["bands"][0]["block"][0], 256);
+    EXPECT_EQ(j["bands"][0]["block"][1], 256);
+    ASSERT_EQ(j["bands"][0]["overviews"].size(), 1u);
+    EXPECT_EQ(j["bands"][0]["overviews"][0]["size"][0], 250);
+    EXPECT_NE(j["coordinateSystem"]["wkt"].get<std::string>().find("ID[\"EPSG\",4326]"), std::string::npos);
+    // Corners: the DEM's own, to a millionth of a degree.
+    const auto dem = nlohmann::json::parse(run("gdalinfo -json " + quote(kDem)).out);
+    for (const char* corner : {"upperLeft", "lowerRight"})
+        for (int k = 0; k < 2; ++k)
+            EXPECT_NEAR(j["cornerCoordinates"][corner][k].get<double>(),
+                        dem["cornerCoordinates"][corner][k].get<double>(), 1e-6) << corner;
+    const Result valid = run("/usr/bin/python3 -m osgeo_utils.samples.validate_cloud_optimized_geotiff --full-check=yes " +
+                             quote(tif.string()));
+    EXPECT_EQ(valid.exit_code, 0) << valid.out << valid.err;
+    EXPECT_NE(valid.out.find("is a valid cloud optimized GeoTIFF"), std::string::npos) << valid.out << valid.err;
+    int tw = 0, th = 0, pw = 0, ph = 0;
+    const auto a = read_rgb(tif, tw, th), b = read_rgb(png, pw, ph);
+    ASSERT_EQ(tw, pw);
+    ASSERT_EQ(th, ph);
+    EXPECT_TRUE(a == b) << "the COG's pixels differ from the PNG's";
 }
 
 TEST(RenderCli, PerspectiveHasTheAskedSize) {

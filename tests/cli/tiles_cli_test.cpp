@@ -391,11 +391,36 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
         EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
     }
-    // Unwritable outputs.
-    auto r = run(tiles_cmd(kGrenoble, "--zoom 8", "/proc/terrashade-tiles"));
+    // Unwritable or impossible outputs and missing inputs, each found before the DEM is read
+    // (IoPlan): one line naming the path, and nothing created.
+    fs::create_directories(d / "a_directory.mbtiles");
+    std::ofstream(d / "a_file") << "not a directory";
+    const std::vector<Case> paths = {
+        {"/proc/terrashade-tiles", "cannot create"},
+        {"/nonexistent-dir/t.mbtiles", "does not exist (--out)"},
+        {(d / "a_directory.mbtiles").string(), "is a directory"},
+        {(d / "a_file").string(), "is a file; --out takes a directory"},
+        {(d / "a_file" / "tiles").string(), "is not a directory (--out)"},
+    };
+    for (const Case& c : paths) {
+        const auto r = run(quote(terrashade()) + " tiles " + quote(kGrenoble) + " --zoom 8 --out " + quote(c.args));
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+    }
+    auto r = run(tiles_cmd("/nonexistent/dem.tif", "--zoom 8", d / "none"));
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    r = run(tiles_cmd(kGrenoble, "--zoom 8", "/nonexistent-dir/t.mbtiles"));
-    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("no such file (DEM)"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d / "none"));
+    // An unwritable existing directory: refused before any tile, the directory left as it was.
+    if (::geteuid() != 0) {
+        fs::create_directories(d / "locked");
+        fs::permissions(d / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+        r = run(tiles_cmd(kGrenoble, "--zoom 8", d / "locked"));
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_NE(r.err.find("cannot write in"), std::string::npos) << r.err;
+        fs::permissions(d / "locked", fs::perms::owner_all);
+    }
     // A DEM that covers no tile: beyond Web Mercator's 85.05 deg.
     const fs::path polar = d / "polar.tif";
     ASSERT_EQ(run("gdal_translate -q -a_ullr 0 89.9 3 89.0 " + quote(kDem + "nodata_3x3.tif") + " " +

@@ -1,0 +1,292 @@
+#include "core/raster/cog_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "core/raster/geotiff_georef.hpp"
+#include "core/raster/tiff_file.hpp"
+#include "core/util/atomic_file.hpp"
+#include "core/util/error.hpp"
+
+namespace ts::raster {
+namespace {
+
+constexpr std::uint16_t kTagTileOffsets = 324, kTagTileByteCounts = 325;
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> owned;
+    const std::uint8_t* data = nullptr;
+};
+
+// Each 2x2 block averaged (a last odd row or column from what it has); colours weighted by
+// alpha when the last channel is one, so transparent pixels do not darken the edges.
+Image halved(const Image& in, int channels) {
+    const bool alpha = channels == 2 || channels == 4;
+    const int colours = alpha ? channels - 1 : channels;
+    Image out;
+    out.width = (in.width + 1) / 2, out.height = (in.height + 1) / 2;
+    out.owned.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(channels));
+    for (int r = 0; r < out.height; ++r)
+        for (int c = 0; c < out.width; ++c) {
+            unsigned sum[4] = {0, 0, 0, 0}, weight = 0, count = 0, alpha_sum = 0;
+            for (int dr = 0; dr < 2; ++dr)
+                for (int dc = 0; dc < 2; ++dc) {
+                    const int sr = 2 * r + dr, sc = 2 * c + dc;
+                    if (sr >= in.height || sc >= in.width) continue;
+                    const std::uint8_t* p = in.data + (std::size_t(sr) * std::size_t(in.width) + std::size_t(sc)) *
+                                                          std::size_t(channels);
+                    const unsigned w = alpha ? p[channels - 1] : 1u;
+                    for (int k = 0; k < colours; ++k) sum[k] += w * p[k];
+                    weight += w, ++count;
+                    if (alpha) alpha_sum += p[channels - 1];
+                }
+            std::uint8_t* q = out.owned.data() + (std::size_t(r) * std::size_t(out.width) + std::size_t(c)) *
+                                                     std::size_t(channels);
+            for (int k = 0; k < colours; ++k) q[k] = weight ? std::uint8_t((sum[k] + weight / 2) / weight) : 0;
+            if (alpha) q[channels - 1] = std::uint8_t((alpha_sum + count / 2) / count);
+        }
+    out.data = out.owned.data();
+    return out;
+}
+
+void write_directory(TiffFile& file, const Image& image, int channels, const geo::Georef* georef) {
+    TIFF* tif = file.get();
+    TIFFSetField(tif, TIFFTAG_SUBFILETYPE, georef ? 0 : FILETYPE_REDUCEDIMAGE);
+    TIFFSetField(tif, TIFFTAG_IMAGEWIDTH, std::uint32_t(image.width));
+    TIFFSetField(tif, TIFFTAG_IMAGELENGTH, std::uint32_t(image.height));
+    TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, 8);
+    TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_UINT);
+    TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, channels);
+    TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+    TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, channels <= 2 ? PHOTOMETRIC_MINISBLACK : PHOTOMETRIC_RGB);
+    if (channels == 2 || channels == 4) {
+        std::uint16_t extra = EXTRASAMPLE_UNASSALPHA;
+        TIFFSetField(tif, TIFFTAG_EXTRASAMPLES, 1, &extra);
+    }
+    TIFFSetField(tif, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
+    TIFFSetField(tif, TIFFTAG_PREDICTOR, PREDICTOR_HORIZONTAL);
+    TIFFSetField(tif, TIFFTAG_TILEWIDTH, std::uint32_t(kCogTileSize));
+    TIFFSetField(tif, TIFFTAG_TILELENGTH, std::uint32_t(kCogTileSize));
+    if (georef) write_geotiff_georef(tif, *georef, file.path());
+    const std::size_t px = std::size_t(channels), t = std::size_t(kCogTileSize);
+    std::vector<std::uint8_t> tile(t * t * px);
+    for (int r0 = 0; r0 < image.height; r0 += kCogTileSize)
+        for (int c0 = 0; c0 < image.width; c0 += kCogTileSize) {
+            // Edge tiles are padded with zeros (transparent, and cheap to compress).
+            std::fill(tile.begin(), tile.end(), std::uint8_t(0));
+            const int rows = std::min(kCogTileSize, image.height - r0), cols = std::min(kCogTileSize, image.width - c0);
+            for (int r = 0; r < rows; ++r)
+                std::memcpy(tile.data() + std::size_t(r) * t * px,
+                            image.data + (std::size_t(r0 + r) * std::size_t(image.width) + std::size_t(c0)) * px,
+                            std::size_t(cols) * px);
+            const ttile_t index = TIFFComputeTile(tif, std::uint32_t(c0), std::uint32_t(r0), 0, 0);
+            if (TIFFWriteEncodedTile(tif, index, tile.data(), tmsize_t(tile.size())) < 0)
+                throw input_error(file.path(), "writing TIFF failed: " + file.last_error());
+        }
+    if (!TIFFWriteDirectory(tif)) throw input_error(file.path(), "writing TIFF failed: " + file.last_error());
+}
+
+// Little-endian reading and writing of the classic TIFF words.
+std::uint32_t get(const std::vector<std::uint8_t>& b, std::size_t at, int bytes, const std::string& path) {
+    if (at + std::size_t(bytes) > b.size()) throw input_error(path, "TIFF truncated while laying out the COG");
+    std::uint32_t v = 0;
+    for (int k = bytes - 1; k >= 0; --k) v = (v << 8) | b[at + std::size_t(k)];
+    return v;
+}
+void put(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v, int bytes) {
+    for (int k = 0; k < bytes; ++k) b[at + std::size_t(k)] = std::uint8_t(v >> (8 * k));
+}
+
+std::size_t type_size(std::uint16_t type) {
+    switch (type) {
+        case 1: case 2: case 6: case 7: return 1;  // BYTE, ASCII, SBYTE, UNDEFINED
+        case 3: case 8: return 2;                  // SHORT, SSHORT
+        case 4: case 9: case 11: case 13: return 4;  // LONG, SLONG, FLOAT, IFD
+        case 5: case 10: case 12: return 8;        // RATIONAL, SRATIONAL, DOUBLE
+        default: return 0;
+    }
+}
+
+struct Entry {
+    std::uint16_t tag = 0, type = 0;
+    std::uint32_t count = 0;
+    std::vector<std::uint8_t> value;  // count * type_size bytes
+};
+
+struct Ifd {
+    std::vector<Entry> entries;
+    std::vector<std::vector<std::uint8_t>> tiles;  // compressed, in TIFF order (row-major)
+};
+
+std::vector<Ifd> read_ifds(const std::vector<std::uint8_t>& b, const std::string& path) {
+    if (b.size() < 8 || b[0] != 'I' || b[1] != 'I' || get(b, 2, 2, path) != 42)
+        throw input_error(path, "expected a classic little-endian TIFF to lay out as a COG");
+    std::vector<Ifd> ifds;
+    std::uint32_t offset = get(b, 4, 4, path);
+    while (offset != 0) {
+        if (ifds.size() > 64) throw input_error(path, "too many TIFF directories");
+        Ifd ifd;
+        const std::uint32_t n = get(b, offset, 2, path);
+        std::vector<std::uint32_t> tile_offsets, tile_counts;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::size_t at = offset + 2 + 12 * std::size_t(i);
+            Entry e;
+            e.tag = std::uint16_t(get(b, at, 2, path));
+            e.type = std::uint16_t(get(b, at + 2, 2, path));
+            e.count = get(b, at + 4, 4, path);
+            const std::size_t bytes = type_size(e.type) * e.count;
+            if (type_size(e.type) == 0) throw input_error(path, "unexpected TIFF field type " + std::to_string(e.type));
+            const std::size_t from = bytes <= 4 ? at + 8 : get(b, at + 8, 4, path);
+            if (from + bytes > b.size()) throw input_error(path, "TIFF truncated while laying out the COG");
+            e.value.assign(b.begin() + std::ptrdiff_t(from), b.begin() + std::ptrdiff_t(from + bytes));
+            if (e.tag == kTagTileOffsets || e.tag == kTagTileByteCounts) {
+                auto& out = e.tag == kTagTileOffsets ? tile_offsets : tile_counts;
+                const int w = int(type_size(e.type));
+                for (std::uint32_t k = 0; k < e.count; ++k) out.push_back(get(e.value, std::size_t(k) * std::size_t(w), w, path));
+            }
+            ifd.entries.push_back(std::move(e));
+        }
+        if (tile_offsets.empty() || tile_offsets.size() != tile_counts.size())
+            throw input_error(path, "expected a tiled TIFF to lay out as a COG");
+        for (std::size_t k = 0; k < tile_offsets.size(); ++k) {
+            if (std::size_t(tile_offsets[k]) + tile_counts[k] > b.size())
+                throw input_error(path, "TIFF truncated while laying out the COG");
+            ifd.tiles.emplace_back(b.begin() + std::ptrdiff_t(tile_offsets[k]),
+                                   b.begin() + std::ptrdiff_t(tile_offsets[k] + tile_counts[k]));
+        }
+        ifds.push_back(std::move(ifd));
+        offset = get(b, offset + 2 + 12 * std::size_t(n), 4, path);
+    }
+    return ifds;
+}
+
+std::string ghost_area() {
+    std::string md =
+        "LAYOUT=IFDS_BEFORE_DATA\nBLOCK_ORDER=ROW_MAJOR\nBLOCK_LEADER=SIZE_AS_UINT4\n"
+        "BLOCK_TRAILER=LAST_4_BYTES_REPEATED\nKNOWN_INCOMPATIBLE_EDITION=NO\n";
+    char head[64];
+    std::snprintf(head, sizeof head, "GDAL_STRUCTURAL_METADATA_SIZE=%06zu bytes\n", md.size());
+    std::string ghost = head + md;
+    if ((8 + ghost.size()) % 2) {  // the first IFD starts on a word boundary
+        md += ' ';
+        std::snprintf(head, sizeof head, "GDAL_STRUCTURAL_METADATA_SIZE=%06zu bytes\n", md.size());
+        ghost = head + md;
+    }
+    return ghost;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height) {
+    std::vector<std::pair<int, int>> sizes;
+    while (width > kCogTileSize || height > kCogTileSize) {
+        width = (width + 1) / 2, height = (height + 1) / 2;
+        sizes.emplace_back(width, height);
+    }
+    return sizes;
+}
+
+std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, const std::string& path) {
+    std::vector<Ifd> ifds = read_ifds(tiff, path);
+    const std::string ghost = ghost_area();
+
+    // Where each IFD and its out-of-line values go, then where the tiles start.
+    std::size_t at = 8 + ghost.size();
+    std::vector<std::size_t> ifd_at(ifds.size());
+    for (std::size_t i = 0; i < ifds.size(); ++i) {
+        ifd_at[i] = at;
+        at += 2 + 12 * ifds[i].entries.size() + 4;
+        for (Entry& e : ifds[i].entries) {
+            if (e.tag == kTagTileOffsets || e.tag == kTagTileByteCounts) {
+                e.type = 4;  // LONG
+                e.value.assign(std::size_t(e.count) * 4, 0);
+            }
+            if (e.value.size() > 4) at += e.value.size() + (e.value.size() % 2);
+        }
+    }
+    // Tiles: the smallest overview first, the full resolution last; leader + data + trailer.
+    std::vector<std::vector<std::uint32_t>> tile_at(ifds.size());
+    for (std::size_t i = ifds.size(); i-- > 0;)
+        for (const auto& tile : ifds[i].tiles) {
+            tile_at[i].push_back(std::uint32_t(at + 4));
+            at += 4 + tile.size() + (tile.size() >= 4 ? 4 : 0);
+        }
+    if (at > 0xFFFFFFFFull) throw input_error(path, "too large for a classic-TIFF COG (over 4 GiB)");
+
+    std::vector<std::uint8_t> out(at, 0);
+    out[0] = 'I', out[1] = 'I';
+    put(out, 2, 42, 2);
+    put(out, 4, std::uint32_t(ifd_at.empty() ? 0 : ifd_at[0]), 4);
+    std::memcpy(out.data() + 8, ghost.data(), ghost.size());
+    for (std::size_t i = 0; i < ifds.size(); ++i) {
+        std::size_t p = ifd_at[i];
+        const std::size_t n = ifds[i].entries.size();
+        std::size_t values = p + 2 + 12 * n + 4;
+        put(out, p, std::uint32_t(n), 2);
+        for (std::size_t k = 0; k < n; ++k) {
+            Entry& e = ifds[i].entries[k];
+            if (e.tag == kTagTileOffsets)
+                for (std::size_t t = 0; t < tile_at[i].size(); ++t) put(e.value, 4 * t, tile_at[i][t], 4);
+            if (e.tag == kTagTileByteCounts)
+                for (std::size_t t = 0; t < ifds[i].tiles.size(); ++t) put(e.value, 4 * t, std::uint32_t(ifds[i].tiles[t].size()), 4);
+            const std::size_t q = p + 2 + 12 * k;
+            put(out, q, e.tag, 2);
+            put(out, q + 2, e.type, 2);
+            put(out, q + 4, e.count, 4);
+            if (e.value.size() <= 4) {
+                std::memcpy(out.data() + q + 8, e.value.data(), e.value.size());
+            } else {
+                put(out, q + 8, std::uint32_t(values), 4);
+                std::memcpy(out.data() + values, e.value.data(), e.value.size());
+                values += e.value.size() + (e.value.size() % 2);
+            }
+        }
+        put(out, p + 2 + 12 * n, std::uint32_t(i + 1 < ifds.size() ? ifd_at[i + 1] : 0), 4);
+        for (std::size_t t = 0; t < ifds[i].tiles.size(); ++t) {
+            const auto& tile = ifds[i].tiles[t];
+            const std::size_t d = tile_at[i][t];
+            put(out, d - 4, std::uint32_t(tile.size()), 4);
+            std::memcpy(out.data() + d, tile.data(), tile.size());
+            if (tile.size() >= 4) std::memcpy(out.data() + d + tile.size(), tile.data() + tile.size() - 4, 4);
+        }
+    }
+    return out;
+}
+
+void write_cog_u8(const std::filesystem::path& path, int width, int height, int channels, const std::uint8_t* data,
+                  const geo::Georef& georef) {
+    if (width <= 0 || height <= 0) throw input_error(path.string(), "cannot write an empty image");
+    if (channels < 1 || channels > 4)
+        throw input_error(path.string(), "an 8-bit image has 1 to 4 channels, not " + std::to_string(channels));
+    if (!georef.valid()) throw input_error(path.string(), "a Cloud-Optimized GeoTIFF needs georeferencing");
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+        {
+            TiffFile file(tmp, "wl");
+            Image level;
+            level.width = width, level.height = height, level.data = data;
+            write_directory(file, level, channels, &georef);
+            while (level.width > kCogTileSize || level.height > kCogTileSize) {
+                level = halved(level, channels);
+                write_directory(file, level, channels, nullptr);
+            }
+            file.close();
+        }
+        std::vector<std::uint8_t> tiff;
+        {
+            std::ifstream in(tmp, std::ios::binary);
+            tiff.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        const std::vector<std::uint8_t> cog = cog_layout(tiff, path.string());
+        std::FILE* f = std::fopen(tmp.c_str(), "wb");
+        if (!f) throw input_error(path.string(), "cannot write");
+        const bool ok = std::fwrite(cog.data(), 1, cog.size(), f) == cog.size();
+        if (std::fclose(f) != 0 || !ok) throw input_error(path.string(), "cannot write (disk full?)");
+    });
+}
+
+}  // namespace ts::raster

@@ -1,0 +1,34 @@
+#pragma once
+// A Cloud-Optimized GeoTIFF of an 8-bit image: 256-px deflate tiles, internal overviews halved
+// until the smallest fits in one tile, and GDAL's COG layout (the structural-metadata "ghost"
+// after the header, every IFD before any pixel, the smallest overview's tiles first and the full
+// resolution last, each tile behind a 4-byte size leader and followed by its last 4 bytes), so
+// `gdalinfo` reports LAYOUT=COG and GDAL's validate_cloud_optimized_geotiff.py passes.
+//
+// libtiff encodes the tiles and the tags (the GeoKeys through write_geotiff_georef, as the other
+// writers); the file is then laid out again in COG order by cog_layout().
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "core/geo/georef.hpp"
+
+namespace ts::raster {
+
+inline constexpr int kCogTileSize = 256;
+
+// channels 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA), interleaved, row-major; written
+// atomically. Overviews average each 2x2 block, weighted by alpha when there is one.
+void write_cog_u8(const std::filesystem::path& path, int width, int height, int channels, const std::uint8_t* data,
+                  const geo::Georef& georef);
+
+// The sizes of the overviews write_cog_u8 adds (halved, rounding up, while either side
+// exceeds a tile).
+std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height);
+
+// A classic little-endian TIFF with tiled IFDs (as libtiff writes it) rearranged into the COG
+// layout above. Throws ts::InputError (naming `path`) for what it cannot read or a result past
+// 4 GiB.
+std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, const std::string& path);
+
+}  // namespace ts::raster

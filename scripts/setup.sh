@@ -35,6 +35,7 @@ TEST_PKGS=(
   xvfb xauth                # window tests
   python3-matplotlib python3-numpy  # charts in docs/
   unzip
+  slurm-wlm munge           # a real single-node Slurm for the job-array test (tests/scale/slurm_fixture.sh)
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
 

@@ -7,7 +7,7 @@
 #   scripts/slurm_shards.sh --shards N -- relight DEM --times ... --exposure 13 --out FRAMES/
 #
 # What it submits:
-#   sbatch --array=0-(N-1)%K WORK/shard.sbatch   each task: terrashade ... --shard ID/N --resume
+#   sbatch --array=0-(N-1)%K WORK/shard.sbatch   each task: terrashade ... --shard ID/N [--resume]
 #                                                --out WORK/shard_ID(.mbtiles)
 #   sbatch --dependency=afterok:ARRAY WORK/merge.sbatch   terrashade merge WORK/shard_* --out OUT
 # It prints "array JOBID" and "merge JOBID". The shard number is given explicitly (--shard ID/N),
@@ -57,13 +57,16 @@ ext=""
 [ "$command" = tiles ] && [ "${out%.mbtiles}" != "$out" ] && ext=".mbtiles"
 
 quoted=$(printf ' %q' "${args[@]}")
+# Tiles resume what a killed shard committed; a relight shard redoes its block of frames.
+resume=""
+[ "$command" = tiles ] && resume=" --resume"
 cat >"$work/shard.sbatch" <<SBATCH
 #!/usr/bin/env bash
 #SBATCH --job-name=terrashade-$command
 #SBATCH --output=$work/log/shard_%a.out
 set -euo pipefail
 cd $(printf '%q' "$PWD")
-exec $(printf '%q' "$bin") $command$quoted --shard "\$SLURM_ARRAY_TASK_ID/$shards" --resume \\
+exec $(printf '%q' "$bin") $command$quoted --shard "\$SLURM_ARRAY_TASK_ID/$shards"$resume \\
     --out $(printf '%q' "$work")/shard_"\$SLURM_ARRAY_TASK_ID"$ext
 SBATCH
 inputs=""

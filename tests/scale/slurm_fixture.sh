@@ -33,12 +33,13 @@ slurm_fixture_start() {
         command -v "$tool" >/dev/null || slurm_fixture_fail "$tool not found (scripts/setup.sh installs slurm-wlm and munge)"
     done
     mkdir -p "$d/munge" "$d/log" "$d/ctld" "$d/slurmd" "$d/run"
-    chmod 700 "$d/munge"
+    chmod 711 "$d/munge"
     mungekey --create --keyfile="$d/munge/munge.key" --force >/dev/null 2>&1 ||
         dd if=/dev/urandom of="$d/munge/munge.key" bs=1024 count=1 status=none
     chmod 400 "$d/munge/munge.key"
     munged --foreground --force --key-file="$d/munge/munge.key" --socket="$d/munge/munge.socket" \
-        --pid-file="$d/munge/munged.pid" --log-file="$d/log/munged.log" --seed-file="$d/munge/munge.seed" &
+        --pid-file="$d/munge/munged.pid" --log-file="$d/log/munged.log" --seed-file="$d/munge/munge.seed" \
+        >>"$d/log/munged.out" 2>&1 &
     slurm_fixture_pids+=($!)
     local ctld_port slurmd_port
     ctld_port=$(slurm_fixture_free_port) && slurmd_port=$(slurm_fixture_free_port) || slurm_fixture_fail "no free port"

@@ -59,10 +59,10 @@ done
 echo "merged MBTiles equals the single run: $n tiles, metadata equal"
 
 echo "== 2. XYZ: shard 1 cancelled mid-way, resubmitted with --resume"
-xyz_flags=(--zoom 0-14 --style hillshade --threads 1)
+xyz_flags=(--zoom 0-14 --style hillshade)
 "$bin" tiles "$dem" "${xyz_flags[@]}" --threads 2 --out "$tmp/single_xyz" >"$tmp/single_xyz.log"
 jobs=$(bash "$src/scripts/slurm_shards.sh" --shards 3 --max-parallel 2 --work "$tmp/xyz" --terrashade "$bin" \
-  -- tiles "$dem" "${xyz_flags[@]}" --out "$tmp/merged_xyz")
+  -- tiles "$dem" "${xyz_flags[@]}" --threads 1 --out "$tmp/merged_xyz")
 array=$(awk '/^array/ {print $2}' <<<"$jobs")
 merge=$(awk '/^merge/ {print $2}' <<<"$jobs")
 shard1="$tmp/xyz/shard_1"

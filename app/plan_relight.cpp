@@ -95,9 +95,11 @@ void run_plan_relight(const PlanRelightArgs& a) {
     const double shard_s = setup_s + work_s / double(used);
     std::printf("one process: %s (%s setup + %s frames)\n", format_duration(setup_s + work_s).c_str(),
                 format_duration(setup_s).c_str(), format_duration(work_s).c_str());
-    std::printf("shards: %lld for --wall-time %s: ~%zu frames and %s each, %.2f node-hours in all\n",
+    std::printf("shards: %lld for --wall-time %s: ~%zu frames and %s each, %.2f shard-hours in all (node-hours with one shard per node)\n",
                 static_cast<long long>(used), a.wall_time.c_str(), times.size() / std::size_t(used),
                 format_duration(shard_s).c_str(), double(used) * shard_s / 3600.0);
+    std::printf("slurm: sbatch --array=0-%lld --time=%s (scripts/slurm_shards.sh)\n", static_cast<long long>(used - 1),
+                slurm_time(wall_s).c_str());
     std::printf("storage: %s (%s)\n", format_bytes(frame_bytes * double(times.size())).c_str(),
                 measure ? "bytes per frame from the sample" : "about 1.5 bytes per texel assumed: no sample");
 }

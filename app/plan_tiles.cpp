@@ -102,12 +102,12 @@ void run_plan_tiles(const PlanTilesArgs& a) {
     const double shard_s = shading_s + work_s / double(shards);
     std::printf("one process: %s (%s shading + %s tiles)\n", format_duration(shading_s + work_s).c_str(),
                 format_duration(shading_s).c_str(), format_duration(work_s).c_str());
-    std::printf("shards: %lld for --wall-time %s: ~%lld tiles and %s each, %.2f node-hours in all\n",
+    std::printf("shards: %lld for --wall-time %s: ~%lld tiles and %s each, %.2f shard-hours in all (node-hours with one shard per node)\n",
                 static_cast<long long>(shards), a.wall_time.c_str(), static_cast<long long>(total / shards),
                 format_duration(shard_s).c_str(), double(shards) * shard_s / 3600.0);
     const int parallel = a.max_parallel > 0 ? int(std::min<std::int64_t>(a.max_parallel, shards)) : int(shards);
     std::printf("slurm: sbatch --array=0-%lld%%%d --time=%s (scripts/slurm_shards.sh)%s\n",
-                static_cast<long long>(shards - 1), parallel, a.wall_time.c_str(),
+                static_cast<long long>(shards - 1), parallel, slurm_time(wall_s).c_str(),
                 shards > 1001 ? "; above the default MaxArraySize of 1001: raise it or run several arrays "
                                 "(docs/scale.md)"
                               : "");

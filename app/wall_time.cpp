@@ -79,6 +79,16 @@ std::string format_bytes(double b) {
     return buf;
 }
 
+std::string slurm_time(double seconds) {
+    const auto minutes = std::int64_t(std::ceil(seconds / 60 - 1e-9));
+    const std::int64_t days = minutes / 1440, hours = minutes / 60 % 24, mins = minutes % 60;
+    char buf[64];
+    if (days > 0) std::snprintf(buf, sizeof buf, "%lld-%02lld:%02lld:00", static_cast<long long>(days),
+                                static_cast<long long>(hours), static_cast<long long>(mins));
+    else std::snprintf(buf, sizeof buf, "%lld:%02lld:00", static_cast<long long>(hours), static_cast<long long>(mins));
+    return buf;
+}
+
 std::int64_t shards_for_wall_time(double work_s, double fixed_s, double wall_s) {
     if (fixed_s >= wall_s) return 0;
     return std::max<std::int64_t>(1, std::int64_t(std::ceil(work_s / (wall_s - fixed_s) - 1e-9)));

@@ -11,6 +11,8 @@ double parse_wall_time(const std::string& text);
 // "2 h 05 min", "12.3 s": for reports.
 std::string format_duration(double seconds);
 std::string format_bytes(double bytes);
+// Slurm's --time format, rounded up to the minute: "45:00", "2:00:00", "1-12:00:00".
+std::string slurm_time(double seconds);
 
 // The fewest shards N such that fixed_s + work_s / N <= wall_s (each shard pays fixed_s, shares
 // work_s); 0 if even one item per shard cannot fit (fixed_s >= wall_s).

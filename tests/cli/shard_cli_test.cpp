@@ -84,6 +84,7 @@ TEST(ShardCli, PlanTilesCountsTilesAndShards) {
     EXPECT_NE(r.out.find("  all           328"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("shards: "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("sbatch --array=0-"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--time=0:01:00"), std::string::npos) << r.out;  // Slurm's format, whole minutes
     EXPECT_NE(r.out.find("storage: "), std::string::npos) << r.out;
     // A given rate: 328 tiles at 10 tiles/s in 10 s of wall time take 4 shards (no shading measured
     // without a sample).

@@ -77,6 +77,38 @@ TEST(ShardCli, MergeReportsMissingShardsAndWritesNothing) {
     EXPECT_EQ(kinds.exit_code, 2);
 }
 
+std::string file_bytes(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(ShardCli, RelightShardsMergeIntoTheSingleRun) {
+    const auto dir = ts::cli_test::temp_dir("relight_merge");
+    const std::string flags = " --times 2025-06-21T06:00Z/2025-06-21T16:00Z/PT2H --exposure 13 --directions 8 --out ";
+    ASSERT_EQ(run("relight " + kDem + flags + quote((dir / "single").string())).exit_code, 0);
+    for (int k : {0, 1, 2})
+        ASSERT_EQ(run("relight " + kDem + flags + quote((dir / ("s" + std::to_string(k))).string()) + " --shard " +
+                      std::to_string(k) + "/3")
+                      .exit_code,
+                  0);
+    // Frames 0-1 in shard 0, 2-3 in 1, 4-5 in 2, named as in the whole series.
+    EXPECT_TRUE(std::filesystem::exists(dir / "s1" / "frame_0002_2025-06-21T1000Z.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "s1" / "frame_0000_2025-06-21T0600Z.png"));
+    const auto s = [&](int k) { return quote((dir / ("s" + std::to_string(k))).string()); };
+    const Result missing = run("merge " + s(0) + " " + s(2) + " --out " + quote((dir / "all").string()));
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir / "all"));
+    const Result r = run("merge " + s(2) + " " + s(0) + " " + s(1) + " --out " + quote((dir / "all").string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir / "single")) {
+        ++files;
+        EXPECT_EQ(file_bytes(e.path()), file_bytes(dir / "all" / e.path().filename())) << e.path().filename();
+    }
+    EXPECT_EQ(files, 7u);  // 6 frames and times.csv
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir / "all"), {}), 7);
+}
+
 TEST(ShardCli, PlanTilesCountsTilesAndShards) {
     const Result r = run("plan tiles " + kDem + " --zoom 0-12 --style hillshade --wall-time 10s --sample 50");
     ASSERT_EQ(r.exit_code, 0) << r.err;

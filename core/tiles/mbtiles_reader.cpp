@@ -5,6 +5,15 @@
 #include "core/util/error.hpp"
 
 namespace ts::tiles {
+namespace {
+
+// Finalizes a statement however the scope is left (a callback may throw mid-iteration).
+struct Statement {
+    sqlite3_stmt* q = nullptr;
+    ~Statement() { sqlite3_finalize(q); }
+};
+
+}  // namespace
 
 MbtilesReader::MbtilesReader(std::filesystem::path file) : file_(std::move(file)) {
     std::error_code ec;
@@ -30,7 +39,7 @@ MbtilesReader::MbtilesReader(std::filesystem::path file) : file_(std::move(file)
     tile_count();  // checks the tiles table
 }
 
-MbtilesReader::~MbtilesReader() { sqlite3_close(db_); }
+MbtilesReader::~MbtilesReader() { sqlite3_close_v2(db_); }
 
 std::size_t MbtilesReader::tile_count() const {
     sqlite3_stmt* q = nullptr;
@@ -45,11 +54,12 @@ std::size_t MbtilesReader::tile_count() const {
 }
 
 void MbtilesReader::for_each_tile(const std::function<void(const TileId&, std::span<const std::uint8_t>)>& f) const {
-    sqlite3_stmt* q = nullptr;
+    Statement statement;
     sqlite3_prepare_v2(db_,
                        "SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles "
                        "ORDER BY zoom_level, tile_column, tile_row",
-                       -1, &q, nullptr);
+                       -1, &statement.q, nullptr);
+    sqlite3_stmt* q = statement.q;
     int rc = SQLITE_ROW;
     while (q && (rc = sqlite3_step(q)) == SQLITE_ROW) {
         TileId t;
@@ -60,7 +70,6 @@ void MbtilesReader::for_each_tile(const std::function<void(const TileId&, std::s
         const int size = sqlite3_column_bytes(q, 3);
         f(t, std::span<const std::uint8_t>(data, std::size_t(size)));
     }
-    sqlite3_finalize(q);
     if (rc != SQLITE_DONE) throw input_error(file_.string(), std::string("sqlite: ") + sqlite3_errmsg(db_));
 }
 

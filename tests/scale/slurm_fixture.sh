@@ -12,6 +12,7 @@
 # Any failure to start is fatal (exit 1 with the daemon's log): the test must not pass by skipping.
 
 slurm_fixture_pids=()
+slurm_fixture_watchdog=""
 
 slurm_fixture_fail() {
     echo "slurm fixture: $*" >&2
@@ -84,6 +85,16 @@ CONF
     slurm_fixture_pids+=($!)
     slurmd -D -N localhost -f "$SLURM_CONF" >>"$d/log/slurmd.out" 2>&1 &
     slurm_fixture_pids+=($!)
+    # If this shell is killed without running its traps (a test runner's timeout sends SIGKILL),
+    # a watchdog stops the same daemons by pid once the shell is gone.
+    local shell_pid=$$ daemons="${slurm_fixture_pids[*]}"
+    (
+        trap - EXIT
+        while kill -0 "$shell_pid" 2>/dev/null; do sleep 1; done
+        # shellcheck disable=SC2086
+        kill -TERM $daemons 2>/dev/null
+    ) </dev/null >/dev/null 2>&1 &
+    slurm_fixture_watchdog=$!
     for i in $(seq 150); do
         if sinfo -h -N -o '%T' 2>/dev/null | grep -Eq '^(idle|mixed|allocated)'; then
             return 0
@@ -96,6 +107,11 @@ CONF
 
 slurm_fixture_stop() {
     local pid
+    if [ -n "${slurm_fixture_watchdog:-}" ]; then
+        kill "$slurm_fixture_watchdog" 2>/dev/null || true
+        wait "$slurm_fixture_watchdog" 2>/dev/null || true
+        slurm_fixture_watchdog=""
+    fi
     for pid in "${slurm_fixture_pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
     for pid in "${slurm_fixture_pids[@]}"; do
         for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done

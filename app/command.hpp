@@ -22,6 +22,11 @@ void add_relight_command(CLI::App& root);
 // `terrashade tiles`: Web Mercator map tiles, XYZ or MBTiles (app/tiles_command.cpp).
 void add_tiles_command(CLI::App& root);
 
+// `terrashade plan` (the work, shards and storage of a tiles or relight job) and `terrashade
+// merge` (shards into one output): app/plan_command.cpp, app/merge_command.cpp, docs/scale.md.
+void add_plan_command(CLI::App& root);
+void add_merge_command(CLI::App& root);
+
 // `terrashade spheres`: the bounding sphere decomposition of a mesh (app/spheres_command.cpp).
 void add_spheres_command(CLI::App& root);
 

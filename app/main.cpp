@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
     ts::app::add_relight_command(root);
     ts::app::add_spheres_command(root);
     ts::app::add_tiles_command(root);
+    ts::app::add_plan_command(root);
+    ts::app::add_merge_command(root);
 #ifdef TERRASHADE_HAS_GPU
     ts::app::add_devices_command(root);
     ts::app::add_fly_command(root);

@@ -16,10 +16,12 @@
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/render_options.hpp"
+#include "app/shard_option.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/render/sequence_exposure.hpp"
 #include "core/light/time_interval.hpp"
 #include "core/light/utc_time.hpp"
+#include "core/util/shard_marker.hpp"
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
@@ -37,6 +39,7 @@ struct RelightArgs {
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
     bool skip_night = false;
+    std::string shard;  // K/N
 };
 
 // Below this sun elevation it is night for --skip-night: the end of civil twilight, when the
@@ -79,6 +82,7 @@ struct Frame {
     render::SunState sun;
     std::string file;
     double ev100 = 0;
+    std::size_t index = 0;  // in the whole series (a shard has a part of it)
 };
 
 void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>& frames, bool linear) {
@@ -88,7 +92,7 @@ void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>
         std::fprintf(f, "frame,file,time_utc,sun_azimuth_deg,sun_elevation_deg,ev100\n");
         for (std::size_t k = 0; k < frames.size(); ++k) {
             const Frame& fr = frames[k];
-            std::fprintf(f, "%zu,%s,%s,%.4f,%.4f,", k, fr.file.c_str(), light::format_utc_time(fr.time).c_str(),
+            std::fprintf(f, "%zu,%s,%s,%.4f,%.4f,", fr.index, fr.file.c_str(), light::format_utc_time(fr.time).c_str(),
                          fr.sun.azimuth_deg, fr.sun.elevation_deg);
             if (linear) std::fprintf(f, "\n");  // EXR frames are linear: no exposure applied
             else std::fprintf(f, "%.3f\n", fr.ev100);
@@ -105,12 +109,17 @@ void run_relight(const RelightArgs& a) {
     plan_render_inputs(plan, a.render, options);
     plan.input("--times-file", a.times_file).output_directory("--out", a.out_dir);
     plan.check();
+    const Shard shard = shard_of_process(a.shard);
+    if (!shard.whole() && exposure.automatic && a.format != "exr")
+        throw InputError("relight --shard: automatic exposure is smoothed from frame to frame over the whole series; "
+                         "give --exposure EV (or --format exr) so that shards match one run");
     const std::vector<light::UtcTime> times =
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     std::error_code ec;
     std::filesystem::create_directories(a.out_dir, ec);
     if (ec || !std::filesystem::is_directory(a.out_dir))
         throw input_error(a.out_dir, "cannot create the output directory");
+    remove_shard_marker(a.out_dir);
 
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
@@ -144,6 +153,19 @@ void run_relight(const RelightArgs& a) {
         std::snprintf(name, sizeof name, "frame_%04zu_%s.%s", k, instant_for_file_name(frames[k].time).c_str(),
                       a.format.c_str());
         frames[k].file = name;
+        frames[k].index = k;
+    }
+    if (!shard.whole()) {
+        const IndexRange part = frame_range(frames.size(), shard);
+        std::printf("shard %s: frames %zu..%zu of %zu\n", shard_text(shard).c_str(), part.begin,
+                    part.end == 0 ? 0 : part.end - 1, frames.size());
+        frames = std::vector<Frame>(frames.begin() + std::ptrdiff_t(part.begin), frames.begin() + std::ptrdiff_t(part.end));
+        if (frames.empty()) {
+            write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, a.format == "exr");
+            write_shard_marker(a.out_dir, shard);
+            std::printf("shard %s has no frames (more shards than frames)\n", shard_text(shard).c_str());
+            return;
+        }
     }
     interrupt::report_progress("frames", frames.size());
 
@@ -204,6 +226,7 @@ void run_relight(const RelightArgs& a) {
         writer.finish();
     }
     write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, linear);
+    if (!shard.whole()) write_shard_marker(a.out_dir, shard);
     const double total_s = t1.seconds();
     if (per_frame_auto)
         std::printf("exposure: automatic per frame, smoothed: EV100 %.2f to %.2f (at most %.0f EV brighter than the "
@@ -240,6 +263,7 @@ void add_relight_command(CLI::App& root) {
                     "Threads encoding and writing frames, each its own frame (frames may then land out of order)")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
+    add_shard_option(*cmd, a->shard);
     cmd->add_flag("--skip-night", a->skip_night, "Leave out instants with the sun below -6 degrees (after civil dusk)");
     cmd->callback([a] { run_relight(*a); });
 }

@@ -13,11 +13,13 @@
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
+#include "app/shard_option.hpp"
 #include "app/tiles_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/render/render_scene.hpp"
 #include "core/tiles/mbtiles_file.hpp"
+#include "core/util/shard_marker.hpp"
 #include "core/tiles/tile_export.hpp"
 #include "core/tiles/xyz_directory.hpp"
 #include "core/util/error.hpp"
@@ -34,6 +36,7 @@ struct TilesCommandArgs {
     bool resume = false;
     std::string name, attribution;
     std::string debug_heights;  // Z/X/Y
+    std::string shard;          // K/N
 };
 
 // --debug-heights Z/X/Y: the tile's heights with their halo as a float GeoTIFF in EPSG:3857,
@@ -68,6 +71,7 @@ void run_tiles(const TilesCommandArgs& a) {
         plan.output_directory("--out", a.out);
     }
     plan.check();
+    job.shard = shard_of_process(a.shard);
 
     const dem::Dem dem = load_dem_input(a.dem);
     if (!a.tiles.time.empty()) {
@@ -75,7 +79,7 @@ void run_tiles(const TilesCommandArgs& a) {
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
     }
     const std::vector<tiles::TileId> tile_plan = tiles::plan_tiles(dem, job);
-    if (tile_plan.empty())
+    if (tile_plan.empty() && job.shard.whole())
         throw input_error(dem.source, "covers no Web Mercator tile (it lies beyond +-85.05 deg latitude?)");
 
     // The output, before any shading: an unwritable one fails here.
@@ -101,9 +105,11 @@ void run_tiles(const TilesCommandArgs& a) {
             {"description", "terrashade " + std::string(tiles::tile_style_name(job.shading.style)) + ", " +
                                 std::to_string(job.tile_size) + "-px tiles"},
         };
+        if (!job.shard.whole()) metadata["terrashade_shard"] = shard_text(job.shard);
         sink = std::make_unique<tiles::MbtilesFile>(a.out, std::move(metadata), job_text, a.resume);
     } else {
         sink = std::make_unique<tiles::XyzDirectory>(a.out, job_text, a.resume, job.z0, job.z1);
+        remove_shard_marker(a.out);
     }
 
     const Stopwatch watch;
@@ -113,6 +119,7 @@ void run_tiles(const TilesCommandArgs& a) {
         stats = tiles::export_tiles(dem, job, *sink, &bar);
         bar.finish();
     }
+    if (!mbtiles && !job.shard.whole()) write_shard_marker(a.out, job.shard);
     const double total = watch.seconds();
     const std::size_t made = stats.written + stats.empty;
     std::printf("tiles: %zu written, %zu resumed, %zu without data (zoom %d-%d, %d px, %s)\n", stats.written,
@@ -137,6 +144,7 @@ void add_tiles_command(CLI::App& root) {
     cmd->add_option("-o,--out", a->out, "Output: a directory (XYZ tiles DIR/z/x/y.png) or FILE.mbtiles")->required();
     cmd->add_flag("--resume", a->resume,
                   "Continue an interrupted run with the same options: finished tiles are kept, the rest made");
+    add_shard_option(*cmd, a->shard);
     cmd->add_option("--name", a->name, "MBTiles metadata name (default: the DEM file's name and the style)");
     cmd->add_option("--attribution", a->attribution, "MBTiles metadata attribution");
     cmd->add_option("--debug-heights", a->debug_heights,

@@ -37,6 +37,7 @@ TEST_PKGS=(
   unzip
   chromium                  # headless browser: the tile viewer page's test (docs/tiles/check_page.mjs)
   nodejs                    # runs that test and installs the page's npm packages
+  slurm-wlm munge           # a real single-node Slurm for the job-array test (tests/scale/slurm_fixture.sh)
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
 

@@ -13,6 +13,7 @@
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_pixels.hpp"
 #include "core/tiles/tile_renderer.hpp"
+#include "core/tiles/tile_shard.hpp"
 #include "core/tiles/zoom_exaggeration.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
@@ -52,7 +53,7 @@ void check_tile_job(const TileJob& job) {
 }
 
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
-    return tiles_covering(dem_footprint(dem.georef), job.z0, job.z1);
+    return shard_tiles(tiles_covering(dem_footprint(dem.georef), job.z0, job.z1), job.shard);
 }
 
 std::string describe_job(const TileJob& job) {

@@ -13,6 +13,7 @@
 #include "core/tiles/dem_footprint.hpp"
 #include "core/tiles/tile_sink.hpp"
 #include "core/tiles/tile_style.hpp"
+#include "core/util/shard.hpp"
 
 namespace ts {
 class ProgressBar;
@@ -24,6 +25,7 @@ struct TileJob {
     int z0 = 0, z1 = 0;
     int tile_size = 256;
     TileShading shading;
+    Shard shard;  // this process's part of the tile set (core/tiles/tile_shard.hpp); not in describe_job
 };
 
 struct TileExportStats {
@@ -39,7 +41,7 @@ struct TileExportStats {
 // of 256 or 512, positive z-factor and exaggeration, directions >= 4.
 void check_tile_job(const TileJob& job);
 
-// The tiles to make, in order, and the description of the job that --resume compares.
+// The tiles to make (of job.shard), in order, and the description of the job that --resume compares.
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job);
 std::string describe_job(const TileJob& job);
 

@@ -2,17 +2,15 @@
 // (tests/fuzz/corpus/<reader>/), through the same feed as the fuzz target: each reads or is
 // one ts::InputError, never a crash, a hang or another exception. Runs in the ordinary
 // build, so a fixed crash stays fixed without clang or libFuzzer.
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/util/memory.hpp"
 #include "tests/fuzz/dem_fuzz_inputs.hpp"
+#include "tests/fuzz/fuzz_files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -20,19 +18,8 @@ namespace {
 
 const char* const kReaders[] = {"hgt", "hgt_zip", "geotiff"};
 
-std::vector<fs::path> files_in(const fs::path& dir) {
-    std::vector<fs::path> out;
-    if (!fs::is_directory(dir)) return out;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_regular_file() && e.path().filename().string().front() != '.') out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-std::string read_all(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using ts::fuzz::files_in;
+using ts::fuzz::read_all;
 
 struct FuzzMemoryCap {
     FuzzMemoryCap() { ts::set_memory_cap(ts::fuzz::kMemoryCap); }

@@ -2,33 +2,20 @@
 // once crashed or hung on (tests/fuzz/regressions/mesh_*), through the same feed as the fuzz
 // targets: each seed reads, each regression input reads or is one ts::InputError. Runs in the
 // ordinary build, so a fixed crash stays fixed without clang or libFuzzer.
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "tests/fuzz/fuzz_files.hpp"
 #include "tests/fuzz/mesh_fuzz_inputs.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<fs::path> files_in(const fs::path& dir) {
-    std::vector<fs::path> out;
-    if (!fs::is_directory(dir)) return out;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_regular_file() && e.path().filename().string().front() != '.') out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-std::string read_all(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using ts::fuzz::files_in;
+using ts::fuzz::read_all;
 
 // Feeds every file of tests/fuzz/<kind>/<target>/; counts the files and those that read.
 void replay(const std::string& kind, const std::string& target, int& files, int& read) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/bench/bench_command.hpp"
+#include "app/bench/process_usage.hpp"
 #include "app/compute_device.hpp"
 #include "app/render_options.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -201,13 +202,14 @@ void run_bench_relight(const BenchRelightArgs& a) {
     const double pixels = double(image.width) * image.height;
 
     double sky_s = 0, sun_s = 0, shade_s = 0;
+    double cpu0 = cpu_seconds();
     t0.restart();
     for (int k = 0; k < a.frames; ++k) {
         scene.render(sun_of_frame(k, a.frames), image);
         const auto& t = scene.renderer().last_timings();
         sky_s += t.sky_s, sun_s += t.sun_visibility_s, shade_s += t.shading_s;
     }
-    const double frames_s = t0.seconds();
+    const double frames_s = t0.seconds(), frames_cpu_s = cpu_seconds() - cpu0;
 
     const std::filesystem::path dir =
         a.out_dir.empty() ? std::filesystem::temp_directory_path() / ("ts_bench_relight_" + std::to_string(::getpid()))
@@ -222,6 +224,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
         return (dir / name).string();
     };
     // As `relight` writes: frame k encoded on a writer thread while frame k+1 renders.
+    cpu0 = cpu_seconds();
     t0.restart();
     {
         render::BackgroundWriter writer(a.write_queue, a.writer_threads);
@@ -231,7 +234,7 @@ void run_bench_relight(const BenchRelightArgs& a) {
         }
         writer.finish();
     }
-    const double files_s = t0.seconds();
+    const double files_s = t0.seconds(), files_cpu_s = cpu_seconds() - cpu0;
     // The same frames rendered and written one after the other (the overlap's baseline).
     t0.restart();
     for (int k = 0; k < a.frames; ++k) {
@@ -297,6 +300,14 @@ void run_bench_relight(const BenchRelightArgs& a) {
                 pixels * n / files_s * 1e-6, files_s / n * 1e3, a.writer_threads, a.writer_threads == 1 ? "" : "s",
                 a.write_queue, pixels * n / frames_s * 1e-6, frames_s / n * 1e3, pixels * n / files_serial_s * 1e-6,
                 files_serial_s / n * 1e3, double(file_bytes) / n * 1e-3);
+    // CPU time does not grow with other processes' load the way wall time does: the rate the
+    // cores could sustain if they were this process's alone, and how busy it kept them.
+    const int cores = thread_count(0);
+    std::printf("CPU per frame: shading %.2f ms, with files %.2f ms; on %d idle core%s at most %.1f Mpx/s shading "
+                "alone and %.1f Mpx/s with files (this run kept them %.0f%% and %.0f%% busy)\n",
+                frames_cpu_s / n * 1e3, files_cpu_s / n * 1e3, cores, cores == 1 ? "" : "s",
+                pixels * n * cores / frames_cpu_s * 1e-6, pixels * n * cores / files_cpu_s * 1e-6,
+                100 * frames_cpu_s / (frames_s * cores), 100 * files_cpu_s / (files_s * cores));
     std::printf("writing one frame on one thread: auto exposure %.2f ms, tone mapping %.2f ms, PNG encoding and "
                 "writing %.2f ms\n",
                 exposure_ms, tone_ms, png_ms);

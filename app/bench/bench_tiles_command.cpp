@@ -2,7 +2,6 @@
 // levels included), and in the same run the classic pipeline, `gdaldem hillshade` then
 // `gdal2tiles.py`, as a ratio. The classic pipeline is skipped with a note when GDAL's tools
 // are not installed (scripts/setup.sh installs them). Figures: docs/tiles.md.
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "app/bench/bench_command.hpp"
+#include "app/bench/process_usage.hpp"
 #include "app/bench/synthetic_mosaic.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
@@ -98,21 +98,6 @@ void run_reference(const BenchTilesArgs& a, const dem::Dem& dem, tiles::TileJob 
         raster::write_u8_image(fs::path(a.reference_out) / "reference.png", w.width, w.height, 1, ref_png.data(), nullptr);
         std::printf("reference: wrote relief.png and reference.png in %s\n", a.reference_out.c_str());
     }
-}
-
-// CPU seconds (user + system) of this process, or of its finished children: the machine may be
-// shared, so beside wall-clock rates the bench reports tiles per CPU-second.
-double cpu_seconds(int who) {
-    rusage u{};
-    getrusage(who, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-// Peak resident memory of this process so far, GB (Linux reports ru_maxrss in KiB).
-double peak_rss_gb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_maxrss) * 1024.0 / 1e9;
 }
 
 bool on_path(const std::string& tool) {

@@ -39,7 +39,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         ->capture_default_str();
     cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
     cmd.add_option("--exaggeration", a.exaggeration,
-                   "auto (2^(max(0, 12 - zoom)/3), docs/tiles.md) or a number replacing it at every zoom")
+                   "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
         ->capture_default_str();
     cmd.add_option("--directions", a.directions, "relief/svf/color: horizon azimuths of the visibility")
         ->capture_default_str();

@@ -62,7 +62,7 @@ std::string describe_job(const TileJob& job) {
     return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
            ",\"sun_elevation\":" + number(s.sun_elevation_deg) + ",\"z_factor\":" + number(s.z_factor) +
-           ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto\"")) +
+           ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto-native\"")) +
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
            number(s.sky.turbidity) + "}\n";
@@ -77,8 +77,16 @@ ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom
     while (std::min(dem.width, dem.height) >> (max_level + 1) >= kMinLevelTexels) ++max_level;
     ZoomShading z;
     z.level = pyramid_level_for(texel_m, ground_m, max_level);
+    // Zooms finer than the DEM's own (shaded from level 0 however far they zoom in) magnify its
+    // native zoom's tiles and show no new relief: they keep that zoom's exaggeration, so they
+    // share its source (one visibility pass) and do not fade as the map zooms in.
+    const double centre_cos = std::cos(centre.y * 3.14159265358979323846 / 180.0);
+    auto over_zoomed = [&](int pz) { return pyramid_level_for(texel_m, pixel_size_m(pz) * centre_cos, 64) == 0; };
+    int native_zoom = pixel_zoom;
+    while (native_zoom > 0 && over_zoomed(native_zoom - 1)) --native_zoom;
+    if (!over_zoomed(pixel_zoom)) native_zoom = pixel_zoom;
     z.vertical_scale = job.shading.z_factor * (job.shading.exaggeration ? *job.shading.exaggeration
-                                                                        : zoom_exaggeration(pixel_zoom));
+                                                                        : zoom_exaggeration(native_zoom));
     return z;
 }
 

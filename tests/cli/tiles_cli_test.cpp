@@ -181,6 +181,9 @@ TEST(TilesCli, ReliefTwoByTwoEqualsOne512TileOfTheZoomAbove) {
     expect_seamless(d / "s256", d / "s512", 10);
 }
 
+// The exaggeration of Anatolia's z12 tiles: that of the DEM's native zoom z10 (docs/tiles.md).
+const double kNativeExaggeration = std::exp2(2.0 / 3.0);
+
 TEST(TilesCli, HillshadeRowsEqualGdaldemOnTheTilePixels) {
     // The tile's heights with their 1-px halo, as the tile sampled them, come from
     // `tiles --debug-heights`; gdaldem with the row's Mercator z-factor must give that row.
@@ -191,11 +194,12 @@ TEST(TilesCli, HillshadeRowsEqualGdaldemOnTheTilePixels) {
     ASSERT_TRUE(fs::exists(heights));
     const Pixels tile = read_png(d / "t" / "12" / "2508" / "1555.png");
     ASSERT_EQ(tile.width, 256);
-    // Rows 0, 128, 255: z_j = cosh(y_j / R), y_j the row's pixel centre.
+    // Rows 0, 128, 255: z_j = E cosh(y_j / R), y_j the row's pixel centre, E the exaggeration:
+    // z12 is past the 90 m DEM's native zoom z10 and keeps E(10) = 2^(2/3).
     for (int j : {0, 128, 255}) {
         const double res = 2 * 20037508.342789244 / (256.0 * 4096);
         const double y = 20037508.342789244 - (1555 * 256 + j + 0.5) * res;
-        const double z = std::cosh(y / 6378137.0);
+        const double z = kNativeExaggeration * std::cosh(y / 6378137.0);
         char zs[64];
         std::snprintf(zs, sizeof zs, "%.17g", z);
         const fs::path out = d / ("gd" + std::to_string(j) + ".tif");
@@ -226,7 +230,7 @@ TEST(TilesCli, MultidirectionalRowEqualsGdaldemMultidirectional) {
     const double res = 2 * 20037508.342789244 / (256.0 * 4096);
     const double y = 20037508.342789244 - (1555 * 256 + j + 0.5) * res;
     char zs[64];
-    std::snprintf(zs, sizeof zs, "%.17g", std::cosh(y / 6378137.0));
+    std::snprintf(zs, sizeof zs, "%.17g", kNativeExaggeration * std::cosh(y / 6378137.0));
     const fs::path out = d / "gd.tif";
     ASSERT_EQ(run("gdaldem hillshade -q -multidirectional -alt 45 -z " + std::string(zs) + " " +
                   quote((d / "t" / "12-2508-1555-heights.tif").string()) + " " + quote(out.string()))

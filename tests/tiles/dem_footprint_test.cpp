@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/tiles/tile_export.hpp"
 #include "core/tiles/zoom_exaggeration.hpp"
 
 namespace ts::tiles {
@@ -61,6 +62,32 @@ TEST(ZoomExaggeration, FormulaAndLevels) {
     EXPECT_EQ(pyramid_level_for(80.0, 159.0, 5), 0);
     EXPECT_EQ(pyramid_level_for(80.0, 161.0, 5), 1);
     EXPECT_EQ(pyramid_level_for(80.0, 1e6, 5), 5);
+}
+
+// Zooms finer than the DEM's native one are magnifications of it: they shade from level 0 with
+// the native zoom's exaggeration, so they share one source; coarser zooms keep E(P).
+TEST(ZoomExaggeration, OverZoomedZoomsKeepTheNativeZoomsExaggeration) {
+    dem::Dem dem;
+    dem.width = dem.height = 1000;
+    dem.georef = anatolia();
+    dem.z.assign(std::size_t(1000) * 1000, 100.0f);
+    TileJob job;
+    // The 90 m DEM at 39.6 N: pixel zoom 10 (118 m pixels) is the coarsest shaded from level 0.
+    const ZoomShading z9 = zoom_shading(dem, job, 9), z10 = zoom_shading(dem, job, 10);
+    EXPECT_EQ(z9.level, 1);
+    EXPECT_DOUBLE_EQ(z9.vertical_scale, zoom_exaggeration(9));
+    EXPECT_EQ(z10.level, 0);
+    EXPECT_DOUBLE_EQ(z10.vertical_scale, zoom_exaggeration(10));
+    for (int pz : {11, 12, 13, 16}) {
+        const ZoomShading z = zoom_shading(dem, job, pz);
+        EXPECT_EQ(z.level, 0) << pz;
+        EXPECT_DOUBLE_EQ(z.vertical_scale, z10.vertical_scale) << pz;
+    }
+    job.shading.z_factor = 2;
+    EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 12).vertical_scale, 2 * zoom_exaggeration(10));
+    job.shading.exaggeration = 1.0;  // a constant replaces the rule at every zoom
+    EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 12).vertical_scale, 2.0);
+    EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 8).vertical_scale, 2.0);
 }
 
 }  // namespace

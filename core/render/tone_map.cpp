@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/raster/display_shared.hpp"
 #include "core/raster/srgb.hpp"
 #include "core/util/error.hpp"
 
@@ -65,11 +66,7 @@ double exposure_scale(const Exposure& e, double log_average) {
     return log_average > 0 ? e.key / log_average : 1.0;
 }
 
-float filmic(float x) {
-    x = std::max(0.0f, x);
-    const float y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
-    return std::clamp(y, 0.0f, 1.0f);
-}
+float filmic(float x) { return raster::shared::ts_filmic(x); }
 
 std::uint8_t srgb8_code(float exposed) {
     return std::uint8_t(std::lround(255.0f * raster::srgb_oetf(filmic(exposed))));

@@ -1,5 +1,10 @@
 // The flythrough's resources as every fly_* shader sees them (gpu/fly/fly_renderer.cpp fills
 // them; FrameUniforms there mirrors the Frame block field by field).
+#ifndef TS_GLSL
+#define TS_GLSL 1
+#endif
+#include "core/raster/display_shared.h"
+
 layout(std430, set = 0, binding = 0) readonly buffer Frame {
     mat4 view_projection;  // eye-relative metres -> clip (reversed Z, infinite far)
     vec4 eye;              // xyz: the eye in the grid frame's metres
@@ -37,12 +42,9 @@ vec3 sky_radiance(vec3 dir) {
     return mix(top, bottom, fv);
 }
 
-// ACES filmic (Narkowicz 2015) then the sRGB OETF: core/render/tone_map.hpp's filmic() and
-// core/raster/srgb.hpp, per channel, on exposed radiance.
+// The display transform of every 8-bit picture (core/raster/display_shared.h), per channel, on
+// exposed radiance.
 vec3 display_code(vec3 exposed) {
-    vec3 x = max(exposed, vec3(0.0));
-    vec3 f = clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-    vec3 low = 12.92 * f;
-    vec3 high = 1.055 * pow(f, vec3(1.0 / 2.4)) - 0.055;
-    return mix(low, high, step(vec3(0.0031308), f));
+    return vec3(ts_srgb_oetf(ts_filmic(exposed.r)), ts_srgb_oetf(ts_filmic(exposed.g)),
+                ts_srgb_oetf(ts_filmic(exposed.b)));
 }

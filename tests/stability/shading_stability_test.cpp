@@ -40,7 +40,7 @@ struct MapScene {
         render::NormalField normals = render::terrain_normals(grid, 2);
         render::MaterialRaster m = materials ? *materials : render::rule_materials(grid, normals);
         state = render::compute_shading_state(grid, std::move(m), std::move(normals), ro);
-        view = render::compute_view_shading(*state, render::ViewDirections{});
+        view = render::compute_view_shading(*state, map_view);
         renderer = std::make_unique<render::FrameRenderer>(*state, view);
     }
     std::vector<glm::vec3> render(const render::SunState& sun) {
@@ -52,11 +52,12 @@ struct MapScene {
     std::vector<render::ReferenceSample> reference(const render::SunState& sun, std::vector<std::size_t> texels) {
         render::ReferenceOptions ro;
         ro.threads = 2;
-        const render::ReferenceShader ref(grid, state->materials(), state->normals(), render::ViewDirections{},
-                                          std::move(texels), ro);
+        const render::ReferenceShader ref(grid, state->materials(), state->normals(), map_view, std::move(texels),
+                                          ro);
         return ref.render(*sky, sun);
     }
     const terrain::HeightGrid& grid;
+    const render::ViewDirections map_view;  // straight down; the reference keeps a reference to it
     std::unique_ptr<render::ShadingState> state;
     render::ViewShading view;
     std::unique_ptr<render::FrameRenderer> renderer;

@@ -115,18 +115,18 @@ void run_relight(const RelightArgs& a) {
                          "give --exposure EV (or --format exr) so that shards match one run");
     const std::vector<light::UtcTime> times =
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
-    std::error_code ec;
-    std::filesystem::create_directories(a.out_dir, ec);
-    if (ec || !std::filesystem::is_directory(a.out_dir))
-        throw input_error(a.out_dir, "cannot create the output directory");
-    remove_shard_marker(a.out_dir);
-
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
+    // The output directory only once the inputs are known good: a refused DEM leaves nothing.
+    std::error_code ec;
+    std::filesystem::create_directories(a.out_dir, ec);
+    if (ec || !std::filesystem::is_directory(a.out_dir))
+        throw input_error(a.out_dir, "cannot create the output directory");
+    remove_shard_marker(a.out_dir);
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;

@@ -25,6 +25,7 @@
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/staged_outputs.hpp"
+#include "core/quality/visibility_quality.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sky_integrals.hpp"
@@ -43,6 +44,7 @@ struct VisibilityOptions {
     std::string exp_method = "hybrid";
     float log_eps = visibility::kDefaultVisibilityLogEps;
     bool no_curvature = false;
+    double max_error = 0;  // --max-error: svf RMSE bound; 0 = the given settings
     std::string svf, sky_visible, horizons, sh, log_sh;
     DeviceArgs device;
 };
@@ -101,6 +103,8 @@ void run_visibility(VisibilityOptions& o) {
         throw InputError("visibility: nothing to write; give --svf, --sky-visible, --horizons, --sh or --log-sh");
     o.horizon.method = *visibility::parse_method(o.method);
     o.horizon.curvature = !o.no_curvature;
+    if (o.max_error > 0 && o.horizon.method != visibility::HorizonMethod::exact)
+        throw InputError("--max-error chooses the exact method's settings; drop --method " + o.method);
     const sh::ExpMethod exp_method = sh::parse_exp_method(o.exp_method);
     if ((!o.sh.empty() || !o.log_sh.empty()) && o.horizon.directions < 4)
         throw InputError("--sh/--log-sh: need at least 4 --directions");
@@ -125,6 +129,16 @@ void run_visibility(VisibilityOptions& o) {
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     const visibility::VisibilityGrid grid(dem);
     const std::size_t texels = std::size_t(dem.width) * dem.height;
+    if (o.max_error > 0) {
+        // Adaptive quality: the cheapest exact-sweep setting predicted under the bound for this
+        // terrain's roughness (core/quality/visibility_quality.hpp); it replaces --directions
+        // and --exact-near-field.
+        const quality::VisibilityChoice choice =
+            quality::choose_visibility(o.max_error, quality::mean_tan_slope(grid.view()));
+        o.horizon.directions = choice.setting.directions;
+        o.horizon.exact_near_field_texels = choice.setting.near_field_texels;
+        std::fprintf(stderr, "terrashade: %s\n", choice.reason.c_str());
+    }
 
     const ComputeDevice device(o.device);
     visibility::VisibilityRequest request;
@@ -218,6 +232,10 @@ void add_visibility_command(CLI::App& root) {
                     "exact: sweep lines per texel across each azimuth (2 halves the interpolation distance, 2x time)")
         ->capture_default_str()
         ->check(CLI::Range(1, 4));
+    cmd->add_option("--max-error", o->max_error,
+                    "Adaptive quality: the cheapest --directions and --exact-near-field whose predicted svf RMSE "
+                    "stays under this for the DEM's roughness (e.g. 0.001); prints what it chose and why")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--exact-near-field", o->horizon.exact_near_field_texels,
                     "exact: march each receiver's first N texels from the texel centre itself (0 = pure sweep)")
         ->capture_default_str()

@@ -132,6 +132,7 @@ void add_bench_command(CLI::App& root) {
 #ifdef TERRASHADE_HAS_GPU
     add_bench_fly_command(*bench);
 #endif
+    add_bench_report_command(*bench);
     // Further areas: add_bench_<area>_command(*bench); declared in app/bench/bench_command.hpp.
 }
 

@@ -22,5 +22,7 @@ void add_bench_spheres_command(CLI::App& bench);
 void add_bench_tiles_command(CLI::App& bench);
 // `terrashade bench fly` (bench_fly_command.cpp; GPU build only): flythrough fps and LOD figures.
 void add_bench_fly_command(CLI::App& bench);
+// bench report: every knob's time and error in one CSV (bench_report_command.cpp).
+void add_bench_report_command(CLI::App& bench);
 
 }  // namespace ts::app

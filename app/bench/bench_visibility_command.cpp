@@ -28,6 +28,7 @@
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/quality/visibility_quality.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/sky_integrals.hpp"
 #include "core/visibility/horizon_sh.hpp"
@@ -70,6 +71,7 @@ struct Row {
     double svf_rmse = kNaN, svf_p99 = kNaN, svf_rmse_constant = kNaN;
     double sky_rmse = kNaN, sky_p99 = kNaN;
     double saga_visible_rmse = kNaN, saga_svf_rmse = kNaN;  // in SAGA's definitions (see docs/visibility.md)
+    double mean_tan_slope = kNaN;  // of the window (quality::mean_tan_slope: what --max-error predicts from)
 };
 
 // Absolute errors (RMSE, 99th percentile) over the interior texels (the outermost ring has no
@@ -250,13 +252,13 @@ void write_csv(const BenchVisibilityOptions& o, const std::vector<Row>& rows) {
         std::ostringstream csv;
         csv << "dem,method,variant,width,height,directions,reference_directions,curvature,time_ms,"
                "horizon_rmse_deg,horizon_p99_deg,svf_rmse,svf_p99,svf_rmse_constant,sky_rmse,sky_p99,"
-               "saga_visible_rmse,saga_svf_rmse\n";
+               "saga_visible_rmse,saga_svf_rmse,mean_tan_slope\n";
         for (const Row& r : rows)
             csv << r.dem << ',' << r.method << ',' << r.variant << ',' << r.width << ',' << r.height << ','
                 << r.directions << ',' << o.reference_directions << ',' << (o.no_curvature ? 0 : 1) << ','
                 << csv_number(r.time_ms) << ',' << csv_number(r.horizon_rmse_deg) << ',' << csv_number(r.horizon_p99_deg) << ','
                 << csv_number(r.svf_rmse) << ',' << csv_number(r.svf_p99) << ',' << csv_number(r.svf_rmse_constant) << ',' << csv_number(r.sky_rmse)
-                << ',' << csv_number(r.sky_p99) << ',' << csv_number(r.saga_visible_rmse) << ',' << csv_number(r.saga_svf_rmse) << '\n';
+                << ',' << csv_number(r.sky_p99) << ',' << csv_number(r.saga_visible_rmse) << ',' << csv_number(r.saga_svf_rmse) << ',' << csv_number(r.mean_tan_slope) << '\n';
         write_atomically(o.csv, [&](const std::filesystem::path& tmp) {
             std::ofstream out(tmp, std::ios::binary);
             out << csv.str();
@@ -482,6 +484,7 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
         const std::string name = std::filesystem::path(path).filename().string();
         const dem::Dem win = centre_window(full, o.window);
         const visibility::VisibilityGrid grid(win);
+        const double roughness = quality::mean_tan_slope(grid.view());
 
         visibility::HorizonOptions ref_opts;
         ref_opts.method = visibility::HorizonMethod::raymarch;
@@ -522,6 +525,7 @@ void run_bench_visibility(const BenchVisibilityOptions& o) {
                     const visibility::HorizonSet set = visibility::compute_horizons(grid.view(), ho);
                     Row r;
                     r.time_ms = t0.milliseconds();
+                    r.mean_tan_slope = roughness;
                     r.dem = name;
                     r.method = m;
                     r.variant = variant;

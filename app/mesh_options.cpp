@@ -72,6 +72,11 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
                  "Sum the spheres' log-SH unweighted (default: scaled so the kept caps claim at most the hemisphere)");
     cmd.add_flag("--no-hemisphere-cull", a.no_hemisphere_cull,
                  "Keep spheres wholly below a texel's tangent plane (default: dropped)");
+    cmd.add_flag("--no-mesh-terrain-shadow", a.no_mesh_terrain_shadow,
+                 "Perspective views: light the drawn meshes under the open sky (default: the terrain's horizons from "
+                 "each vertex darken them and hide the sun)");
+    cmd.add_flag("--no-mesh-self-shadow", a.no_mesh_self_shadow,
+                 "Perspective views: the drawn meshes are not shadowed by their own spheres (default: they are)");
     cmd.add_option("--sphere-cache-dir", a.cache_dir,
                    "Where sphere decompositions are cached (default $XDG_CACHE_HOME/terrashade/spheres)");
 }
@@ -139,7 +144,7 @@ std::vector<render::SceneMesh> load_scene_meshes(const std::vector<MeshSpec>& sp
         const blockers::SphereDecomposition spheres = blockers::decompose_cached(m, d, cache);
         std::printf("mesh %s: %zu triangles, %zu spheres (%s), scale %g\n", s.file.c_str(), m.triangle_count(),
                     spheres.spheres.size(), spheres.cached ? "cached" : "decomposed now", s.placement.scale);
-        meshes.push_back({s.file, s.placement, spheres.spheres});
+        meshes.push_back({s.file, s.placement, spheres.spheres, std::make_shared<const mesh::TriangleMesh>(m)});
     }
     return meshes;
 }

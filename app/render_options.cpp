@@ -156,6 +156,8 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     parse_mesh_specs(a.meshes);  // everything about --mesh that needs no DEM, checked now
     o.blocker_options = blocker_options(a.meshes);
+    o.mesh_terrain_shadow = !a.meshes.no_mesh_terrain_shadow;
+    o.mesh_self_shadow = !a.meshes.no_mesh_self_shadow;
     return o;
 }
 
@@ -173,6 +175,11 @@ void attach_meshes(const RenderArgs& a, const dem::Dem& dem, render::SceneOption
 
 void print_stages(const RenderArgs& a, const render::Scene& scene) {
     for (const std::string& w : scene.warnings()) std::fprintf(stderr, "terrashade: warning: %s\n", w.c_str());
+    for (const auto& lit : scene.mesh_lighting())
+        std::printf("mesh %s: drawn lit per vertex (%zu corners, %zu distinct points), %.3f s\n",
+                    lit->mesh().name.c_str(), lit->mesh().corners(), lit->distinct_points(), lit->seconds());
+    if (const render::MeshView* mv = scene.mesh_view())
+        std::printf("meshes cover %zu pixels of the view\n", mv->covered_pixels());
     if (!a.device.verbose) return;
     for (const visibility::VisibilityStage& s : scene.state().visibility_stages())
         std::printf("stage: %s on %s, %.3f s\n", s.label.c_str(), s.path.c_str(), s.seconds);

@@ -22,4 +22,6 @@ $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky data/sunset_syn
 # The same noon as a map (the whole DEM, top-down), downsampled to 240x240 to stay small
 # (400x400 gave 298 KB: a map has far more detail per pixel than the hazy perspective views).
 $ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --out "$out/noon_map.png"
+# The mesh pictures (the Cessna and the milk truck with their shadows).
+scripts/gallery_mesh_shadow.sh "$ts"
 ls -l "$out"

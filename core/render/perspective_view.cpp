@@ -212,6 +212,7 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     const double half = std::tan(radians(0.5 * camera.fov_deg));
     const double aspect = double(options_.height) / options_.width;
     const double nudge = 1e-4 * std::min(dx, dy);
+    frame_ = {cam_, dx, dy, curv, forward, right, up, half, half * aspect};
     pixels_.assign(std::size_t(options_.width) * options_.height, Pixel{});
 
     parallel_rows(options_.height, options_.threads, options_.width * 400LL, [&](int j0, int j1) {
@@ -229,7 +230,8 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                     continue;
                 }
                 if (hl < 1e-9) {  // straight down (or up)
-                    if (d.z < 0 && inside) px_out.x = float(cam_.x), px_out.y = float(cam_.y);
+                    if (d.z < 0 && inside)
+                        px_out.x = float(cam_.x), px_out.y = float(cam_.y), px_out.distance = float(cam_.z - ground);
                     continue;
                 }
                 Ray ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, curv};
@@ -251,6 +253,7 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                 if (s < 0) continue;
                 px_out.x = float(ray.x0 + s * ray.ux), px_out.y = float(ray.y0 + s * ray.uy);
                 const double distance = s / hl;
+                px_out.distance = float(distance);
                 px_out.transmittance =
                     options_.haze_distance_m > 0 ? float(std::exp(-distance / options_.haze_distance_m)) : 1.0f;
             }
@@ -272,6 +275,16 @@ std::vector<glm::vec3> PerspectiveView::view_directions() const {
             v[g.index(c, r)] = len > 0 ? glm::vec3(float(e / len), float(n / len), float(up / len)) : glm::vec3(0, 0, 1);
         }
     return v;
+}
+
+glm::vec3 PerspectiveView::haze(const glm::vec3& c, const glm::vec3& dir, double distance, const SkyTable& sky) const {
+    if (!(options_.haze_distance_m > 0)) return c;
+    const float t = float(std::exp(-distance / options_.haze_distance_m));
+    const float hl = std::hypot(dir.x, dir.y);
+    const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
+    const glm::vec3 horizon =
+        hl > 0 ? glm::vec3(dir.x / hl * c_lift, dir.y / hl * c_lift, kHorizonLift) : glm::vec3(0, 0, 1);
+    return c * t + sky.lookup(horizon) * (1 - t);
 }
 
 std::size_t PerspectiveView::hit_count() const {

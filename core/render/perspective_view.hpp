@@ -10,6 +10,7 @@
 // highest of each patch's 4 corners, then 2x2 maxima, terrain::downsample_2x2) lets a ray skip
 // any cell it passes above; inside a level-0 patch the crossing is bracketed by sub-steps
 // and refined by bisection.
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -71,10 +72,27 @@ public:
     void compose(const glm::vec3* texel_radiance, const SkyTable& sky, const glm::vec3& sun_dir,
                  const glm::vec3& sun_radiance, double sun_cos_radius, std::vector<glm::vec3>& image) const;
 
+    // The camera's frame, for drawing other geometry into the same picture (mesh_view.hpp):
+    // position in (texel-centre col, row, height m), the ENU metres per texel at its row, the
+    // curvature factor, its axes and the half-extents of the image plane at unit distance.
+    struct Frame {
+        glm::dvec3 position{0.0};
+        double dx = 1, dy = 1, curvature = 0;
+        glm::dvec3 forward{0, 1, 0}, right{1, 0, 0}, up{0, 0, 1};
+        double half_width = 1, half_height = 1;
+    };
+    const Frame& frame() const { return frame_; }
+    // Distance in metres along pixel k's ray to the terrain (infinity where it misses).
+    float terrain_distance(std::size_t k) const { return pixels_[k].distance; }
+    glm::vec3 ray_direction(std::size_t k) const { return pixels_[k].dir; }
+    // A surface's radiance `c` at `distance` along a ray `dir` seen through the haze.
+    glm::vec3 haze(const glm::vec3& c, const glm::vec3& dir, double distance, const SkyTable& sky) const;
+
 private:
     struct Pixel {
         float x = -1, y = -1;        // hit in texel-centre coordinates, x < 0 = miss
         float transmittance = 1;     // haze
+        float distance = std::numeric_limits<float>::infinity();  // to the hit along the ray, metres
         glm::vec3 dir{0, 0, 1};      // ray direction (ENU)
     };
     const terrain::HeightGrid& grid_;
@@ -83,6 +101,7 @@ private:
     bool below_terrain_ = false;
     double ground_m_ = 0;
     std::vector<Pixel> pixels_;
+    Frame frame_;
 };
 
 }  // namespace ts::render

@@ -89,12 +89,39 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
             break;
         }
     }
+    if (auto* camera = dynamic_cast<CameraTarget*>(target_.get())) attach_mesh_views(camera->view());
     state_ = compute_shading_state(*grid_, std::move(materials), std::move(normals), options_.renderer);
     view_ = compute_view_shading(*state_, target_->view_directions());
     renderer_ = std::make_unique<FrameRenderer>(*state_, view_);
 }
 
 Scene::~Scene() = default;
+
+void Scene::attach_mesh_views(const PerspectiveView& view) {
+    MeshLightingOptions lo;
+    lo.directions = options_.renderer.directions;
+    lo.curvature = options_.renderer.curvature;
+    lo.terrain_log_eps = options_.renderer.visibility_log_eps;
+    lo.brdf_log_eps = options_.renderer.brdf_log_eps;
+    lo.terrain_shadow = options_.mesh_terrain_shadow;
+    lo.self_shadow = options_.mesh_self_shadow;
+    lo.threads = options_.renderer.threads;
+    std::vector<const PlacedMesh*> placed;
+    for (std::size_t k = 0; k < options_.meshes.size(); ++k) {
+        const SceneMesh& m = options_.meshes[k];
+        if (!m.triangles || m.triangles->triangle_count() == 0) continue;
+        const glm::dvec2 anchor = mesh_anchor(dem_.georef, m.placement, m.name);
+        const double ground = ground_height(*grid_, anchor);
+        PlacedMesh pm = place_mesh(*m.triangles, m.placement, anchor, std::isnan(ground) ? 0.0 : ground, m.name);
+        const blockers::PlacedSpheres* spheres = k < blockers_.meshes.size() ? &blockers_.meshes[k] : nullptr;
+        mesh_lighting_.push_back(
+            std::make_unique<MeshLighting>(*grid_, std::move(pm), spheres, options_.blocker_options, lo));
+        placed.push_back(&mesh_lighting_.back()->mesh());
+    }
+    if (placed.empty()) return;
+    mesh_view_ = std::make_unique<MeshView>(*grid_, view, placed, options_.renderer.curvature);
+    mesh_radiance_.resize(placed.size());
+}
 
 const Camera* Scene::camera() const {
     const auto* c = dynamic_cast<const CameraTarget*>(target_.get());
@@ -148,6 +175,17 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     renderer_->render(*sky_, sun, texel_radiance_);
     stretch(texel_radiance_);
     target_->compose(texel_radiance_, *sky_, image);
+    if (mesh_view_) {
+        const auto* camera = dynamic_cast<const CameraTarget*>(target_.get());
+        const light::SkySh sky_sh = light::project_sky_sh(*sky_);
+        const light::SunDisc disc = sky_->sun();
+        const glm::vec3 e = disc.irradiance;
+        const bool sun_up = (e.x > 0 || e.y > 0 || e.z > 0) &&
+                            sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
+        for (std::size_t m = 0; m < mesh_lighting_.size(); ++m)
+            mesh_lighting_[m]->radiance(sky_sh, disc, sun_up, mesh_radiance_[m]);
+        mesh_view_->compose(mesh_radiance_, camera->sky_table(), image.rgb);
+    }
 }
 
 void check_image_extension(const std::string& path) {

@@ -14,6 +14,8 @@
 #include "core/light/utc_time.hpp"
 #include "core/render/frame_renderer.hpp"
 #include "core/material/material.hpp"
+#include "core/render/mesh_lighting.hpp"
+#include "core/render/mesh_view.hpp"
 #include "core/render/perspective_view.hpp"
 #include "core/render/render_target.hpp"
 #include "core/render/scene_blockers.hpp"
@@ -64,6 +66,11 @@ struct SceneOptions {
     // Meshes over the DEM: their spheres shadow the terrain's sky and sun (docs/blockers.md).
     std::vector<SceneMesh> meshes;
     blockers::SphereBlockerOptions blocker_options;
+    // Perspective views draw the meshes that have triangles, lit per vertex by the terrain's
+    // horizons from them and shadowed by their own spheres (mesh_lighting.hpp); these turn the
+    // two parts off.
+    bool mesh_terrain_shadow = true;
+    bool mesh_self_shadow = true;
 };
 
 // Where the sun is computed for a DEM: its centre (lon/lat from its georef) at its mean height.
@@ -107,8 +114,14 @@ public:
     // (one line each: a mesh below the terrain).
     const blockers::SphereBlockers& blockers() const { return blockers_; }
     const std::vector<std::string>& warnings() const { return warnings_; }
+    // Perspective views: each drawn mesh's per-vertex lighting, and where they cover the view.
+    const std::vector<std::unique_ptr<MeshLighting>>& mesh_lighting() const { return mesh_lighting_; }
+    const MeshView* mesh_view() const { return mesh_view_.get(); }
 
 private:
+    // Perspective views: per-vertex lighting of the meshes with triangles, rasterised into `view`.
+    void attach_mesh_views(const PerspectiveView& view);
+
     const dem::Dem& dem_;
     SceneOptions options_;
     std::unique_ptr<terrain::HeightGrid> grid_;
@@ -121,6 +134,9 @@ private:
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
     ReliefContrastApplied last_relief_;
+    std::vector<std::unique_ptr<MeshLighting>> mesh_lighting_;
+    std::unique_ptr<MeshView> mesh_view_;
+    std::vector<std::vector<glm::vec3>> mesh_radiance_;  // per frame, per mesh
 };
 
 // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.

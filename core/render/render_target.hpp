@@ -93,6 +93,8 @@ public:
     void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) override;
     const PerspectiveView& view() const { return view_; }
     const Camera& camera() const { return camera_; }
+    // The sky as the last compose() tabulated it (the haze over meshes drawn into the picture).
+    const SkyTable& sky_table() const { return sky_table_; }
 
 private:
     Camera camera_;

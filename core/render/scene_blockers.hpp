@@ -2,6 +2,7 @@
 // Meshes standing over a DEM, turned into the sphere blockers the visibility and the sun
 // shadows read (core/blockers/placed_spheres.hpp): each placement's lon/lat becomes the anchor
 // of its frame on the grid, an `agl` height is added to the terrain's height there.
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "core/blockers/placed_spheres.hpp"
 #include "core/geo/georef.hpp"
 #include "core/mesh/placement.hpp"
+#include "core/mesh/triangle_mesh.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {
@@ -19,6 +21,9 @@ struct SceneMesh {
     std::string name;  // the mesh file, for messages
     mesh::Placement placement;
     std::vector<blockers::Sphere> model_spheres;
+    // Its triangles and materials (normalised model frame), for drawing it in perspective views
+    // lit per vertex (mesh_lighting.hpp); null: only its shadows.
+    std::shared_ptr<const mesh::TriangleMesh> triangles;
 };
 
 // Texel-centre coordinates (col, row) of the placement's lon/lat. Throws ts::InputError naming

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/geo/azimuth.hpp"
+#include "core/render/diffuse_band_correction.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/material/log_brdf.hpp"
@@ -16,35 +17,6 @@
 #include "core/util/stopwatch.hpp"
 
 namespace ts::render {
-namespace {
-
-// RendererOptions::band_correction: scales each SH band of the diffuse transfer t ([16][texels])
-// so that a texel with nothing blocking gets the projected clamped cosine / pi exactly.
-void correct_diffuse_bands(const std::array<float, 4>& lobe, const TransferInputs& like, std::vector<float>& t) {
-    std::array<float, 16> v0{};
-    const std::array<float, 3> z = {0, 0, 1};
-    TransferInputs in = like;
-    in.texels = 1;
-    in.log_visibility = v0.data();
-    in.lobe_axis = z.data();
-    in.lobe_log_zh = lobe.data();
-    in.uniform_lobe = true;
-    in.threads = 1;
-    std::array<float, 16> e{};
-    transfer_vectors(in, e.data());  // about the z axis: the ZH of exp(F) sits at the m = 0 entries
-    const double pi = std::numbers::pi;
-    const double c[4] = {std::sqrt(pi) / 2 / pi, std::sqrt(pi / 3) / pi, std::sqrt(5 * pi) / 8 / pi, 0.0};
-    float scale[4];
-    for (int l = 0; l < 4; ++l) scale[l] = l == 3 ? 0.0f : float(c[l] / e[std::size_t(l * l + l)]);
-    const std::size_t n = t.size() / 16;
-    for (int l = 0; l < 4; ++l)
-        for (int m = -l; m <= l; ++m) {
-            float* p = t.data() + std::size_t(l * l + l + m) * n;
-            for (std::size_t k = 0; k < n; ++k) p[k] *= scale[l];
-        }
-}
-
-}  // namespace
 
 glm::dvec3 sun_direction(const SunState& sun) {
     return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(sun.azimuth_deg),
@@ -110,7 +82,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
         std::vector<float> t_diffuse(16 * texels);
         if (backend) backend->transfer_vectors(in, t_diffuse.data());
         else transfer_vectors(in, t_diffuse.data());
-        if (options.band_correction) correct_diffuse_bands(lobe, in, t_diffuse);
+        if (options.band_correction) correct_diffuse_bands(lobe, in.method, t_diffuse.data(), texels);
         if (backend) {
             s.diffuse_field_ = backend->keep_transfer(t_diffuse.data(), texels);
         } else {

@@ -77,6 +77,48 @@ TEST(RenderMeshCli, TheCessnasShadowDarkensTheTerrainAwayFromTheSun) {
     EXPECT_EQ(brighter, 0);
 }
 
+// The covered-pixel count `render` prints for the meshes drawn in a perspective view.
+long covered_pixels(const std::string& out) {
+    const std::string key = "meshes cover ";
+    const auto at = out.find(key);
+    return at == std::string::npos ? -1 : std::stol(out.substr(at + key.size()));
+}
+
+TEST(RenderMeshCli, APerspectiveViewDrawsTheCessnaAndHidesOneBelowTheTerrain) {
+    const auto dir = temp_dir("render_mesh_view");
+    const auto plain = dir / "plain.png", with = dir / "with.png", buried = dir / "buried.png";
+    const std::string view = " --view perspective --camera 5.70,45.17,1200,40,-10,40 --size 320x180";
+    const std::string cache = " --sphere-cache-dir " + quote((dir / "cache").string());
+    const Result a = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + view + " --out " + quote(plain.string())));
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const Result b = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + view + " --mesh " + quote(kCessna) +
+                                " --at 5.75,45.20,400agl --hpr 45,0,0 --scale 60 --spheres 32" + cache + " --out " +
+                                quote(with.string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.out.find("drawn lit per vertex"), std::string::npos) << b.out;
+    const long covered = covered_pixels(b.out);
+    EXPECT_GT(covered, 30) << b.out;
+    const Image p = read_png(plain), m = read_png(with);
+    ASSERT_EQ(p.px.size(), m.px.size());
+    long changed = 0;
+    for (std::size_t i = 0; i < p.px.size(); i += std::size_t(p.channels)) {
+        int d = 0;
+        for (int k = 0; k < p.channels; ++k) d = std::max(d, std::abs(int(p.px[i + k]) - int(m.px[i + k])));
+        changed += d > 8;
+    }
+    std::printf("aircraft: %ld pixels covered, %ld pixels changed by more than 8 codes\n", covered, changed);
+    // The aircraft's pixels and its shadows, not the whole picture.
+    EXPECT_GE(changed, covered / 2);
+    EXPECT_LT(changed, long(p.w) * p.h / 4);
+    // 300 m under the terrain: a warning, a picture, no mesh pixel shown.
+    const Result c = run(ts_cmd("render " + quote(kDem) + kCrop + kLight + view + " --mesh " + quote(kCessna) +
+                                " --at 5.75,45.20,-300agl --scale 60 --spheres 32" + cache + " --out " +
+                                quote(buried.string())));
+    ASSERT_EQ(c.exit_code, 0) << c.err;
+    EXPECT_NE(c.err.find("below the terrain"), std::string::npos) << c.err;
+    EXPECT_EQ(covered_pixels(c.out), 0) << c.out;
+}
+
 TEST(RenderMeshCli, BadMeshFlagsExitTwoWithOneLine) {
     const auto dir = temp_dir("render_mesh_bad");
     const std::string out = " --out " + quote((dir / "x.png").string());

@@ -9,31 +9,14 @@
 #include "tests/render/frame_stack.hpp"
 #include "core/util/angles.hpp"
 #include "core/visibility/visibility_backend.hpp"
+#include "tests/render/uniform_sky.hpp"
 
 namespace ts::render {
 namespace {
 
 using Renderer = testing::FrameStack;
 
-// A test sky: uniform radiance L over the upper hemisphere, black below, and a sun disc of
-// the given irradiance (0 = no sun).
-class UniformSky : public light::Sky {
-public:
-    UniformSky(float radiance, glm::dvec3 sun_dir, float sun_irradiance) : l_(radiance), sun_dir_(sun_dir), e_(sun_irradiance) {}
-    light::Rgb radiance(const glm::dvec3& d) const override { return light::Rgb(d.z > 0 ? l_ : 0.0f); }
-    light::SunDisc sun() const override {
-        light::SunDisc s;
-        s.direction = sun_dir_;
-        s.irradiance = light::Rgb(e_);
-        return s;
-    }
-    std::string describe() const override { return "uniform test sky"; }
-
-private:
-    float l_;
-    glm::dvec3 sun_dir_;
-    float e_;
-};
+using testing::UniformSky;
 
 struct Terrain {
     int w, h;

@@ -18,27 +18,13 @@
 #include "core/sh/sphere_quadrature.hpp"
 #include "core/util/angles.hpp"
 #include "core/visibility/horizon_sh.hpp"
+#include "tests/render/uniform_sky.hpp"
 
 namespace ts::render {
 namespace {
 
 // Uniform radiance 1 over the upper hemisphere and a sun disc of irradiance e.
-class UniformSky : public light::Sky {
-public:
-    UniformSky(glm::dvec3 sun_dir, float e) : sun_dir_(sun_dir), e_(e) {}
-    light::Rgb radiance(const glm::dvec3& d) const override { return light::Rgb(d.z > 0 ? 1.0f : 0.0f); }
-    light::SunDisc sun() const override {
-        light::SunDisc s;
-        s.direction = sun_dir_;
-        s.irradiance = light::Rgb(e_);
-        return s;
-    }
-    std::string describe() const override { return "uniform test sky"; }
-
-private:
-    glm::dvec3 sun_dir_;
-    float e_;
-};
+using testing::UniformSky;
 
 struct Terrain {
     std::vector<float> z;

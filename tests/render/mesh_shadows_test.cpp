@@ -21,27 +21,13 @@
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/visibility_backend.hpp"
 #include "tests/render/frame_stack.hpp"
+#include "tests/render/uniform_sky.hpp"
 
 namespace ts::render {
 namespace {
 
 // Uniform radiance over the upper hemisphere and a sun disc of the given irradiance.
-class UniformSky : public light::Sky {
-public:
-    UniformSky(glm::dvec3 sun_dir, float sun_irradiance) : sun_dir_(sun_dir), e_(sun_irradiance) {}
-    light::Rgb radiance(const glm::dvec3& d) const override { return light::Rgb(d.z > 0 ? 1.0f : 0.0f); }
-    light::SunDisc sun() const override {
-        light::SunDisc s;
-        s.direction = sun_dir_;
-        s.irradiance = light::Rgb(e_);
-        return s;
-    }
-    std::string describe() const override { return "uniform test sky"; }
-
-private:
-    glm::dvec3 sun_dir_;
-    float e_;
-};
+using testing::UniformSky;
 
 struct Flat {
     int w, h;

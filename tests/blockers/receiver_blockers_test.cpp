@@ -41,7 +41,7 @@ PlacedSpheres slab(int nx, int ny, int nz) {
     return m;
 }
 
-// Share of 40k directions, spread evenly over the cap that `bound` (relative to the receiver at
+// Share of 12k directions, spread evenly over the cap that `bound` (relative to the receiver at
 // the origin, not containing it) subtends, that meet one of the spheres: their union's solid
 // angle, in units of the cap's.
 double union_share(const std::vector<Sphere>& spheres, const Sphere& bound) {
@@ -50,7 +50,7 @@ double union_share(const std::vector<Sphere>& spheres, const Sphere& bound) {
     const glm::dvec3 u = glm::normalize(glm::cross(w, std::abs(w.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
     const glm::dvec3 v = glm::cross(w, u);
     const double cos_cap = std::sqrt(1.0 - bound.radius * bound.radius / (dist * dist));
-    const int n = 40000;
+    const int n = 12000;
     int hit = 0;
     for (int i = 0; i < n; ++i) {
         const double z = 1.0 - (1.0 - cos_cap) * (i + 0.5) / n, rho = std::sqrt(1.0 - z * z);

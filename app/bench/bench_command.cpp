@@ -128,6 +128,7 @@ void add_bench_command(CLI::App& root) {
     add_bench_transfer_command(*bench);
     add_bench_sun_command(*bench);
     add_bench_spheres_command(*bench);
+    add_bench_blockers_command(*bench);
     add_bench_tiles_command(*bench);
 #ifdef TERRASHADE_HAS_GPU
     add_bench_fly_command(*bench);

@@ -18,6 +18,8 @@ void add_bench_transfer_command(CLI::App& bench);
 void add_bench_sun_command(CLI::App& bench);
 // `terrashade bench spheres` (bench_spheres_command.cpp): sphere decomposition vs count.
 void add_bench_spheres_command(CLI::App& bench);
+// Mesh blockers against the ray-traced triangles; throughput; a moving aircraft.
+void add_bench_blockers_command(CLI::App& bench);
 // `terrashade bench tiles` (bench_tiles_command.cpp): tiles/s per style, and gdaldem + gdal2tiles.
 void add_bench_tiles_command(CLI::App& bench);
 // `terrashade bench fly` (bench_fly_command.cpp; GPU build only): flythrough fps and LOD figures.

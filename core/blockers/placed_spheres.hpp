@@ -22,11 +22,11 @@
 namespace ts::blockers {
 
 struct SphereBlockerOptions {
-    // A mesh's spheres add their log-SH to a texel only while the mesh's bounding sphere subtends
-    // more than this there (steradians): 0.01 sr hides at most 0.01 / pi = 0.3% of a texel's
-    // cosine-weighted sky, and bounds the sky footprint to a disc of radius r / sin(theta_min)
-    // around the bounding sphere. The mesh's, not each sphere's: finer decompositions keep
-    // their shadow.
+    // Sphere solid-angle threshold (steradians), applied down the sphere hierarchy as a level
+    // of detail (receiver_blockers.hpp): a sphere, or the finest hierarchy node whose spheres
+    // are each below it, counts while it subtends more than this. 0.01 sr hides at most
+    // 0.01 / pi = 0.3% of a texel's cosine-weighted sky per dropped part, and bounds the sky
+    // footprint to a disc of radius r / sin(theta_min) around the bounding sphere.
     double min_solid_angle_sr = 0.01;
     RatioAttenuation attenuation;  // culling below the tangent plane and the solid-angle ratio
     // Log-visibility inside a sphere's cap. Not the terrain's floor (log 0.1): an order-4 SH

@@ -8,30 +8,74 @@
 
 namespace ts::blockers {
 
+namespace {
+
+// Whether sphere s subtends more than the threshold from the origin (the receiver), or holds it.
+bool significant(const Sphere& s, double min_sine) {
+    const double d2 = glm::dot(s.center, s.center);
+    return d2 <= s.radius * s.radius || s.radius / std::sqrt(d2) > min_sine;
+}
+
+}  // namespace
+
 void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
                           double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out) {
-    if (mesh.hierarchy.nodes.empty()) return;
-    // The threshold is the mesh's: its bounding sphere (the root) must subtend more than it. Per
-    // sphere, a finer decomposition would lose shadow: 512 small spheres fall below a threshold
-    // their union is far above. The root's cone holds every sphere's, so no sphere of a mesh
-    // that fails could pass.
-    const Sphere& root = mesh.hierarchy.nodes[0].bound;
-    const glm::dvec3 rv = root.center - receiver;
-    const double rd2 = glm::dot(rv, rv);
-    if (rd2 > root.radius * root.radius && root.radius / std::sqrt(rd2) <= min_sine) return;
-    auto keep = [&](const Sphere& s) {
+    const std::vector<SphereNode>& nodes = mesh.hierarchy.nodes;
+    if (nodes.empty()) return;
+    auto rel = [&](const Sphere& s) { return Sphere{s.center - receiver, s.radius}; };
+    auto above_plane = [&](const Sphere& s) {  // s relative to the receiver
         if (!options.cull_lower_hemisphere) return true;
-        const glm::dvec3 v = s.center - receiver;
-        const double d2 = glm::dot(v, v);
+        const double d2 = glm::dot(s.center, s.center);
         if (d2 <= s.radius * s.radius) return true;  // inside: the whole sphere of directions
         const double d = std::sqrt(d2);
         // Cap wholly below the tangent plane: the angle to the normal exceeds 90 deg + theta_b.
-        return !(glm::dot(v, normal) / d < -s.radius / d);
+        return !(glm::dot(s.center, normal) / d < -s.radius / d);
     };
-    visit_leaves(mesh.hierarchy, keep, [&](int i) {
-        const Sphere& s = mesh.spheres[std::size_t(i)];
-        out.push_back({s.center - receiver, s.radius});
-    });
+    // Every leaf below node i that reaches above the plane: the node is significant while its
+    // spheres alone are not, so they count together (their union matters).
+    auto emit_all = [&](int i) {
+        int stack[64];
+        int top = 0;
+        stack[top++] = i;
+        while (top > 0) {
+            const SphereNode& n = nodes[std::size_t(stack[--top])];
+            if (!above_plane(rel(n.bound))) continue;
+            if (n.is_leaf()) {
+                out.push_back(rel(mesh.spheres[std::size_t(n.sphere)]));
+                continue;
+            }
+            stack[top++] = n.right;
+            stack[top++] = n.left;
+        }
+    };
+    // Level of detail: walk down through significant nodes. A child below the threshold whose
+    // sibling is above it is a small part beside a large one: dropped (its whole subtree
+    // subtends less than the threshold). A node whose two children are both below it is the
+    // finest piece that still matters: all its spheres count, however small each is. So a
+    // sphere above the threshold always counts, and a finer decomposition keeps the shadow of
+    // the pieces a coarser one keeps: the dropped parts are set by the mesh's shape at the
+    // threshold's scale, not by the sphere count.
+    if (!significant(rel(nodes[0].bound), min_sine)) return;
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const int i = stack[--top];
+        const SphereNode& n = nodes[std::size_t(i)];
+        if (!above_plane(rel(n.bound))) continue;
+        if (n.is_leaf()) {
+            out.push_back(rel(mesh.spheres[std::size_t(n.sphere)]));
+            continue;
+        }
+        const bool left = significant(rel(nodes[std::size_t(n.left)].bound), min_sine);
+        const bool right = significant(rel(nodes[std::size_t(n.right)].bound), min_sine);
+        if (!left && !right) {
+            emit_all(i);
+            continue;
+        }
+        if (right) stack[top++] = n.right;
+        if (left) stack[top++] = n.left;
+    }
 }
 
 double sun_visible_past(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& sun,

@@ -10,11 +10,14 @@
 
 namespace ts::blockers {
 
-// Appends the mesh's spheres, when its bounding sphere's cap subtends more than the threshold
-// (min_cap_sine: sin theta_b > min_sine, or the receiver inside), that with
-// options.cull_lower_hemisphere reach above the plane of `normal`, with their centres relative
-// to the receiver (so the receiver is the origin). The plane test is inherited by the spheres
-// inside a sphere, so whole subtrees are skipped.
+// Appends the mesh's spheres that count for the receiver's sky, with their centres relative
+// to the receiver (so the receiver is the origin). The threshold (min_sine: a sphere counts
+// when sin theta_b > min_sine, or the receiver is inside it) is applied down the hierarchy as a
+// level of detail: a sphere above it always counts; a subtree below it is dropped when its
+// sibling is above it; a node above it whose two children are both below it counts all its
+// spheres, so a finer decomposition keeps the shadow of the pieces a coarser one keeps
+// (docs/blockers.md). With options.cull_lower_hemisphere, spheres wholly below the plane of
+// `normal` are dropped, whole subtrees at once.
 void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
                           double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out);
 

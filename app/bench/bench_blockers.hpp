@@ -1,0 +1,33 @@
+#pragma once
+// `terrashade bench blockers` (bench_blockers_command.cpp) and its moving-aircraft part
+// (bench_blockers_motion.cpp).
+#include <string>
+#include <vector>
+
+namespace ts::app {
+
+struct BenchBlockersOptions {
+    std::string dem = "../shared/data/dem/srtm3_N39E040_1000px.tif";
+    std::string mesh = "../shared/data/meshes/c172p.ac";
+    std::vector<double> at = {40.40, 39.60, 600.0};  // lon, lat, metres above the ground
+    std::vector<double> hpr = {60.0, 0.0, 0.0};
+    double scale = 200.0;  // the 9.6 m Cessna is a tenth of a 90 m texel: scaled to span ~20
+    double sun_az = 240.0, sun_el = 30.0;
+    std::vector<int> counts = {8, 16, 32, 64, 128, 256, 512};
+    int directions = 32;
+    int sky_strata = 24;
+    int sun_samples = 64;
+    int threads = 2;
+    std::string csv;
+    // The moving aircraft: spheres over a 1000 x 1000 DEM, frames along a straight path.
+    std::string motion_dem = "../shared/data/dem/srtm3_N39E040_1000px.tif";
+    int motion_spheres = 400;
+    int motion_frames = 8;
+};
+
+// Per-frame cost of the mesh moving over motion_dem: the footprints of the old and new place
+// recomputed through the sphere hierarchy, against every sphere tested at every footprint
+// texel (no hierarchy), and the sphere-texel pairs per second of both.
+void run_blocker_motion_bench(const BenchBlockersOptions& o);
+
+}  // namespace ts::app

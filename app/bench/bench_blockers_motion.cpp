@@ -1,0 +1,150 @@
+// `terrashade bench blockers`, second part: a 400-sphere aircraft flying over a 1000 x 1000 DEM.
+// Per frame the sky log-SH of the texels in the old footprint is restored and the new
+// footprint's recomputed, and the sun shadow applied: through the sphere hierarchy (threshold
+// and tangent-plane culling of whole subtrees, blocker_log_sh.hpp), and as a flat loop that
+// tests every sphere at every footprint texel (the same footprint, no hierarchy, every sphere
+// above the plane kept: what a brute-force kernel over texels x spheres does).
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "app/bench/bench_blockers.hpp"
+#include "core/blockers/receiver_blockers.hpp"
+#include "core/blockers/sphere_decomposition.hpp"
+#include "core/dem/read_dem.hpp"
+#include "core/mesh/mesh_import.hpp"
+#include "core/render/scene_blockers.hpp"
+#include "core/terrain/dem_height_grid.hpp"
+#include "core/terrain/terrain_normals.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/util/stopwatch.hpp"
+#include "core/visibility/blocker_footprint.hpp"
+#include "core/visibility/blocker_log_sh.hpp"
+#include "core/visibility/blocker_sun_shadow.hpp"
+#include "core/visibility/earth_curvature.hpp"
+
+namespace ts::app {
+namespace {
+
+// Restores the base log-SH in `rect` (the footprint the mesh leaves).
+void restore(const std::vector<float>& base, std::vector<float>& log_sh, const visibility::TexelRect& rect, int width,
+             std::size_t texels) {
+    if (rect.empty()) return;
+    for (int i = 0; i < 16; ++i)
+        for (int r = rect.row0; r < rect.row1; ++r) {
+            const std::size_t a = std::size_t(i) * texels + std::size_t(r) * width + rect.col0;
+            std::copy(base.begin() + std::ptrdiff_t(a), base.begin() + std::ptrdiff_t(a + (rect.col1 - rect.col0)),
+                      log_sh.begin() + std::ptrdiff_t(a));
+        }
+}
+
+// Every sphere above the texel's tangent plane, at every texel of the footprint: no hierarchy.
+long long add_flat(const terrain::HeightGrid& g, const render::NormalField& normals, const blockers::SphereBlockers& b,
+                   const visibility::TexelRect& rect, double curvature, int threads, std::vector<float>& log_sh) {
+    const blockers::PlacedSpheres& m = b.meshes[0];
+    const std::size_t texels = std::size_t(g.width) * g.height;
+    std::atomic<long long> pairs{0};
+    parallel_rows(rect.row1 - rect.row0, threads, (long long)(rect.col1 - rect.col0) * (long long)m.spheres.size() * 50,
+                  [&](int b0, int e0) {
+                      std::vector<blockers::Sphere> rel;
+                      long long p = 0;
+                      for (int r = rect.row0 + b0; r < rect.row0 + e0; ++r)
+                          for (int c = rect.col0; c < rect.col1; ++c) {
+                              const glm::dvec3 q = visibility::receiver_in_anchor_frame(g, c, r, m, curvature);
+                              const std::size_t t = std::size_t(r) * g.width + c;
+                              const glm::dvec3 n(normals.x[t], normals.y[t], normals.z[t]);
+                              rel.clear();
+                              for (const blockers::Sphere& s : m.spheres) rel.push_back({s.center - q, s.radius});
+                              const sh::ShVec add = blockers::accumulate_blockers(rel, glm::dvec3(0.0), n,
+                                                                                  b.options.log_eps, b.options.attenuation);
+                              for (int i = 0; i < 16; ++i) {
+                                  float& to = log_sh[std::size_t(i) * texels + t];
+                                  to = float(double(to) + add[std::size_t(i)]);
+                              }
+                              p += (long long)rel.size();
+                          }
+                      pairs += p;
+                  });
+    return pairs;
+}
+
+}  // namespace
+
+void run_blocker_motion_bench(const BenchBlockersOptions& o) {
+    const dem::Dem dem = dem::read_dem(o.motion_dem);
+    const terrain::HeightGrid grid = terrain::metric_view(dem);
+    const mesh::TriangleMesh mesh = mesh::import_mesh(o.mesh);
+    blockers::DecompositionOptions d;
+    d.count = o.motion_spheres, d.threads = o.threads;
+    const blockers::SphereDecomposition dec = blockers::decompose_into_spheres(mesh, d);
+    const double curvature = visibility::curvature_factor(true);
+    const render::NormalField normals = render::terrain_normals(grid, o.threads);
+    const std::size_t texels = std::size_t(grid.width) * grid.height;
+    // The terrain's log-SH stands in as zeros: the bench measures the blockers' share.
+    const std::vector<float> base(16 * texels, 0.0f);
+    std::printf("\nmoving aircraft: %s, %zu spheres, x%.0f, %.0f m agl over %s (%dx%d), %d frames, %d threads\n",
+                o.mesh.c_str(), dec.spheres.size(), o.scale, o.at[2], o.motion_dem.c_str(), grid.width, grid.height,
+                o.motion_frames, o.threads);
+    // A straight path across the middle of the grid, west to east, ~1.5 texels a frame.
+    const geo::Georef& gr = dem.georef;
+    auto place_at = [&](int frame) {
+        mesh::Placement p;
+        const double col = 0.5 * grid.width + 1.5 * (frame - o.motion_frames / 2);
+        const double row = 0.5 * grid.height;
+        const glm::dvec2 ll = gr.pixel_to_lonlat(col, row);
+        p.lon_deg = ll.x, p.lat_deg = ll.y, p.height_m = o.at[2], p.above_ground = true;
+        p.heading_deg = 90.0, p.scale = o.scale;
+        blockers::SphereBlockers b;
+        const glm::dvec2 anchor = render::mesh_anchor(gr, p, o.mesh);
+        b.meshes.push_back(blockers::place_spheres(dec.spheres, p, anchor, render::ground_height(grid, anchor), o.mesh));
+        return b;
+    };
+    struct Totals {
+        double sky_s = 0, sun_s = 0;
+        long long pairs = 0, texels = 0;
+    };
+    Totals tree, flat;
+    for (int pass = 0; pass < 2; ++pass) {
+        const bool use_tree = pass == 0;
+        Totals& tot = use_tree ? tree : flat;
+        std::vector<float> log_sh = base;
+        std::vector<float> sun(texels, 1.0f);
+        visibility::TexelRect old_rect;
+        for (int f = 0; f < o.motion_frames; ++f) {
+            const blockers::SphereBlockers b = place_at(f);
+            const double min_sine = blockers::min_cap_sine(b.options.min_solid_angle_sr);
+            const visibility::TexelRect rect = visibility::sky_footprint(grid, b.meshes[0], min_sine);
+            const Stopwatch t;
+            restore(base, log_sh, old_rect, grid.width, texels);
+            if (use_tree) {
+                const visibility::BlockerStageStats st = visibility::add_blocker_log_sh(
+                    grid, {0, 0, grid.width, grid.height}, b, curvature, o.threads, log_sh.data());
+                tot.pairs += st.sphere_texel_pairs;
+            } else {
+                tot.pairs += add_flat(grid, normals, b, rect, curvature, o.threads, log_sh);
+            }
+            tot.sky_s += t.seconds();
+            tot.texels += rect.texels();
+            const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);
+            const Stopwatch ts;
+            std::fill(sun.begin(), sun.end(), 1.0f);
+            shadow.apply(o.sun_az, o.sun_el, sun);
+            tot.sun_s += ts.seconds();
+            old_rect = rect;
+        }
+    }
+    const double n = std::max(1, o.motion_frames);
+    auto line = [&](const char* what, const Totals& t) {
+        std::printf("%-26s %10.1f %10.2f %14.0f %14.3g\n", what, 1e3 * t.sky_s / n, 1e3 * t.sun_s / n, t.pairs / n,
+                    t.sky_s > 0 ? t.pairs / t.sky_s : 0.0);
+    };
+    std::printf("%-26s %10s %10s %14s %14s\n", "per frame", "sky_ms", "sun_ms", "pairs", "pairs_per_s");
+    line("hierarchy (threshold+cull)", tree);
+    line("flat (every sphere)", flat);
+    std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f\n", tree.texels / n,
+                flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0);
+}
+
+}  // namespace ts::app

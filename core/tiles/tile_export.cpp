@@ -72,19 +72,19 @@ ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom
     const glm::dvec2 cell = dem.georef.cell_size_m();
     const double texel_m = std::sqrt(cell.x * cell.y);
     const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
-    const double ground_m = pixel_size_m(pixel_zoom) * std::cos(centre.y * 3.14159265358979323846 / 180.0);
+    const double centre_cos = std::cos(centre.y * 3.14159265358979323846 / 180.0);
     int max_level = 0;
     while (std::min(dem.width, dem.height) >> (max_level + 1) >= kMinLevelTexels) ++max_level;
     ZoomShading z;
-    z.level = pyramid_level_for(texel_m, ground_m, max_level);
+    z.level = pyramid_level_for(texel_m, pixel_size_m(pixel_zoom) * centre_cos, max_level);
     // Zooms finer than the DEM's own (shaded from level 0 however far they zoom in) magnify its
     // native zoom's tiles and show no new relief: they keep that zoom's exaggeration, so they
-    // share its source (one visibility pass) and do not fade as the map zooms in.
-    const double centre_cos = std::cos(centre.y * 3.14159265358979323846 / 180.0);
+    // share its source (one visibility pass) and do not fade as the map zooms in. Being
+    // over-zoomed only grows with the zoom, so walking down from a zoom that is finds the
+    // coarsest one still so, and from one that is not moves nowhere.
     auto over_zoomed = [&](int pz) { return pyramid_level_for(texel_m, pixel_size_m(pz) * centre_cos, 64) == 0; };
     int native_zoom = pixel_zoom;
     while (native_zoom > 0 && over_zoomed(native_zoom - 1)) --native_zoom;
-    if (!over_zoomed(pixel_zoom)) native_zoom = pixel_zoom;
     z.vertical_scale = job.shading.z_factor * (job.shading.exaggeration ? *job.shading.exaggeration
                                                                         : zoom_exaggeration(native_zoom));
     return z;

@@ -21,6 +21,7 @@
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/report_table.hpp"
+#include "app/bench/shell_command.hpp"
 #include "app/io_plan.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
@@ -55,12 +56,6 @@ struct Study {
     std::function<void(const std::vector<CsvRecord>& csv, const std::string& log, std::vector<ReportRow>& rows)> parse;
 };
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 std::string read_text(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     std::stringstream ss;
@@ -86,7 +81,7 @@ Study visibility_study(const std::string& dem, Size size) {
     s.name = "visibility knobs on " + dem_name(dem);
     s.expected_s = size == Size::tiny ? 2 : size == Size::quick ? 25 : 240;
     const std::string dirs = size == Size::tiny ? "8,16,32" : "8,16,32,64";
-    s.args = "visibility " + quote(dem) + " --window " + std::to_string(window) + " --reference-directions " +
+    s.args = "visibility " + shell_quote(dem) + " --window " + std::to_string(window) + " --reference-directions " +
              std::to_string(ref) + " --methods exact,pyramid,raymarch --directions " + dirs +
              (size == Size::tiny ? " --exact-variants 0:1,2:1,8:1 --pyramid-schedules fast,balanced"
                                  : " --exact-variants 0:1,1:1,2:1,4:1,8:1,2:2,2:3 --pyramid-schedules "
@@ -125,7 +120,7 @@ Study render_study(const std::string& dem, int directions, Size size) {
     s.name = "render --directions " + std::to_string(directions) + " on " + dem_name(dem);
     const int samples = size == Size::tiny ? 20 : size == Size::quick ? 120 : 600;
     s.expected_s = size == Size::tiny ? 6 : size == Size::quick ? 25 : 100;
-    s.args = "render " + quote(dem) + " --samples " + std::to_string(samples) + " --directions " +
+    s.args = "render " + shell_quote(dem) + " --samples " + std::to_string(samples) + " --directions " +
              std::to_string(directions) + (size == Size::tiny ? " --reference-azimuths 64" : "");
     s.parse = [dem, directions](const std::vector<CsvRecord>& csv, const std::string& log,
                                 std::vector<ReportRow>& rows) {
@@ -155,7 +150,7 @@ Study sun_study(const std::string& dem, Size size) {
     s.name = "sun shadows on " + dem_name(dem);
     s.expected_s = size == Size::tiny ? 1 : size == Size::quick ? 4 : 90;
     const std::string max_size = size == Size::tiny ? "40" : size == Size::quick ? "200" : "500";
-    s.args = "sun " + quote(dem) + " --max-size " + max_size + " --near-field 2,4,8,16" +
+    s.args = "sun " + shell_quote(dem) + " --max-size " + max_size + " --near-field 2,4,8,16" +
              (size == Size::full ? "" : " --frames 2 --elevations 3 15 40 --azimuths 90 225");
     s.parse = [dem](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
         std::map<int, std::array<double, 4>> by;  // near -> sweep s, 1 - iou, exact s, n
@@ -239,7 +234,7 @@ Study spheres_study(const std::string& mesh, Size size) {
     Study s;
     s.name = "sphere count on " + dem_name(mesh);
     s.expected_s = size == Size::tiny ? 1 : size == Size::quick ? 4 : 120;
-    s.args = "spheres --mesh " + quote(mesh) + " --large-counts 8 --subdivide 0 --counts " +
+    s.args = "spheres --mesh " + shell_quote(mesh) + " --large-counts 8 --subdivide 0 --counts " +
              (size == Size::tiny ? "8,16" : size == Size::quick ? "8,16,32,64,128" : "8,16,32,64,128,256,512");
     s.parse = [mesh](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
         for (const CsvRecord& r : csv) {
@@ -257,7 +252,7 @@ Study device_study(const std::string& dem, Size size) {
     s.name = "device paths on " + dem_name(dem);
     s.expected_s = size == Size::tiny ? 10 : size == Size::quick ? 25 : 60;
     s.writes_csv = false;
-    s.args = "visibility " + quote(dem) + " --whole --no-saga --window 40 --reference-directions 64 " +
+    s.args = "visibility " + shell_quote(dem) + " --whole --no-saga --window 40 --reference-directions 64 " +
              "--full-directions " + (size == Size::tiny ? "8" : "32") + " --repeats " +
              (size == Size::full ? "3" : "1");
     s.parse = [dem](const std::vector<CsvRecord>&, const std::string& log, std::vector<ReportRow>& rows) {
@@ -282,7 +277,7 @@ Study fly_study(const std::string& dem, double goal_px, Size size) {
     s.name = "fly --pixel-error " + format_value(goal_px);
     s.expected_s = size == Size::full ? 30 : 6;
     s.writes_csv = false;
-    s.args = "fly " + quote(dem) + " --pixel-error " + format_value(goal_px) + " --directions 8 --frames " +
+    s.args = "fly " + shell_quote(dem) + " --pixel-error " + format_value(goal_px) + " --directions 8 --frames " +
              (size == Size::full ? "60 --size 960x540" : "8 --size 320x180");
     s.parse = [dem, goal_px](const std::vector<CsvRecord>&, const std::string& log, std::vector<ReportRow>& rows) {
         // The first CSV block: lod_goal_px,lod_quantile,fps_mean,frame_ms_mean,...,screen_error_px,...
@@ -377,10 +372,10 @@ void run_bench_report(const BenchReportOptions& o) {
         const Study& s = list[i];
         const auto csv = dir / ("study" + std::to_string(i) + ".csv");
         const auto log = dir / ("study" + std::to_string(i) + ".log");
-        std::string cmd = quote(exe) + " bench " + s.args;
+        std::string cmd = shell_quote(exe) + " bench " + s.args;
         if (s.writes_csv) cmd += " " + (s.args.ends_with("--eps-csv") ? std::string() : std::string("--csv ")) +
-                                 quote(csv.string());
-        cmd += " > " + quote(log.string()) + " 2>&1";
+                                 shell_quote(csv.string());
+        cmd += " > " + shell_quote(log.string()) + " 2>&1";
         Stopwatch t;
         const int rc = std::system(cmd.c_str());
         const std::string log_text = read_text(log);

@@ -14,6 +14,7 @@
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/process_usage.hpp"
+#include "app/bench/shell_command.hpp"
 #include "app/bench/synthetic_mosaic.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
@@ -98,10 +99,6 @@ void run_reference(const BenchTilesArgs& a, const dem::Dem& dem, tiles::TileJob 
         raster::write_u8_image(fs::path(a.reference_out) / "reference.png", w.width, w.height, 1, ref_png.data(), nullptr);
         std::printf("reference: wrote relief.png and reference.png in %s\n", a.reference_out.c_str());
     }
-}
-
-bool on_path(const std::string& tool) {
-    return std::system(("command -v " + tool + " > /dev/null 2>&1").c_str()) == 0;
 }
 
 std::size_t count_pngs(const fs::path& dir) {

@@ -21,6 +21,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/csv_number.hpp"
 #include "app/bench/error_stats.hpp"
+#include "app/bench/shell_command.hpp"
 #include "app/compute_device.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -270,10 +271,6 @@ void write_csv(const BenchVisibilityOptions& o, const std::vector<Row>& rows) {
 
 // ---- --whole: the whole DEM, GPU and CPU stage by stage, and SAGA on a UTM copy ----
 
-bool have_program(const char* name) {
-    return std::system(("command -v " + std::string(name) + " > /dev/null 2>&1").c_str()) == 0;
-}
-
 // Timings are the median of a few runs (bench::median): the machine is shared, one run can be
 // 2x another.
 using bench::median;
@@ -394,7 +391,7 @@ void run_whole(const BenchVisibilityOptions& o, const std::string& path) {
         std::printf("  default / fastest path time: %.2f\n", runs[0].ms / fastest);
 
     if (o.no_saga) return;
-    if (!have_program("saga_cmd") || !have_program("gdalwarp")) {
+    if (!on_path("saga_cmd") || !on_path("gdalwarp")) {
         std::printf("  saga not run: saga_cmd or gdalwarp is not installed\n");
         return;
     }

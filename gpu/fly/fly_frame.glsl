@@ -15,7 +15,9 @@ layout(std430, set = 0, binding = 0) readonly buffer Frame {
     vec4 camera_up;        // xyz, w: tan(vertical fov / 2)
     vec4 camera_forward;   // xyz
     vec4 sky_table;        // azimuth count, elevation count, lowest elevation (rad), highest (rad)
-    vec4 sky_sh[16];       // rgb: the sky's order-4 SH (core/light/sky.hpp project_sky_sh)
+    vec4 sky_sh[16];       // rgb: the sky the terrain lets reach the aircraft, order-4 SH
+                           // (core/render/point_terrain_light.hpp: exp(V_log) * L_sky)
+    vec4 aircraft_light;   // x: the visible fraction of the sun's disc at the aircraft
 } frame;
 layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
 layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m

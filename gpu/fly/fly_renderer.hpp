@@ -37,6 +37,7 @@ struct FlyFrameUniforms {
     glm::vec4 camera_forward{0.0f};
     glm::vec4 sky_table{0.0f};
     glm::vec4 sky_sh[16]{};
+    glm::vec4 aircraft_light{1.0f, 0.0f, 0.0f, 0.0f};
 };
 
 struct FlyTerrain {

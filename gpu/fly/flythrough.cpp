@@ -45,6 +45,9 @@ Flythrough::Flythrough(const dem::Dem& dem, const FlySettings& settings, Context
     terrain.rows = rows;
     terrain.patch_quads = settings_.lod.patch_quads;
     renderer_ = std::make_unique<FlyRenderer>(context_, terrain, settings_.width, settings_.height);
+    render::PointTerrainLightOptions light_options;
+    light_options.directions = settings_.directions;
+    aircraft_lighting_ = std::make_unique<render::PointTerrainLighting>(scene_->grid(), light_options);
 }
 
 Flythrough::~Flythrough() = default;
@@ -69,11 +72,14 @@ double Flythrough::set_time(light::UtcTime time) {
     const light::Sky& sky = *scene_->last_sky();
     sky_table_ = fly::make_sky_table(sky);
     sky_sh_ = light::project_sky_sh(sky);
+    aircraft_light_ = {sky_sh_, 1.0f};
+    aircraft_lit_ = false;
     renderer_->set_sky(sky_table_.rgb);
     const light::SunDisc disc = sky.sun();
     sun_dir_ = glm::vec3(disc.direction);
     sun_radiance_ = fly::sun_disc_radiance(disc);
     sun_cos_radius_ = std::cos(disc.angular_radius_rad);
+    sun_radius_rad_ = disc.angular_radius_rad;
     exposure_ = render::image_exposure_scale(radiance_, render::Exposure{});
     return watch.milliseconds();
 }
@@ -138,6 +144,20 @@ void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double 
     aircraft_triangles_ = m.triangle_count();
 }
 
+void Flythrough::update_aircraft_light(const glm::dvec3& centre) {
+    const glm::dvec2 texel = frame_.to_grid(centre.x, centre.y);
+    const glm::dvec2 last = frame_.to_grid(aircraft_lit_at_.x, aircraft_lit_at_.y);
+    const terrain::HeightGrid& grid = scene_->grid();
+    const int row = std::clamp(int(std::lround(texel.y)), 0, grid.height - 1);
+    const double spacing = std::min(grid.dx_m[std::size_t(row)], grid.dy_m[std::size_t(row)]);
+    // A quarter texel, across or up: the horizons' march step (PointHorizonOptions).
+    const double moved = std::max(glm::length(texel - last), std::abs(centre.z - aircraft_lit_at_.z) / spacing);
+    if (aircraft_lit_ && moved < 0.25) return;
+    aircraft_light_ = aircraft_lighting_->light(texel, centre.z, sky_sh_, glm::dvec3(sun_dir_), sun_radius_rad_);
+    aircraft_lit_ = true;
+    aircraft_lit_at_ = centre;
+}
+
 void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
                          const fly::CameraPose* aircraft) {
     fly::Projection proj;
@@ -175,8 +195,10 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     u.camera_right = glm::vec4(glm::vec3(axes.right), float(tan_h));
     u.camera_up = glm::vec4(glm::vec3(axes.up), float(tan_v));
     u.camera_forward = glm::vec4(glm::vec3(axes.forward), 0.0f);
-    for (int i = 0; i < 16; ++i) u.sky_sh[i] = glm::vec4(sky_sh_[std::size_t(i)], 0.0f);
     if (aircraft != nullptr && aircraft_triangles_ > 0) {
+        update_aircraft_light(aircraft->eye);
+        for (int i = 0; i < 16; ++i) u.sky_sh[i] = glm::vec4(aircraft_light_.visible_sky[std::size_t(i)], 0.0f);
+        u.aircraft_light = glm::vec4(aircraft_light_.sun_fraction, 0.0f, 0.0f, 0.0f);
         mesh::Placement p;
         p.heading_deg = aircraft->heading_deg;
         p.pitch_deg = aircraft->pitch_deg;

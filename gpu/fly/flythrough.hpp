@@ -17,6 +17,7 @@
 #include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/mesh/triangle_mesh.hpp"
+#include "core/render/point_terrain_light.hpp"
 #include "core/render/render_scene.hpp"
 #include "gpu/context.hpp"
 #include "gpu/fly/fly_renderer.hpp"
@@ -69,6 +70,9 @@ public:
     // turned by `forward_yaw_deg` (counter-clockwise about up) onto the model's +y first.
     void set_aircraft(const mesh::TriangleMesh& mesh, double scale, double forward_yaw_deg);
     bool has_aircraft() const { return aircraft_triangles_ > 0; }
+    // The terrain's light at the aircraft's centre in the last prepared frame (open sky and the
+    // whole sun before any).
+    const render::PointTerrainLight& aircraft_terrain_light() const { return aircraft_light_; }
 
     // Selects the terrain for this camera and fills the frame's uniforms; `aircraft`: where the
     // aircraft is this frame (nullptr: not drawn).
@@ -94,6 +98,14 @@ private:
     light::SkySh sky_sh_{};
     double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
     std::size_t aircraft_triangles_ = 0;
+    // The terrain's horizons from the aircraft, recomputed only when it moved by more than a
+    // fraction of a texel or the sun changed (set_time clears aircraft_lit_).
+    void update_aircraft_light(const glm::dvec3& centre);
+    std::unique_ptr<render::PointTerrainLighting> aircraft_lighting_;
+    render::PointTerrainLight aircraft_light_;
+    bool aircraft_lit_ = false;
+    glm::dvec3 aircraft_lit_at_{0.0};
+    double sun_radius_rad_ = 0.0;
     fly::CdlodSelection selection_;
     render::LinearImage radiance_;
     std::vector<std::uint32_t> packed_;

@@ -1,8 +1,9 @@
 #version 450
-// The aircraft's colour: its material's albedo / pi times the irradiance of the sky (the sky's
-// SH against the clamped cosine turned to the normal with ts_zh_rotate, core/sh/sh_shared.h,
-// the one SH definition of C++ and GLSL) and of the sun. Neither the terrain's occlusion of the
-// sky and sun at the aircraft nor its own spheres' shadows are in yet (docs/flythrough.md).
+// The aircraft's colour: its material's albedo / pi times the irradiance of the sky the terrain
+// lets reach its centre (that SH against the clamped cosine turned to the normal with
+// ts_zh_rotate, core/sh/sh_shared.h, the one SH definition of C++ and GLSL) and of the sun times
+// the terrain's visible fraction of its disc there. Its own spheres' shadows are not in yet
+// (docs/flythrough.md).
 #extension GL_GOOGLE_include_directive : require
 #define TS_GLSL 1
 #include "core/sh/sh_shared.h"
@@ -23,7 +24,8 @@ void main() {
     for (int i = 0; i < 16; ++i) e_sky += f[i] * frame.sky_sh[i].rgb;
     float cos_r = frame.sun_direction.w;
     float sun_solid_angle = 6.283185307 * (1.0 - cos_r);
-    vec3 e_sun = frame.sun_radiance.rgb * sun_solid_angle * max(dot(n, frame.sun_direction.xyz), 0.0);
+    vec3 e_sun = frame.sun_radiance.rgb * sun_solid_angle * max(dot(n, frame.sun_direction.xyz), 0.0) *
+                 frame.aircraft_light.x;
     vec3 l = v_color / 3.14159265 * (max(e_sky, vec3(0.0)) + e_sun);
     out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
 }

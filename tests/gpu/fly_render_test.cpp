@@ -1,15 +1,19 @@
 // The flythrough's offscreen frames (gpu/fly) over a shared DEM, with the validation layer on:
 // terrain and sky present, no black frames, frames that change as the camera moves, and no
-// crack pixels (sky seen through the terrain) between LOD patches.
+// crack pixels (sky seen through the terrain) between LOD patches; an aircraft low in a valley
+// darker than the same aircraft high in the open sky.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "core/dem/read_dem.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/light/utc_time.hpp"
+#include "core/raster/png_writer.hpp"
 #include "gpu/fly/flythrough.hpp"
 #include "tests/gpu/validated_context.hpp"
 
@@ -105,6 +109,90 @@ TEST_F(FlyRenderTest, AShortFlightOverGrenobleHasTerrainSkyAndNoCracks) {
         previous = rgba;
     }
     EXPECT_GE(levels_drawn, 2);  // LOD levels meet in the frames: their seams are checked
+}
+
+// A flat white plate, 40 m square, facing up: its light is the sky it sees and the sun.
+mesh::TriangleMesh plate() {
+    mesh::TriangleMesh m;
+    const float a = 20.0f;
+    m.positions = {{-a, -a, 0}, {a, -a, 0}, {a, a, 0}, {-a, -a, 0}, {a, a, 0}, {-a, a, 0}};
+    m.normals.assign(6, glm::vec3(0, 0, 1));
+    m.material = {0, 0};
+    m.materials = {mesh::MeshMaterial{"white", glm::vec4(0.25f, 0.25f, 0.25f, 1.0f), ""}};
+    return m;
+}
+
+// Mean display code of the pixels the aircraft changes, seen 60 m south and 60 m above it.
+double aircraft_mean(Flythrough& flight, const glm::dvec3& at, const char* png) {
+    fly::CameraPose aircraft;
+    aircraft.eye = at;
+    fly::CameraPose camera;
+    camera.eye = at + glm::dvec3(0, -60, 60);
+    camera.heading_deg = 0;
+    camera.pitch_deg = -45;
+    FlyFrameUniforms u;
+    FlyFrameStats stats;
+    std::vector<std::uint8_t> with, without;
+    flight.prepare(camera, u, stats, &aircraft);
+    flight.renderer().render_to_memory(u, flight.patches(), with);
+    flight.prepare(camera, u, stats, nullptr);
+    flight.renderer().render_to_memory(u, flight.patches(), without);
+    if (const char* dir = std::getenv("TS_TEST_PNG_DIR"))
+        raster::write_png(std::string(dir) + "/" + png, png, flight.renderer().width(), flight.renderer().height(), 4,
+                          with.data());
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 3 < with.size(); i += 4) {
+        if (with[i] == without[i] && with[i + 1] == without[i + 1] && with[i + 2] == without[i + 2]) continue;
+        sum += (with[i] + with[i + 1] + with[i + 2]) / 3.0;
+        ++n;
+    }
+    EXPECT_GT(n, 500u) << png << ": the aircraft is not drawn";
+    return n ? sum / double(n) : 0;
+}
+
+TEST_F(FlyRenderTest, AnAircraftLowInAValleyIsDarkerThanInTheOpenSky) {
+    const dem::Dem dem = dem::read_dem(std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif");
+    FlySettings settings;
+    settings.width = 320;
+    settings.height = 180;
+    settings.directions = 16;
+    Flythrough flight(dem, settings, *context_);
+    flight.set_time(light::parse_utc_time("2024-12-21T14:45:00Z"));
+    flight.set_aircraft(plate(), 1.0, 0.0);
+    // A valley floor of the DEM's middle the sun has left (the lowest such texel, 15 m up) and
+    // the highest point of the whole DEM.
+    const terrain::HeightGrid& g = flight.scene().grid();
+    const light::SunDisc sun = flight.scene().last_sky()->sun();
+    const render::PointTerrainLighting probe(g);
+    int low = -1;
+    float top = -1e9f;
+    for (float z : g.z) top = std::max(top, z);
+    for (int r = g.height / 4; r < 3 * g.height / 4; r += 5)
+        for (int c = g.width / 4; c < 3 * g.width / 4; c += 5) {
+            const std::size_t i = std::size_t(r) * std::size_t(g.width) + std::size_t(c);
+            if (low >= 0 && g.z[i] >= g.z[std::size_t(low)]) continue;
+            if (probe.light({c, r}, g.z[i] + 15.0, light::SkySh{}, sun.direction, sun.angular_radius_rad).sun_fraction == 0)
+                low = int(i);
+        }
+    ASSERT_GE(low, 0) << "no shaded valley at this time";
+    const glm::dvec2 m = flight.frame().to_metric(low % g.width, low / g.width);
+    const glm::dvec3 valley(m.x, m.y, flight.ground_height_m({m.x, m.y, 0}) + 15.0);
+    const glm::dvec3 open(m.x, m.y, double(top) + 2000.0);
+
+    const double dark = aircraft_mean(flight, valley, "fly_aircraft_valley.png");
+    const render::PointTerrainLight in_valley = flight.aircraft_terrain_light();
+    const double bright = aircraft_mean(flight, open, "fly_aircraft_open.png");
+    const render::PointTerrainLight in_open = flight.aircraft_terrain_light();
+    std::printf("aircraft valley floor %.0f m: display mean %.1f, sun fraction %.2f, sky DC %.4f\n", valley.z, dark,
+                in_valley.sun_fraction, in_valley.visible_sky[0].y);
+    std::printf("aircraft open sky %.0f m: display mean %.1f, sun fraction %.2f, sky DC %.4f\n", open.z, bright,
+                in_open.sun_fraction, in_open.visible_sky[0].y);
+    // Ignoring the terrain would light both alike (the aircraft's shader has no haze).
+    EXPECT_LT(in_valley.visible_sky[0].y, 0.9f * in_open.visible_sky[0].y);
+    EXPECT_LT(dark, bright - 10.0);
+    EXPECT_EQ(in_valley.sun_fraction, 0.0f);
+    EXPECT_EQ(in_open.sun_fraction, 1.0f);
 }
 
 }  // namespace

@@ -56,7 +56,6 @@ bool display_available(std::string& reason) {
         reason = std::string("cannot open the display ") + (display ? display : "");
         return false;
     }
-    glfwTerminate();
     return true;
 }
 

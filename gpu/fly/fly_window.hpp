@@ -19,7 +19,11 @@ struct GLFWwindow;
 
 namespace ts::gpu {
 
-// Whether GLFW can open a window here; when not, `reason` says why in a few words.
+// Whether GLFW can open a window here; when not, `reason` says why in a few words. On success
+// GLFW stays initialised (its display connection open) for the FlyWindow that follows, which
+// terminates it: closing an X server's last connection makes the server reset, and a
+// connection opened during the reset is refused (Xvfb, with no other client, did so for most
+// runs started on a loaded machine).
 bool display_available(std::string& reason);
 
 struct WindowInput {

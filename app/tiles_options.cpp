@@ -48,7 +48,12 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "bounding memory (0 = whole levels; docs/tiles.md)")
         ->capture_default_str();
     cmd.add_option("--block-halo", a.block_halo,
-                   "relief/color: texels around each block it is shaded with (the reach of cast shadows)")
+                   "relief/svf/color: texels around each block it is shaded with (the reach of cast shadows and of the "
+                   "sky's exact horizons)")
+        ->capture_default_str();
+    cmd.add_option("--far-field", a.far_field,
+                   "relief/svf/color in blocks: the sky's terrain beyond the halo, exact (the whole level swept per "
+                   "block: slow) or marched over coarser levels: fast, balanced, fine, finest")
         ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")->capture_default_str()->check(CLI::Range(0, 256));
 }
@@ -76,6 +81,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.directions = a.directions;
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
+    s.far_field = tiles::parse_far_field(a.far_field);
     s.threads = a.threads;
     tiles::check_tile_job(job);
     return job;

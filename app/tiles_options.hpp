@@ -22,6 +22,7 @@ struct TilesArgs {
     int directions = 16;
     int block_texels = 2048;
     int block_halo = 256;
+    std::string far_field = "balanced";
     int threads = 0;
 };
 

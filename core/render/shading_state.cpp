@@ -147,6 +147,7 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
                 grid_, *options_.blockers, visibility::curvature_factor(options_.curvature), options_.threads);
         blocker_sun_->apply(sun.azimuth_deg, sun.elevation_deg, out);
     }
+    if (options_.outer_sun_shadow) options_.outer_sun_shadow(sun, out);
 }
 
 }  // namespace ts::render

@@ -14,6 +14,7 @@
 //   ShadingState state = compute_shading_state(grid, materials, normals, options);
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,6 +87,10 @@ struct RendererOptions {
     // visibility (through the backend's request), their sun shadows multiply each frame's sun
     // visibility. nullptr or empty: none.
     const blockers::SphereBlockers* blockers = nullptr;
+    // Terrain beyond the grid that shades it from the sun (a block of a larger level: the far
+    // field beyond its window, core/tiles/shade_source.cpp): lowers each frame's sun visibility
+    // after the grid's own shadows. Empty: the grid is all the terrain there is.
+    std::function<void(const SunState&, std::vector<float>&)> outer_sun_shadow;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
 };

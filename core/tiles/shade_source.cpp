@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "core/material/material.hpp"
@@ -13,6 +14,9 @@
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/dem_level.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "core/visibility/far_field_horizons.hpp"
+#include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/visibility_backend.hpp"
 
 namespace ts::tiles {
@@ -35,9 +39,13 @@ render::MaterialRaster grey_materials(std::size_t n, float albedo) {
     return m;
 }
 
+// Shades a block's window from the sun by the level's terrain beyond it (empty: none).
+using OuterSunShadow = std::function<void(const render::SunState&, std::vector<float>&)>;
+
 render::RendererOptions renderer_options(const TileShading& s, ProgressBar* progress,
-                                         visibility::VisibilityBackend* backend) {
+                                         visibility::VisibilityBackend* backend, OuterSunShadow outer_sun) {
     render::RendererOptions o;
+    o.outer_sun_shadow = std::move(outer_sun);
     o.directions = s.directions;
     o.threads = s.threads;
     o.progress = progress;
@@ -48,10 +56,10 @@ render::RendererOptions renderer_options(const TileShading& s, ProgressBar* prog
 // One frame of radiance on `grid` with `materials`; `backend` null = the CPU on `grid`.
 std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::MaterialRaster materials,
                                     const TileShading& s, ProgressBar* progress,
-                                    visibility::VisibilityBackend* backend = nullptr) {
+                                    visibility::VisibilityBackend* backend = nullptr, OuterSunShadow outer_sun = {}) {
     render::NormalField normals = render::terrain_normals(grid, s.threads);
     auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals),
-                                               renderer_options(s, progress, backend));
+                                               renderer_options(s, progress, backend, std::move(outer_sun)));
     const render::ViewShading view = render::compute_view_shading(*state, {});
     render::FrameRenderer frame(*state, view);
     const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
@@ -78,23 +86,39 @@ struct Rect {
     int col0 = 0, row0 = 0, width = 0, height = 0;
 };
 
-// The horizons (and what derives from them) of the receivers of a window of the level, over
-// the whole level: a block's state is built on its window grid, while its sky sees every
-// texel of the level (exact sweep; the same horizons as the whole-level computation).
+// The horizons (and what derives from them) of the receivers of a window of the level. With a
+// far field: the exact sweep over the window alone, raised by the far field's horizons for the
+// core's receivers (the halo's are only there for the core's sun shadows and normals). Without
+// one: the exact sweep of the window's receivers over every texel of the level (the same
+// horizons as the whole-level computation, at a sweep of the whole level per block).
 class LevelWindowVisibility final : public visibility::VisibilityBackend {
 public:
-    LevelWindowVisibility(const terrain::HeightGrid& level, const Rect& window) : level_(level), window_(window) {}
+    LevelWindowVisibility(const terrain::HeightGrid& level, const Rect& window, const Rect& core,
+                          const visibility::FarField* far)
+        : level_(level), window_(window), core_(core), far_(far) {}
     std::string name() const override { return cpu_->name(); }
-    visibility::VisibilityResult compute(const terrain::HeightGrid& /*window grid*/,
+    visibility::VisibilityResult compute(const terrain::HeightGrid& window_grid,
                                          const visibility::VisibilityRequest& request) override {
         visibility::VisibilityRequest r = request;
-        r.horizon.window = {window_.col0, window_.row0, window_.width, window_.height};
-        return cpu_->compute(level_, r);
+        if (!far_) {
+            r.horizon.window = {window_.col0, window_.row0, window_.width, window_.height};
+            return cpu_->compute(level_, r);
+        }
+        visibility::check_request(r);
+        r.horizon.window = {};
+        visibility::VisibilityResult result;
+        result.horizons = visibility::compute_horizons(window_grid, r.horizon);
+        far_->raise(result.horizons, {window_.col0, window_.row0, window_.width, window_.height},
+                    {core_.col0, core_.row0, core_.width, core_.height}, level_);
+        result.stages.push_back({"horizons (exact in the window, far field beyond)", "cpu", 0.0});
+        visibility::complete_on_cpu(window_grid, r, result);
+        return result;
     }
 
 private:
     const terrain::HeightGrid& level_;
-    Rect window_;
+    Rect window_, core_;
+    const visibility::FarField* far_;
     std::unique_ptr<visibility::VisibilityBackend> cpu_ = visibility::make_cpu_visibility_backend();
 };
 
@@ -159,12 +183,23 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
 
     const std::vector<Rect> blocks = level_blocks(grid.width, grid.height, s.block_texels);
     const bool whole = blocks.size() == 1;
+    // Terrain beyond a block's halo, for every block of the level (built once, a few MB).
+    std::unique_ptr<visibility::FarField> far;
+    const int block_halo = std::max(1, s.block_halo_texels);
+    if (!whole && s.far_field != FarFieldMethod::exact) {
+        visibility::FarFieldOptions fo;
+        fo.start_texels = block_halo;
+        fo.samples_per_octave = far_field_samples_per_octave(s.far_field);
+        fo.threads = s.threads;
+        far = std::make_unique<visibility::FarField>(grid, fo);
+    }
     std::vector<float> wz, wtrue;
     std::vector<std::uint8_t> wvoids, wtrue_voids;
     for (const Rect& core : blocks) {
         // The window each block is shaded on: its core grown by the halo (sun shadows, normals
-        // at the edge), clamped to the level; svf takes its horizons for the core alone.
-        const int halo = whole || s.style == TileStyle::svf ? 0 : std::max(1, s.block_halo_texels);
+        // at the edge, the near field of the sky), clamped to the level. Without a far field
+        // svf sweeps its core's horizons over the whole level: no halo.
+        const int halo = whole || (s.style == TileStyle::svf && !far) ? 0 : block_halo;
         Rect w;
         w.col0 = std::max(0, core.col0 - halo), w.row0 = std::max(0, core.row0 - halo);
         w.width = std::min(grid.width, core.col0 + core.width + halo) - w.col0;
@@ -177,7 +212,15 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
             request.horizon.progress = whole ? progress : nullptr;
             request.horizon.window = {w.col0, w.row0, w.width, w.height};
             request.svf = true;
-            const auto result = visibility::make_cpu_visibility_backend()->compute(grid, request);
+            visibility::VisibilityResult result;
+            if (far) {
+                std::vector<float> sz;
+                std::vector<std::uint8_t> svoids;
+                const terrain::HeightGrid g = window_grid(grid, w, sz, svoids);
+                result = LevelWindowVisibility(grid, w, core, far.get()).compute(g, request);
+            } else {
+                result = visibility::make_cpu_visibility_backend()->compute(grid, request);
+            }
             values.resize(result.svf.size());
             for (std::size_t k = 0; k < values.size(); ++k) {
                 const float v = std::isnan(result.svf[k]) ? 1.0f : result.svf[k];
@@ -186,14 +229,21 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
         } else {
             std::unique_ptr<LevelWindowVisibility> backend;
             terrain::HeightGrid g = grid, tg = true_grid;
+            OuterSunShadow outer_sun;
+            if (far)
+                outer_sun = [&far, &grid, &w, &core](const render::SunState& sun, std::vector<float>& vis) {
+                    far->limit_sun(sun.azimuth_deg, sun.elevation_deg, visibility::SunSweepOptions{}.sun_radius_rad,
+                                   {w.col0, w.row0, w.width, w.height}, {core.col0, core.row0, core.width, core.height},
+                                   grid, vis.data());
+                };
             if (!whole) {
                 g = window_grid(grid, w, wz, wvoids);
                 if (s.style == TileStyle::color) tg = window_grid(true_grid, w, wtrue, wtrue_voids);
-                backend = std::make_unique<LevelWindowVisibility>(grid, w);
+                backend = std::make_unique<LevelWindowVisibility>(grid, w, core, far.get());
             }
             const std::size_t m = std::size_t(w.width) * std::size_t(w.height);
             if (s.style == TileStyle::relief) {
-                const auto radiance = render_frame(g, grey_materials(m, 1.0f), s, whole ? progress : nullptr, backend.get());
+                const auto radiance = render_frame(g, grey_materials(m, 1.0f), s, whole ? progress : nullptr, backend.get(), outer_sun);
                 values.resize(m);
                 for (std::size_t k = 0; k < m; ++k)
                     values[k] = std::clamp(float(kReliefFlatGrey * render::luminance(radiance[k]) / flat), 0.0f, 1.0f);
@@ -201,7 +251,7 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
                 // Land cover from the true heights and slopes; the light on the exaggerated form.
                 const render::NormalField true_normals = render::terrain_normals(tg, s.threads);
                 const auto radiance = render_frame(g, render::rule_materials(tg, true_normals), s,
-                                                   whole ? progress : nullptr, backend.get());
+                                                   whole ? progress : nullptr, backend.get(), outer_sun);
                 const float scale = float(kColorExposure / flat);
                 values.resize(3 * m);
                 for (std::size_t k = 0; k < m; ++k)

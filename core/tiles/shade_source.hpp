@@ -16,10 +16,13 @@
 // Memory: a level wider or taller than TileShading::block_texels is shaded block by block, so
 // the ~200 bytes per texel of a shading state are held for one block's window at a time, not
 // the level (the level itself costs ~12 bytes per texel: heights, shaded heights, values). A
-// block's sky (log-SH visibility, svf) still sees the whole level: its receivers' horizons are
-// swept over every texel of the level, equal to the whole-level result. Its sun shadows and
-// normals come from its window, the block grown by block_halo_texels on each side: a shadow
-// longer than the halo is cut at the halo's edge.
+// block is shaded on its window, the block grown by block_halo_texels on each side: its
+// normals, sun shadows and the sky's exact horizons come from the window, and the terrain
+// beyond it from the far field (core/visibility/far_field_horizons.hpp: the level's mean levels
+// from the one matching the halo's distance on, marched for the sky's horizons and the sun's
+// azimuth), built once per level. With --far-field exact, a block's sky instead sweeps its
+// receivers over every texel of the level (the whole-level horizons, at one sweep of the level
+// per block) and its sun shadows end at the halo.
 #include <vector>
 
 #include "core/dem/dem.hpp"

@@ -64,7 +64,8 @@ std::string describe_job(const TileJob& job) {
            ",\"sun_elevation\":" + number(s.sun_elevation_deg) + ",\"z_factor\":" + number(s.z_factor) +
            ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto-native\"")) +
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
-           ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
+           ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
+           std::string(far_field_name(s.far_field)) + "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
            number(s.sky.turbidity) + "}\n";
 }
 

@@ -24,4 +24,33 @@ std::string_view tile_style_name(TileStyle s) {
     return "?";
 }
 
+FarFieldMethod parse_far_field(std::string_view text) {
+    for (FarFieldMethod m : {FarFieldMethod::exact, FarFieldMethod::fast, FarFieldMethod::balanced, FarFieldMethod::fine,
+                             FarFieldMethod::finest})
+        if (text == far_field_name(m)) return m;
+    throw InputError("--far-field " + std::string(text) + ": use exact, fast, balanced, fine or finest");
+}
+
+std::string_view far_field_name(FarFieldMethod m) {
+    switch (m) {
+        case FarFieldMethod::exact: return "exact";
+        case FarFieldMethod::fast: return "fast";
+        case FarFieldMethod::balanced: return "balanced";
+        case FarFieldMethod::fine: return "fine";
+        case FarFieldMethod::finest: return "finest";
+    }
+    return "?";
+}
+
+int far_field_samples_per_octave(FarFieldMethod m) {
+    switch (m) {
+        case FarFieldMethod::exact: return 0;
+        case FarFieldMethod::fast: return 2;
+        case FarFieldMethod::balanced: return 4;
+        case FarFieldMethod::fine: return 8;
+        case FarFieldMethod::finest: return 16;
+    }
+    return 0;
+}
+
 }  // namespace ts::tiles

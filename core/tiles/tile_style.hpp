@@ -16,6 +16,21 @@ enum class TileStyle {
     color,             // the renderer's rule materials under sun and sky
 };
 
+// How a block of a level shaded in blocks sees the terrain beyond its halo (shade_source.hpp).
+enum class FarFieldMethod {
+    exact,     // the exact sweep over the whole level for every block: exact, ~N / block sweeps
+    fast,      // mean levels marched at 2, 4, 8 or 16 samples per octave of distance
+    balanced,  // (core/visibility/far_field_horizons.hpp)
+    fine,
+    finest,
+};
+
+// "exact", "balanced", ...; throws ts::InputError naming --far-field otherwise.
+FarFieldMethod parse_far_field(std::string_view text);
+std::string_view far_field_name(FarFieldMethod m);
+// The march's samples per octave (0 for exact).
+int far_field_samples_per_octave(FarFieldMethod m);
+
 // "relief", "hillshade", ...; throws ts::InputError naming --style otherwise.
 TileStyle parse_tile_style(std::string_view text);
 std::string_view tile_style_name(TileStyle s);
@@ -36,9 +51,12 @@ struct TileShading {
     // Levels wider or taller than this many texels are shaded in blocks of it (relief, svf,
     // color), so memory follows the block, not the DEM (shade_source.hpp). 0 = never.
     int block_texels = 2048;
-    // relief, color: each block is shaded on its window grown by this many texels per side (the
-    // sun's cast shadows reach that far; the sky sees the whole level).
+    // relief, svf, color: each block is shaded on its window grown by this many texels per side
+    // (the sun's cast shadows reach that far; the sky sees the exact horizons that far and the
+    // far field beyond).
     int block_halo_texels = 256;
+    // relief, svf, color in blocks: the sky's terrain beyond the halo.
+    FarFieldMethod far_field = FarFieldMethod::balanced;
     int threads = 0;
 };
 

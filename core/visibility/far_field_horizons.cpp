@@ -1,0 +1,177 @@
+#include "core/visibility/far_field_horizons.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+#include "core/visibility/bilinear_march.hpp"
+#include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/pyramid_shared.hpp"
+#include "core/visibility/receiver_setup.hpp"
+#include "core/visibility/sun_visibility.hpp"
+
+namespace ts::visibility {
+namespace {
+
+constexpr double kNoSlope = -std::numeric_limits<double>::infinity();
+
+// The grid's mean level `shift` (2x2 steps as the pyramid takes them) and its row spacing.
+struct CoarseCopy {
+    std::vector<float> z;
+    int width = 0, height = 0;
+    std::vector<double> dx_m, dy_m;
+};
+
+CoarseCopy coarse_copy(const terrain::HeightGrid& grid, int shift, int threads) {
+    CoarseCopy c;
+    c.z.assign(grid.z.begin(), grid.z.end());
+    c.width = grid.width, c.height = grid.height;
+    c.dx_m = grid.dx_m, c.dy_m = grid.dy_m;
+    for (int k = 0; k < shift; ++k) {
+        c.z = terrain::downsample_2x2(c.z.data(), c.width, c.height, false, threads);
+        const int h = (c.height + 1) / 2;
+        std::vector<double> dx(std::size_t(h), 0.0), dy(std::size_t(h), 0.0);
+        for (int r = 0; r < h; ++r) {
+            const int r0 = 2 * r, r1 = std::min(2 * r + 1, c.height - 1);
+            dx[std::size_t(r)] = c.dx_m[std::size_t(r0)] + c.dx_m[std::size_t(r1)];
+            dy[std::size_t(r)] = c.dy_m[std::size_t(r0)] + c.dy_m[std::size_t(r1)];
+        }
+        c.width = (c.width + 1) / 2, c.height = h;
+        c.dx_m = std::move(dx), c.dy_m = std::move(dy);
+    }
+    return c;
+}
+
+}  // namespace
+
+FarField::FarField(const terrain::HeightGrid& grid, const FarFieldOptions& options)
+    : options_(options), width_(grid.width), height_(grid.height), metrics_(grid) {
+    if (!(options.start_texels >= 1)) throw InputError("far field: the start must be at least 1 texel");
+    if (options.samples_per_octave < 1 || options.sun_samples_per_octave < 1)
+        throw InputError("far field: at least 1 sample per octave");
+    // The first far sample of the denser schedule reads the finest level any sample reads (the
+    // gap grows with tau).
+    constexpr int kAnyLevels = 64;
+    const int densest = std::max(options.samples_per_octave, options.sun_samples_per_octave);
+    shift_ = shared::ts_pyramid_sample_level(options.start_texels, std::exp2(1.0 / densest), kAnyLevels);
+    while (shift_ > 0 && (std::max(width_, height_) >> shift_) < 2) --shift_;
+    CoarseCopy coarse = coarse_copy(grid, shift_, options.threads);
+    terrain::HeightGrid cg;
+    cg.width = coarse.width, cg.height = coarse.height;
+    cg.z = coarse.z;
+    cg.dx_m = std::move(coarse.dx_m), cg.dy_m = std::move(coarse.dy_m);
+    terrain::PyramidOptions po;
+    po.threads = options.threads;
+    po.tile_size = 64;
+    pyramid_ = terrain::HeightPyramid(cg, po);
+    z_top_ = highest_height(grid);
+    curvature_ = curvature_factor(options.curvature);
+    const int levels = shift_ + pyramid_.level_count();
+    const double max_tau = pyramid_max_tau(width_, height_);
+    for (const PyramidSample& s : pyramid_samples(options.samples_per_octave, levels, max_tau))
+        if (s.tau >= options.start_texels) samples_.push_back({s.tau, std::max(0, s.level - shift_)});
+    for (const PyramidSample& s : pyramid_samples(options.sun_samples_per_octave, levels, max_tau))
+        if (s.tau >= options.start_texels) sun_samples_.push_back({s.tau, std::max(0, s.level - shift_)});
+}
+
+std::size_t FarField::bytes() const {
+    return pyramid_.memory_bytes() + (samples_.size() + sun_samples_.size()) * sizeof(PyramidSample) +
+           2 * sizeof(double) * std::size_t(height_);
+}
+
+double FarField::far_slope(double col, double row, double z0, double phi) const {
+    const int r = std::clamp(int(std::lround(row)), 0, height_ - 1);
+    const double dx = metrics_.dx(r), dy = metrics_.dy(r), unit = std::min(dx, dy);
+    return march(col, row, z0, std::cos(phi) * unit / dx, -std::sin(phi) * unit / dy, unit);
+}
+
+double FarField::march(double col, double row, double z0, double step_c, double step_r, double unit) const {
+    const double wmax = width_ - 1, hmax = height_ - 1, inv_scale = 1.0 / coarse_scale();
+    double best = kNoSlope;
+    for (const PyramidSample& smp : samples_) {
+        const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
+        if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
+        const double s = smp.tau * unit;
+        if (shared::ts_pyramid_slope(z_top_, z0, s, curvature_) <= best) break;
+        // Grid texel-centre coordinates to the coarse copy's (level `shift_` of the grid).
+        const float z = pyramid_.level(smp.level).sample_level0_valid((c + 0.5) * inv_scale - 0.5, (r + 0.5) * inv_scale - 0.5);
+        if (std::isnan(z)) continue;
+        best = std::max(best, shared::ts_pyramid_slope(z, z0, s, curvature_));
+    }
+    return best;
+}
+
+double FarField::march_sun(double col, double row, double z0, double step_c, double step_r, double unit, double clear,
+                           double dark) const {
+    const double wmax = width_ - 1, hmax = height_ - 1, inv_scale = 1.0 / coarse_scale();
+    double best = kNoSlope;
+    for (const PyramidSample& smp : sun_samples_) {
+        const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
+        if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
+        const double s = smp.tau * unit;
+        if (shared::ts_pyramid_slope(z_top_, z0, s, curvature_) <= std::max(best, clear)) break;
+        const float z = pyramid_.level(smp.level).sample_level0_valid((c + 0.5) * inv_scale - 0.5, (r + 0.5) * inv_scale - 0.5);
+        if (std::isnan(z)) continue;
+        best = std::max(best, shared::ts_pyramid_slope(z, z0, s, curvature_));
+        if (best >= dark) break;
+    }
+    return best;
+}
+
+void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_radius_rad, const ReceiverWindow& origin,
+                         const ReceiverWindow& receivers, const terrain::HeightGrid& grid, float* vis) const {
+    if (grid.width != width_ || grid.height != height_) throw InputError("far field: not the grid it was built on");
+    const double phi = (90.0 - azimuth_deg) * kPi / 180.0, elevation = elevation_deg * kPi / 180.0;
+    // A far horizon below this cannot touch the disc: skip the atan and the segment area.
+    const double clear = std::tan(std::min(elevation - sun_radius_rad, kPi / 2 - 1e-6));
+    const double dark = std::tan(std::min(elevation + sun_radius_rad, kPi / 2 - 1e-6));
+    parallel_for(receivers.height, thread_count(options_.threads), [&](int lr, int) {
+        const int row = receivers.row0 + lr;
+        const double dx = metrics_.dx(row), dy = metrics_.dy(row), unit = std::min(dx, dy);
+        const double step_c = std::cos(phi) * unit / dx, step_r = -std::sin(phi) * unit / dy;
+        for (int lc = 0; lc < receivers.width; ++lc) {
+            const int col = receivers.col0 + lc;
+            const float z0 = grid.at(col, row);
+            float& v = vis[std::size_t(row - origin.row0) * std::size_t(origin.width) + std::size_t(col - origin.col0)];
+            if (std::isnan(z0) || std::isnan(v) || v <= 0.0f) continue;
+            const double best = march_sun(col, row, z0, step_c, step_r, unit, clear, dark);
+            if (best == kNoSlope || best < clear) continue;
+            v = std::min(v, float(sun_disc_visible_fraction(std::atan(best), elevation, sun_radius_rad)));
+        }
+    });
+}
+
+void FarField::raise(HorizonSet& set, const ReceiverWindow& origin, const ReceiverWindow& receivers,
+                     const terrain::HeightGrid& grid) const {
+    if (grid.width != width_ || grid.height != height_) throw InputError("far field: not the grid it was built on");
+    if (receivers.col0 < origin.col0 || receivers.row0 < origin.row0 ||
+        receivers.col0 + receivers.width > origin.col0 + set.width ||
+        receivers.row0 + receivers.height > origin.row0 + set.height)
+        throw InputError("far field: receivers outside the horizon set's window");
+    const std::size_t nd = std::size_t(set.directions);
+    std::vector<double> cos_phi(nd), sin_phi(nd);
+    for (std::size_t d = 0; d < nd; ++d)
+        cos_phi[d] = std::cos(azimuth_rad(int(d), set.directions)), sin_phi[d] = std::sin(azimuth_rad(int(d), set.directions));
+    parallel_for(receivers.height, thread_count(options_.threads), [&](int lr, int) {
+        const int row = receivers.row0 + lr;
+        const double dx = metrics_.dx(row), dy = metrics_.dy(row), unit = std::min(dx, dy);
+        std::vector<double> step_c(nd), step_r(nd);
+        for (std::size_t d = 0; d < nd; ++d) step_c[d] = cos_phi[d] * unit / dx, step_r[d] = -sin_phi[d] * unit / dy;
+        for (int lc = 0; lc < receivers.width; ++lc) {
+            const int col = receivers.col0 + lc;
+            const float z0 = grid.at(col, row);
+            if (std::isnan(z0)) continue;
+            const std::size_t k = std::size_t(row - origin.row0) * std::size_t(set.width) + std::size_t(col - origin.col0);
+            for (int d = 0; d < set.directions; ++d) {
+                const double best = march(col, row, z0, step_c[std::size_t(d)], step_r[std::size_t(d)], unit);
+                if (best == kNoSlope) continue;
+                float& a = set.plane(d)[k];
+                a = std::max(a, float(std::atan(best)));
+            }
+        }
+    });
+}
+
+}  // namespace ts::visibility

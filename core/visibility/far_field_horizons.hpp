@@ -1,0 +1,85 @@
+#pragma once
+// The horizons that terrain far from a receiver casts, marched over a coarse copy of the grid:
+// what a window's exact sweep lacks when a block of a large grid is shaded on its window alone
+// (core/tiles/shade_source.cpp). Near terrain stays the exact sweep's; terrain farther than
+// `start_texels` is read from mean levels whose texel matches the gap between march samples
+// (the pyramid method's schedule, pyramid_schedule.hpp), so the march never reads the fine
+// grid and the copy it reads starts at the coarsest level the first far sample needs: a few
+// per cent of the grid's bytes at most. The sun's march takes a denser schedule than the sky's.
+//
+//   FarField far(level_grid, {.start_texels = halo});        // once per grid
+//   HorizonSet set = compute_horizons(window_grid, ...);     // exact, the window alone
+//   far.raise(set, window_origin, core);                     // + terrain beyond the window
+//
+// A receiver's exact horizons cover every direction to at least `start_texels` only if the
+// window reaches that far around it: raise() is for receivers at least that far inside the
+// window (or next to the grid's edge).
+#include <cstddef>
+#include <vector>
+
+#include "core/terrain/height_grid.hpp"
+#include "core/terrain/height_pyramid.hpp"
+#include "core/visibility/horizon_set.hpp"
+#include "core/visibility/pyramid_schedule.hpp"
+#include "core/visibility/row_metrics.hpp"
+
+namespace ts::visibility {
+
+struct FarFieldOptions {
+    // The far field begins this many grid texels from each receiver.
+    double start_texels = 256;
+    // Samples per octave of distance beyond it (the pyramid schedules': 2 fast, 4 balanced, ...)
+    // for the sky's horizons (every azimuth of every receiver) ...
+    int samples_per_octave = 4;
+    // ... and for the sun's (one azimuth per receiver, where a shadow's end must be crisp).
+    int sun_samples_per_octave = 16;
+    bool curvature = true;  // as HorizonOptions::curvature
+    int threads = 0;        // building and raising; 0 = one per core
+};
+
+class FarField {
+public:
+    // Reads `grid` (heights, voids, spacing) now; keeps only its coarse copy and row spacing.
+    // Throws ts::InputError for start_texels < 1 or samples_per_octave < 1.
+    FarField(const terrain::HeightGrid& grid, const FarFieldOptions& options);
+
+    // Raises the angles of `set` (receivers of a window of the grid whose top-left texel is
+    // `origin`) to the far terrain's where that is higher, for the receivers of `receivers`
+    // (grid coordinates, inside the set's window). Void receivers (NaN) stay NaN.
+    void raise(HorizonSet& set, const ReceiverWindow& origin, const ReceiverWindow& receivers,
+               const terrain::HeightGrid& grid) const;
+
+    // Lowers `vis` (a visible sun fraction per texel of the set's window whose top-left texel
+    // is `origin`, width `origin.width`) for the receivers of `receivers` to the part of the
+    // sun's disc above the far field's horizon in the sun's azimuth (user degrees: azimuth
+    // clockwise from north). NaN stays NaN.
+    void limit_sun(double azimuth_deg, double elevation_deg, double sun_radius_rad, const ReceiverWindow& origin,
+                   const ReceiverWindow& receivers, const terrain::HeightGrid& grid, float* vis) const;
+
+    // The highest far-field slope (tan elevation less curvature) at grid texel (col, row) of
+    // height z0 towards internal azimuth phi; -infinity where no far terrain lies that way.
+    double far_slope(double col, double row, double z0, double phi) const;
+
+    // Grid texels per texel of the coarse copy's finest level (a power of two).
+    int coarse_scale() const { return 1 << shift_; }
+    std::size_t bytes() const;
+
+private:
+    double march(double col, double row, double z0, double step_c, double step_r, double unit) const;
+    // The sun's march: stops once the slope reaches `dark` (the disc is hidden) or no farther
+    // terrain can reach `clear` (the disc's lower edge).
+    double march_sun(double col, double row, double z0, double step_c, double step_r, double unit, double clear,
+                     double dark) const;
+
+    FarFieldOptions options_;
+    int width_ = 0, height_ = 0;  // of the grid
+    int shift_ = 0;               // the coarse copy is grid level `shift_`
+    terrain::HeightPyramid pyramid_;
+    RowMetrics metrics_;
+    float z_top_ = 0;
+    double curvature_ = 0;
+    // tau >= start_texels; levels relative to the coarse copy.
+    std::vector<PyramidSample> samples_, sun_samples_;
+};
+
+}  // namespace ts::visibility

@@ -99,6 +99,11 @@ void transfer_vectors(const TransferInputs& in, float* transfer_out) {
         double zh[4];
         for (std::size_t tx = std::size_t(item) * kTransferItem; tx < t_end; ++tx) {
             for (int i = 0; i < kCoeffs; ++i) v[i] = in.log_visibility[std::size_t(i) * texels + tx];
+            if (std::isnan(v[0])) {  // a void receiver: T = NaN, without the exponentiation
+                for (int i = 0; i < kCoeffs; ++i)
+                    transfer_out[std::size_t(i) * texels + tx] = std::numeric_limits<float>::quiet_NaN();
+                continue;
+            }
             if (in.uniform_lobe) {
                 rotated_lobe(uniform_zh, in.lobe_axis + 3 * tx, lobe);
             } else {

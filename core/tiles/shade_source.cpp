@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 
 #include "core/material/material.hpp"
@@ -105,17 +107,55 @@ public:
             return cpu_->compute(level_, r);
         }
         visibility::check_request(r);
-        r.horizon.window = {};
+        // Only the core's receivers: the halo's values are never kept, and void (NaN) receivers
+        // cost nothing in the products and the transfer.
+        r.horizon.window = {core_.col0 - window_.col0, core_.row0 - window_.row0, core_.width, core_.height};
         visibility::VisibilityResult result;
         result.horizons = visibility::compute_horizons(window_grid, r.horizon);
-        far_->raise(result.horizons, {window_.col0, window_.row0, window_.width, window_.height},
+        far_->raise(result.horizons, {core_.col0, core_.row0, core_.width, core_.height},
                     {core_.col0, core_.row0, core_.width, core_.height}, level_);
+        grow_to_window(result.horizons);
+        r.horizon.window = {};
         result.stages.push_back({"horizons (exact in the window, far field beyond)", "cpu", 0.0});
         visibility::complete_on_cpu(window_grid, r, result);
         return result;
     }
 
 private:
+    // The core's horizon set as the window's, the halo's receivers void (NaN), in place: every
+    // value moves to an offset at or past its own, so copying from the end never overwrites
+    // one not yet moved.
+    void grow_to_window(visibility::HorizonSet& set) const {
+        const std::size_t cw = std::size_t(core_.width), ch = std::size_t(core_.height);
+        const std::size_t ww = std::size_t(window_.width), wn = ww * std::size_t(window_.height), cn = cw * ch;
+        const std::size_t dc = std::size_t(core_.col0 - window_.col0), dr = std::size_t(core_.row0 - window_.row0);
+        const std::size_t planes = std::size_t(set.directions);
+        set.angle.resize(planes * wn);
+        float* a = set.angle.data();
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        for (std::size_t d = planes; d-- > 0;) {
+            float* to = a + d * wn;
+            for (std::size_t r = ch; r-- > 0;) {
+                float* row = to + (dr + r) * ww;
+                std::memmove(row + dc, a + d * cn + r * cw, cw * sizeof(float));
+            }
+        }
+        // The halo: every window texel outside the core, in every plane.
+        for (std::size_t d = 0; d < planes; ++d) {
+            float* to = a + d * wn;
+            for (std::size_t r = 0; r < std::size_t(window_.height); ++r) {
+                float* row = to + r * ww;
+                if (r < dr || r >= dr + ch) {
+                    std::fill(row, row + ww, nan);
+                } else {
+                    std::fill(row, row + dc, nan);
+                    std::fill(row + dc + cw, row + ww, nan);
+                }
+            }
+        }
+        set.width = window_.width, set.height = window_.height;
+    }
+
     const terrain::HeightGrid& level_;
     Rect window_, core_;
     const visibility::FarField* far_;

@@ -51,6 +51,10 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "relief/svf/color: texels around each block it is shaded with (the reach of cast shadows and of the "
                    "sky's exact horizons)")
         ->capture_default_str();
+    cmd.add_option("--resampling", a.resampling,
+                   "relief/svf/color: between source texels, cubic (Catmull-Rom: crisp where a zoom magnifies its "
+                   "DEM level) or bilinear")
+        ->capture_default_str();
     cmd.add_option("--far-field", a.far_field,
                    "relief/svf/color in blocks: the sky's terrain beyond the halo, exact (the whole level swept per "
                    "block: slow) or marched over coarser levels: fast, balanced, fine, finest")
@@ -82,6 +86,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);
+    s.resampling = tiles::parse_resampling(a.resampling);
     s.threads = a.threads;
     tiles::check_tile_job(job);
     return job;

@@ -23,6 +23,7 @@ struct TilesArgs {
     int block_texels = 2048;
     int block_halo = 256;
     std::string far_field = "balanced";
+    std::string resampling = "cubic";
     int threads = 0;
 };
 

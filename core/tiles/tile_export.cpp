@@ -65,7 +65,7 @@ std::string describe_job(const TileJob& job) {
            ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto-native\"")) +
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
-           std::string(far_field_name(s.far_field)) + "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
+           std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) + "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
            number(s.sky.turbidity) + "}\n";
 }
 

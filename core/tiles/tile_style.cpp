@@ -24,6 +24,14 @@ std::string_view tile_style_name(TileStyle s) {
     return "?";
 }
 
+Resampling parse_resampling(std::string_view text) {
+    if (text == "bilinear") return Resampling::bilinear;
+    if (text == "cubic") return Resampling::cubic;
+    throw InputError("--resampling " + std::string(text) + ": use bilinear or cubic");
+}
+
+std::string_view resampling_name(Resampling r) { return r == Resampling::cubic ? "cubic" : "bilinear"; }
+
 FarFieldMethod parse_far_field(std::string_view text) {
     for (FarFieldMethod m : {FarFieldMethod::exact, FarFieldMethod::fast, FarFieldMethod::balanced, FarFieldMethod::fine,
                              FarFieldMethod::finest})

@@ -31,6 +31,17 @@ std::string_view far_field_name(FarFieldMethod m);
 // The march's samples per octave (0 for exact).
 int far_field_samples_per_octave(FarFieldMethod m);
 
+// How relief, svf and color tiles sample their source between texels (hillshade and
+// multidirectional take bilinear heights, as gdaldem's pipeline).
+enum class Resampling {
+    bilinear,
+    cubic,  // Catmull-Rom: crisp where a zoom magnifies its level
+};
+
+// "bilinear" or "cubic"; throws ts::InputError naming --resampling otherwise.
+Resampling parse_resampling(std::string_view text);
+std::string_view resampling_name(Resampling r);
+
 // "relief", "hillshade", ...; throws ts::InputError naming --style otherwise.
 TileStyle parse_tile_style(std::string_view text);
 std::string_view tile_style_name(TileStyle s);
@@ -57,6 +68,7 @@ struct TileShading {
     int block_halo_texels = 256;
     // relief, svf, color in blocks: the sky's terrain beyond the halo.
     FarFieldMethod far_field = FarFieldMethod::balanced;
+    Resampling resampling = Resampling::cubic;  // relief, svf, color
     int threads = 0;
 };
 

@@ -415,6 +415,8 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
         {"--zoom 8-x", "Z0-Z1"},
         {"--zoom 8 --tile-size 300", "256 or 512"},
         {"--zoom 8 --style shiny", "--style"},
+        {"--zoom 8 --far-field near", "--far-field"},
+        {"--zoom 8 --resampling lanczos", "--resampling"},
         {"--zoom 8 --z-factor 0", "--z-factor"},
         {"--zoom 8 --exaggeration much", "--exaggeration"},
         {"--zoom 8 --time 2025-13-01T00:00Z", "month 13"},

@@ -105,6 +105,48 @@ void shade_pixels(const Sampler& sample, int channels, const TileScratch& sc, co
     }
 }
 
+// CatmullRom's numbers for a one-channel source on a separable pixel map, with each column's
+// and row's taps and weights found once (the same operations in the same order).
+void shade_grey_cubic_separable(const ShadeSource& source, const TileScratch& sc, double inv_scale, int n, TileImage& out) {
+    struct Taps {
+        int index[4];
+        float weight[4];
+    };
+    auto taps = [](double v, int size) {
+        v = std::clamp(v, 0.0, double(size - 1));
+        const int i0 = std::min(int(v), size - 1);
+        Taps t;
+        CatmullRom::weights(float(v - i0), t.weight);
+        for (int k = 0; k < 4; ++k) t.index[k] = std::clamp(i0 - 1 + k, 0, size - 1);
+        return t;
+    };
+    std::vector<Taps> cols(static_cast<std::size_t>(n)), rows(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        cols[std::size_t(i)] = taps(sc.at[std::size_t(i)].x * inv_scale - 0.5, source.width);
+        rows[std::size_t(i)] = taps(sc.at[std::size_t(i) * std::size_t(n)].y * inv_scale - 0.5, source.height);
+    }
+    const SrgbTable& code = srgb_table();
+    const std::size_t w = std::size_t(source.width);
+    for (int j = 0; j < n; ++j) {
+        const Taps& r = rows[std::size_t(j)];
+        const float* line[4];
+        for (int k = 0; k < 4; ++k) line[k] = source.values.data() + std::size_t(r.index[k]) * w;
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = std::size_t(j) * std::size_t(n) + std::size_t(i);
+            if (!sc.covered[k]) continue;
+            const Taps& c = cols[std::size_t(i)];
+            float sum = 0;
+            for (int y = 0; y < 4; ++y) {
+                float acc = 0;
+                for (int x = 0; x < 4; ++x) acc += c.weight[x] * line[y][c.index[x]];
+                sum += r.weight[y] * acc;
+            }
+            out.pixels[2 * k] = code(sum);
+            out.pixels[2 * k + 1] = 255;
+        }
+    }
+}
+
 }  // namespace
 
 void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& sc) {
@@ -188,6 +230,10 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
             horn_multidirectional(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
         for (std::size_t k = 0; k < sc.grey.size(); ++k)
             if (sc.covered[k]) out.pixels[2 * k] = sc.grey[k], out.pixels[2 * k + 1] = 255;
+        return;
+    }
+    if (shading.resampling == Resampling::cubic && source.channels == 1 && map.separable()) {
+        shade_grey_cubic_separable(source, sc, inv_scale, n, out);
         return;
     }
     if (shading.resampling == Resampling::cubic)

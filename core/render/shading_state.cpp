@@ -5,12 +5,16 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "core/geo/azimuth.hpp"
 #include "core/render/diffuse_band_correction.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/material/log_brdf.hpp"
+#include "core/visibility/blocker_footprint.hpp"
+#include "core/visibility/blocker_log_sh.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/sun_sweep.hpp"
@@ -90,6 +94,57 @@ void ShadingState::bound_changed(const visibility::TexelRect& rect, const std::v
     for (std::size_t k = 0; k < changed.size(); ++k) weight[k] = sky_weight(changed[k]);
     if (!sky_clamp_) sky_clamp_ = std::make_unique<BlockerSkyClamp>(options_.band_correction ? 9 : 16);
     sky_clamp_->replace(rect, grid_.width, changed, t_blocked, t_terrain, weight.data());
+}
+
+visibility::TexelRect ShadingState::move_mesh(std::size_t k, blockers::PlacedSpheres placed) {
+    if (k >= blockers_.meshes.size()) throw std::out_of_range("ShadingState::move_mesh: no mesh " + std::to_string(k));
+    const double min_sine = blockers::min_cap_sine(blockers_.options.min_solid_angle_sr);
+    const visibility::TexelRect before = visibility::sky_footprint(grid_, blockers_.meshes[k], min_sine);
+    blockers_.meshes[k] = std::move(placed);
+    blocker_sun_.reset();  // it keeps per-mesh bounds of the old placement
+    const visibility::TexelRect after = visibility::sky_footprint(grid_, blockers_.meshes[k], min_sine);
+    visibility::TexelRect rect = before.empty() ? after : before;
+    if (!before.empty() && !after.empty())
+        rect = {std::min(before.col0, after.col0), std::min(before.row0, after.row0), std::max(before.col1, after.col1),
+                std::max(before.row1, after.row1)};
+    update_blocked_rect(rect);
+    return rect;
+}
+
+void ShadingState::recompute_blockers() {
+    if (!blockers_.empty()) update_blocked_rect({0, 0, grid_.width, grid_.height});
+}
+
+void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
+    if (rect.empty()) return;
+    const int w = rect.col1 - rect.col0, h = rect.row1 - rect.row0;
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    std::vector<std::uint32_t> index(n);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c)
+            index[std::size_t(r) * std::size_t(w) + std::size_t(c)] =
+                std::uint32_t(std::size_t(rect.row0 + r) * std::size_t(grid_.width) + std::size_t(rect.col0 + c));
+    std::vector<float> terrain(16 * n);
+    gather(terrain_log_sh_.data(), texels_, index, terrain.data());
+    std::vector<float> blocked = terrain;
+    visibility::add_blocker_log_sh(grid_, {rect.col0, rect.row0, w, h}, blockers_,
+                                   visibility::curvature_factor(options_.curvature), options_.threads, blocked.data());
+    // The rectangle's transfer is the terrain's, the blocked one where the blockers changed it.
+    std::vector<float> t_rect(16 * n);
+    diffuse_transfer(terrain.data(), n, index.data(), t_rect.data());
+    std::vector<std::uint32_t> changed, at;
+    for (std::size_t k = 0; k < n; ++k)
+        if (differs(blocked.data(), terrain.data(), n, k)) changed.push_back(index[k]), at.push_back(std::uint32_t(k));
+    const std::size_t m = changed.size();
+    std::vector<float> log_b(16 * m), t_blocked(16 * m), t_terrain(16 * m);
+    gather(blocked.data(), n, at, log_b.data());
+    diffuse_transfer(log_b.data(), m, changed.data(), t_blocked.data());
+    gather(t_rect.data(), n, at, t_terrain.data());
+    for (int i = 0; i < 16; ++i)
+        for (std::size_t j = 0; j < m; ++j) t_rect[std::size_t(i) * n + at[j]] = t_blocked[std::size_t(i) * m + j];
+    bound_changed(rect, changed, t_blocked.data(), t_terrain.data());
+    if (diffuse_) diffuse_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
+    else diffuse_field_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
 }
 
 std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& grid, MaterialRaster materials,

@@ -89,7 +89,7 @@ struct RendererOptions {
     visibility::SunMethod sun_method = visibility::SunMethod::sweep;
     // Mesh blockers over the grid (must outlive the state): their sphere log-SH joins the
     // visibility (through the backend's request), their sun shadows multiply each frame's sun
-    // visibility. nullptr or empty: none. The state keeps its own copy.
+    // visibility. nullptr or empty: none. The state keeps its own copy (move_mesh changes it).
     const blockers::SphereBlockers* blockers = nullptr;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
@@ -144,10 +144,22 @@ public:
     const blockers::SphereBlockers& blockers() const { return blockers_; }
     const BlockerSkyClamp* blocker_sky_clamp() const { return sky_clamp_.get(); }
 
+    // Mesh k of the blockers moves to `placed` (a moving mesh, relight --mesh-path): in the
+    // bounding rectangle of its old and new sky footprints the terrain's log-SH is restored,
+    // every mesh's spheres added again, and the diffuse transfer, its copy for the frames and
+    // the sky bound recomputed; nothing outside that rectangle changes. The sun shadows follow
+    // on the next sun_visibility. The specular texels' sheen keeps the first placement's
+    // visibility. Returns the rectangle. Throws std::out_of_range for a bad k.
+    visibility::TexelRect move_mesh(std::size_t k, blockers::PlacedSpheres placed);
+    // The same recompute over the whole grid (what move_mesh saves; tests compare the two).
+    void recompute_blockers();
+
 private:
     // The band-corrected diffuse transfer of n texels (grid indices `index`; null: texel k is k)
     // from their log-SH [16][n], into `out` [16][n], through the backend when there is one.
     void diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index, float* out) const;
+    // Recomputes the blockers' part of the texels of `rect` (move_mesh).
+    void update_blocked_rect(const visibility::TexelRect& rect);
     // Hands the sky bound the changed texels of a rectangle (grid indices, ascending) with their
     // blocked and terrain-only transfers [16][changed].
     void bound_changed(const visibility::TexelRect& rect, const std::vector<std::uint32_t>& changed,

@@ -1,6 +1,7 @@
 // `terrashade relight`: the same DEM under the sun and sky of many instants. Visibility and
 // transfer vectors are computed once; each frame is only the sky's SH, the sun's visibility
 // sweep and the per-texel shading (docs/rendering.md, "Relighting").
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "app/io_plan.hpp"
 #include "app/render_options.hpp"
 #include "app/shard_option.hpp"
+#include "core/fly/flight_path.hpp"
 #include "core/render/background_writer.hpp"
 #include "core/render/sequence_exposure.hpp"
 #include "core/light/time_interval.hpp"
@@ -40,6 +42,7 @@ struct RelightArgs {
     int writer_threads = render::kDefaultWriterThreads;
     bool skip_night = false;
     std::string shard;  // K/N
+    std::string mesh_path;  // the first --mesh follows this flight path (CSV, core/fly/flight_path.hpp)
 };
 
 // Below this sun elevation it is night for --skip-night: the end of civil twilight, when the
@@ -83,6 +86,24 @@ struct Frame {
     std::string file;
     double ev100 = 0;
     std::size_t index = 0;  // in the whole series (a shard has a part of it)
+    double offset_s = 0;    // seconds from the series' first instant (where --mesh-path's t_s starts)
+};
+
+// --mesh-path: the first --mesh's pose at a frame, from the path's pose `offset_s` after its
+// first sample (held at the ends), its scale kept.
+mesh::Placement pose_on_path(const fly::FlightPath& path, double offset_s, const mesh::Placement& start) {
+    const fly::FlightPose p = path.at(path.start_s() + offset_s);
+    mesh::Placement m = start;
+    m.lon_deg = p.lon_deg, m.lat_deg = p.lat_deg, m.height_m = p.height_m, m.above_ground = false;
+    m.heading_deg = p.heading_deg, m.pitch_deg = p.pitch_deg, m.roll_deg = p.roll_deg;
+    return m;
+}
+
+// The moving mesh's per-frame cost, for the closing line.
+struct MeshMotion {
+    double seconds = 0;
+    long long texels = 0;
+    std::size_t moves = 0;
 };
 
 void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>& frames, bool linear) {
@@ -103,10 +124,30 @@ void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>
 
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
-    render::SceneOptions options = scene_options(a.render);
-    const render::Exposure exposure = exposure_of(a.render);
+    RenderArgs render_args = a.render;
+    fly::FlightPath path;
+    if (!a.mesh_path.empty()) {
+        MeshArgs& m = render_args.meshes;
+        if (m.files.empty()) throw InputError("--mesh-path moves the first --mesh: give one");
+        if (m.at.size() + 1 != m.files.size())
+            throw InputError("--mesh-path: the first --mesh follows the path, so give --at only for the other meshes (" +
+                             std::to_string(m.files.size() - 1) + "), got " + std::to_string(m.at.size()));
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(a.mesh_path, ec)) throw input_error(a.mesh_path, "--mesh-path: no such file");
+        path = fly::read_flight_path(a.mesh_path);
+        if (path.empty()) throw input_error(a.mesh_path, "--mesh-path: no poses in the file");
+        // The first pose stands in for the first mesh's --at: every check of a placement applies.
+        const fly::FlightPose p0 = path.poses().front();
+        char at[128];
+        std::snprintf(at, sizeof at, "%.9f,%.9f,%.6f", p0.lon_deg, p0.lat_deg, p0.height_m);
+        m.at.insert(m.at.begin(), at);
+    }
+    render::SceneOptions options = scene_options(render_args);
+    if (!path.empty() && options.view == render::ViewKind::perspective)
+        throw InputError("--mesh-path: a moving mesh is drawn in map and extent views only (--view map or an extent)");
+    const render::Exposure exposure = exposure_of(render_args);
     IoPlan plan;
-    plan_render_inputs(plan, a.render, options);
+    plan_render_inputs(plan, render_args, options);
     plan.input("--times-file", a.times_file).output_directory("--out", a.out_dir);
     plan.check();
     const Shard shard = shard_of_process(a.shard);
@@ -117,7 +158,15 @@ void run_relight(const RelightArgs& a) {
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
-    attach_meshes(a.render, dem, options);
+    // Every pose of the path on the DEM, before the meshes are read (a sample off it: exit 2 now).
+    for (const fly::FlightPose& p : path.poses()) {
+        mesh::Placement on;
+        on.lon_deg = p.lon_deg, on.lat_deg = p.lat_deg;
+        char where[64];
+        std::snprintf(where, sizeof where, " (t_s %g)", p.t_s);
+        render::mesh_anchor(dem.georef, on, a.mesh_path + where);
+    }
+    attach_meshes(render_args, dem, options);
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
@@ -136,7 +185,8 @@ void run_relight(const RelightArgs& a) {
         if (sun.elevation_deg < kNightElevationDeg) ++night;
         if (sun.elevation_deg < -0.27) ++down;
         if (a.skip_night && sun.elevation_deg < kNightElevationDeg) continue;
-        frames.push_back({t, sun, "", 0});
+        frames.push_back({t, sun, "", 0, 0,
+                          std::chrono::duration<double>(t - times.front()).count()});
     }
     if (frames.empty())
         throw InputError("relight: the sun is below " + std::to_string(int(kNightElevationDeg)) +
@@ -180,8 +230,15 @@ void run_relight(const RelightArgs& a) {
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
-    print_stages(a.render, *scene);
+    print_stages(render_args, *scene);
     const double setup_s = t0.seconds();
+    MeshMotion motion;
+    auto place_mesh = [&](const Frame& fr) {
+        if (path.empty()) return;
+        const Stopwatch tm;
+        const visibility::TexelRect r = scene->move_mesh(0, pose_on_path(path, fr.offset_s, options.meshes[0].placement));
+        motion.seconds += tm.seconds(), motion.texels += r.texels(), ++motion.moves;
+    };
 
     render::LinearImage image;
     const bool linear = a.format == "exr";
@@ -193,6 +250,7 @@ void run_relight(const RelightArgs& a) {
         std::size_t brightest = 0;
         for (std::size_t k = 1; k < frames.size(); ++k)
             if (frames[k].sun.elevation_deg > frames[brightest].sun.elevation_deg) brightest = k;
+        place_mesh(frames[brightest]);
         scene->render(frames[brightest].sun, image);
         reference_ev = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
         sequence.emplace(reference_ev);
@@ -208,6 +266,7 @@ void run_relight(const RelightArgs& a) {
         ProgressBar bar("relight", frames.size(), "frames");
         for (Frame& fr : frames) {
             const Stopwatch tf;
+            place_mesh(fr);
             scene->render(fr.sun, image);
             render_s += tf.seconds();
             width = image.width, height = image.height;
@@ -232,6 +291,18 @@ void run_relight(const RelightArgs& a) {
         std::printf("exposure: automatic per frame, smoothed: EV100 %.2f to %.2f (at most %.0f EV brighter than the "
                     "highest sun's %.2f; --exposure EV fixes one)\n",
                     ev_min, ev_max, render::SequenceExposureOptions{}.max_boost_ev, reference_ev);
+    if (motion.moves > 0) {
+        // The same recompute over the whole grid, once, in this run: what each frame would cost
+        // without the footprint rectangles.
+        const Stopwatch tw;
+        scene->recompute_blockers();
+        const double whole_s = tw.seconds();
+        const double per_frame = motion.seconds / double(motion.moves);
+        std::printf("mesh %s along %s: %.2f ms a frame recomputing %.0f texels on average (old and new footprints); "
+                    "the whole grid's recompute %.2f ms (%.1fx slower), the scene from scratch %.3f s\n",
+                    options.meshes[0].name.c_str(), a.mesh_path.c_str(), 1e3 * per_frame,
+                    double(motion.texels) / double(motion.moves), 1e3 * whole_s, whole_s / per_frame, setup_s);
+    }
     const double px = double(width) * height * double(frames.size());
     std::printf("relit %zu frames (%dx%d) into %s (with times.csv): visibility + transfer once %.3f s; frames %.3f s "
                 "rendering (%.1f Mpx/s), %.3f s with files written (%.1f Mpx/s)\n",
@@ -264,6 +335,10 @@ void add_relight_command(CLI::App& root) {
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
     add_shard_option(*cmd, a->shard);
+    cmd->add_option("--mesh-path", a->mesh_path,
+                    "The first --mesh follows this flight path (CSV t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg; "
+                    "t_s from the first instant, heights above the datum; give --at only for the other meshes): per "
+                    "frame only its old and new footprints are recomputed (docs/blockers.md)");
     cmd->add_flag("--skip-night", a->skip_night, "Leave out instants with the sun below -6 degrees (after civil dusk)");
     cmd->callback([a] { run_relight(*a); });
 }

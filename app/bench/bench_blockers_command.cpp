@@ -21,6 +21,7 @@
 #include "core/dem/read_dem.hpp"
 #include "core/geo/azimuth.hpp"
 #include "core/mesh/mesh_import.hpp"
+#include "core/render/blocker_sky_clamp.hpp"
 #include "core/render/scene_blockers.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/angles.hpp"
@@ -46,6 +47,9 @@ struct Row {
     double sky_s = 0;
     double sun_iou = 0, sun_rmse = 0, sun_s = 0;
     long long sun_ref_texels = 0, sun_ours_texels = 0;
+    // The same sky figures without the renderer's bound (render::blocked_sky_term), and the
+    // largest brightening the mesh makes there (the bound makes it 0).
+    double raw_sky_rmse = 0, raw_shaded_rmse = 0, raw_sky_max = 0, raw_brightening = 0;
 };
 
 visibility::TexelRect bounding(const visibility::TexelRect& a, const visibility::TexelRect& b) {
@@ -57,14 +61,17 @@ visibility::TexelRect bounding(const visibility::TexelRect& a, const visibility:
 void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ostringstream t;
     t << "spheres,excess_volume_ratio,decompose_s,sky_texels,sky_rmse,sky_max_error,sky_bias,ref_sky_shadow_mean,"
-         "shaded_texels,shaded_rmse,ref_sky_shadow_max,sphere_texel_pairs,sky_s,sun_iou,sun_rmse,sun_ref_texels,sun_ours_texels,sun_s\n";
+         "shaded_texels,shaded_rmse,ref_sky_shadow_max,sphere_texel_pairs,sky_s,sun_iou,sun_rmse,sun_ref_texels,sun_ours_texels,sun_s,"
+         "unbounded_sky_rmse,unbounded_shaded_rmse,unbounded_sky_max_error,unbounded_max_brightening\n";
     for (const Row& r : rows)
         t << r.count << ',' << csv_number(r.excess) << ',' << csv_number(r.decompose_s) << ',' << r.sky_texels << ','
           << csv_number(r.sky_rmse) << ',' << csv_number(r.sky_max) << ',' << csv_number(r.sky_bias) << ','
           << csv_number(r.ref_shadow_mean) << ',' << r.shaded_texels << ',' << csv_number(r.shaded_rmse) << ','
           << csv_number(r.ref_dark_max) << ',' << r.pairs << ',' << csv_number(r.sky_s) << ','
           << csv_number(r.sun_iou) << ',' << csv_number(r.sun_rmse) << ',' << r.sun_ref_texels << ','
-          << r.sun_ours_texels << ',' << csv_number(r.sun_s) << '\n';
+          << r.sun_ours_texels << ',' << csv_number(r.sun_s) << ',' << csv_number(r.raw_sky_rmse) << ','
+          << csv_number(r.raw_shaded_rmse) << ',' << csv_number(r.raw_sky_max) << ',' << csv_number(r.raw_brightening)
+          << '\n';
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out << t.str();
@@ -144,8 +151,9 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
     const sh::ExpMethod exp = sh::ExpMethod::scaling_squaring;  // the renderer's default
     const int sky_w = sky_rect.col1 - sky_rect.col0, sun_w = sun_rect.col1 - sun_rect.col0;
     std::vector<Row> rows;
-    std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s\n", "spheres", "excess", "sky_rmse", "sky_max",
-                "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms", "sun_iou", "sun_rmse", "sun_ms");
+    std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s | %9s %9s %9s %9s\n", "spheres", "excess",
+                "sky_rmse", "sky_max", "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms", "sun_iou",
+                "sun_rmse", "sun_ms", "ub_rmse", "ub_shade", "ub_max", "ub_bright");
     for (const Set& s : sets) {
         Row row;
         row.count = int(s.d.spheres.size()), row.decompose_s = s.d.seconds, row.excess = s.d.excess_volume_ratio;
@@ -154,17 +162,24 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         const visibility::BlockerStageStats st = visibility::add_blocker_log_sh(
             grid, {0, 0, grid.width, grid.height}, s.b, curvature, o.threads, log_sh.data());
         row.sky_s = t1.seconds(), row.pairs = st.sphere_texel_pairs;
-        double se = 0, bias = 0, dark = 0, shaded_se = 0;
-        long long n = 0;
+        double se = 0, bias = 0, dark = 0, shaded_se = 0, raw_se = 0, raw_shaded_se = 0;
+        long long n = 0, raw_shaded = 0;
         for (int r = sky_rect.row0; r < sky_rect.row1; ++r)
             for (int c = sky_rect.col0; c < sky_rect.col1; ++c) {
                 const std::size_t t = std::size_t(r) * grid.width + c;
                 const std::size_t k = std::size_t(r - sky_rect.row0) * sky_w + std::size_t(c - sky_rect.col0);
                 if (std::isnan(sky_ref.terrain[k])) continue;
-                const double ours = visibility::sky_visibility_of_log_sh(log_sh.data() + t, texels, exp, lobe) -
-                                    visibility::sky_visibility_of_log_sh(base.log_sh.data() + t, texels, exp, lobe);
+                const double with = visibility::sky_visibility_of_log_sh(log_sh.data() + t, texels, exp, lobe);
+                const double without = visibility::sky_visibility_of_log_sh(base.log_sh.data() + t, texels, exp, lobe);
+                const double raw = with - without;
+                // As the renderer shades it: bounded by the terrain's own.
+                const double ours = render::blocked_sky_term(with, without) - without;
                 const double ref = double(sky_ref.with_mesh[k]) - double(sky_ref.terrain[k]);
-                const double e = ours - ref;
+                const double e = ours - ref, raw_e = raw - ref;
+                raw_se += raw_e * raw_e;
+                row.raw_sky_max = std::max(row.raw_sky_max, std::abs(raw_e));
+                row.raw_brightening = std::max(row.raw_brightening, raw);
+                if (std::max(std::abs(raw), std::abs(ref)) > 0.01) raw_shaded_se += raw_e * raw_e, ++raw_shaded;
                 se += e * e, bias += e, dark += -ref, ++n;
                 row.ref_dark_max = std::max(row.ref_dark_max, -ref);
                 if (std::max(std::abs(ours), std::abs(ref)) > 0.01) shaded_se += e * e, ++row.shaded_texels;
@@ -172,6 +187,8 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
             }
         row.sky_texels = n;
         row.shaded_rmse = row.shaded_texels ? std::sqrt(shaded_se / double(row.shaded_texels)) : 0.0;
+        row.raw_sky_rmse = n ? std::sqrt(raw_se / n) : 0.0;
+        row.raw_shaded_rmse = raw_shaded ? std::sqrt(raw_shaded_se / double(raw_shaded)) : 0.0;
         row.sky_rmse = n ? std::sqrt(se / n) : 0.0, row.sky_bias = n ? bias / n : 0.0, row.ref_shadow_mean = n ? dark / n : 0.0;
 
         std::vector<float> vis(texels, 1.0f);
@@ -193,16 +210,20 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
             }
         row.sun_iou = either ? double(both) / double(either) : NAN;
         row.sun_rmse = m ? std::sqrt(sse / m) : 0.0;
-        std::printf("%7d %7.2f %9.4f %9.4f %+9.4f %9.4f %7lld %9.4f %11lld %8.1f %8.3f %8.4f %8.2f\n", row.count, row.excess,
-                    row.sky_rmse, row.sky_max, row.sky_bias, row.ref_shadow_mean, row.shaded_texels, row.shaded_rmse,
-                    row.pairs, 1e3 * row.sky_s, row.sun_iou, row.sun_rmse, 1e3 * row.sun_s);
+        std::printf("%7d %7.2f %9.4f %9.4f %+9.4f %9.4f %7lld %9.4f %11lld %8.1f %8.3f %8.4f %8.2f | %9.4f %9.4f %9.4f "
+                    "%9.4f\n",
+                    row.count, row.excess, row.sky_rmse, row.sky_max, row.sky_bias, row.ref_shadow_mean,
+                    row.shaded_texels, row.shaded_rmse, row.pairs, 1e3 * row.sky_s, row.sun_iou, row.sun_rmse,
+                    1e3 * row.sun_s, row.raw_sky_rmse, row.raw_shaded_rmse, row.raw_sky_max, row.raw_brightening);
         std::fflush(stdout);
         rows.push_back(row);
     }
     std::printf("sky: error of the sky-visibility change the mesh makes (ours - triangles) over the %lld texels of the sky "
                 "footprint; ref_dark: the triangles' mean darkening there (largest %.3f); shaded, shade_rms: the texels "
                 "either changes by more than 0.01 and the RMSE over them. sun: shadow = less than half the disc, %lld "
-                "texels of the triangles'\n",
+                "texels of the triangles'. ours is bounded by the terrain's own sky per texel as the renderer shades it "
+                "(render::blocked_sky_term); ub_*: the same without the bound, ub_bright the largest brightening the "
+                "mesh makes\n",
                 rows.empty() ? 0 : rows[0].sky_texels, rows.empty() ? 0.0 : rows[0].ref_dark_max,
                 rows.empty() ? 0 : rows[0].sun_ref_texels);
     if (!o.csv.empty()) write_csv(o.csv, rows);

@@ -226,6 +226,29 @@ DiffuseShading::DiffuseShading(const Inputs& in) : storage_(std::make_unique<Sto
 
 DiffuseShading::~DiffuseShading() = default;
 
+void DiffuseShading::update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer) {
+    if (w <= 0 || h <= 0) return;
+    if (!transfer) throw std::invalid_argument("DiffuseShading::update_rect: null transfer");
+    if (col0 < 0 || row0 < 0 || col0 + w > grid_width ||
+        std::size_t(row0 + h) * std::size_t(grid_width) > storage_->texels)
+        throw std::invalid_argument("DiffuseShading::update_rect: rectangle outside the texels");
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    std::visit(
+        [&](auto& blocks) {
+            using BlockT = typename std::decay_t<decltype(blocks)>::value_type;
+            using S = std::decay_t<decltype(blocks[0].t[0][0])>;
+            constexpr int K = sizeof(BlockT::t) / sizeof(BlockT::t[0]);
+            for (int r = 0; r < h; ++r)
+                for (int c = 0; c < w; ++c) {
+                    const std::size_t t = std::size_t(row0 + r) * std::size_t(grid_width) + std::size_t(col0 + c);
+                    const std::size_t k = std::size_t(r) * std::size_t(w) + std::size_t(c);
+                    BlockT& blk = blocks[t / kLanes];
+                    for (int i = 0; i < K; ++i) blk.t[i][t % kLanes] = S(transfer[std::size_t(i) * n + k]);
+                }
+        },
+        storage_->blocks);
+}
+
 std::size_t DiffuseShading::texels() const { return storage_->texels; }
 
 std::size_t DiffuseShading::bytes() const {

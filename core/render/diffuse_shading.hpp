@@ -42,6 +42,10 @@ public:
     DiffuseShading& operator=(const DiffuseShading&) = delete;
 
     std::size_t texels() const;
+    // Rewrites the transfer of the texels of a rectangle: columns [col0, col0 + w), rows
+    // [row0, row0 + h) of a grid `grid_width` texels wide (texel t = row * grid_width + col);
+    // `transfer` is [16][w * h], the rectangle's texels row-major. Albedo and normals stay.
+    void update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer);
     // Bytes of the compact copy (what each frame streams besides sun_vis and out).
     std::size_t bytes() const;
     // The formula above for every texel; `sun_vis` has texels() entries, `e_diffuse` is

@@ -53,17 +53,24 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
 
     t0.restart();
     const std::vector<std::uint32_t>& spec_index = state_.specular_index();
-    if (!spec_index.empty()) shade_transfer(view_.t_spec.data(), spec_index.size(), sky_sh, spec_rgb_.data(), threads);
+    if (!spec_index.empty()) {
+        shade_transfer(view_.t_spec.data(), spec_index.size(), sky_sh, spec_rgb_.data(), threads);
+        if (view_.spec_clamp) view_.spec_clamp->apply(sky_sh, spec_rgb_.data(), threads);
+    }
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));
     const glm::vec3 e_diffuse = sun_up ? e_sun * kInvPi : glm::vec3(0.0f);
     const DiffuseShading* fused = state_.fused_diffuse();
+    // A mesh blocker only removes light: its texels' sky terms are bounded by the terrain's.
+    const BlockerSkyClamp* clamp = state_.blocker_sky_clamp();
     // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
     // the backend's <T_d, L> then a second SoA loop otherwise.
     if (fused) {
         fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, out.data(), threads);
+        if (clamp) clamp->apply(sky_sh, out.data(), threads);
     } else {
         state_.diffuse_field()->shade(sky_sh, diffuse_rgb_.data());
+        if (clamp) clamp->apply(sky_sh, diffuse_rgb_.data(), threads);
         const MaterialRaster& m = state_.materials();
         const NormalField& nf = state_.normals();
         const int width = state_.width();

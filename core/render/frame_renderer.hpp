@@ -7,7 +7,8 @@
 //   L_out = albedo <T_d, L> + ks <T_s, L>
 //         + sun_vis E_sun [albedo/pi max(0, n.s) + ks (alpha+1)/(2 pi) max(0, r.s)^alpha [n.s > 0]]
 //   water: F L_sky(r) V(r) + (1 - F) 0.02 <T_d, L> + sun glint F L_sun [r in the disc] + (1 - F) 0.02/pi E_sun n.s
-// (T_d: shading_state.hpp; T_s, r, F, V(r): view_shading.hpp; the BRDFs: docs/rendering.md).
+// (<T_d, L> of texels mesh blockers change: at most the terrain's alone, blocker_sky_clamp.hpp;
+// T_d: shading_state.hpp; T_s, r, F, V(r): view_shading.hpp; the BRDFs: docs/rendering.md).
 //
 //   auto state = compute_shading_state(grid, materials, normals, options);   // once
 //   ViewShading view = compute_view_shading(*state, {});                     // once per view

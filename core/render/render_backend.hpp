@@ -28,6 +28,10 @@ public:
     virtual std::size_t texels() const = 0;
     // rgb_out[t] = sum_i T[i][t] * light_sh[i] (as shade_transfer); NaN texels give NaN.
     virtual void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) = 0;
+    // Rewrites T of the texels of a rectangle: columns [col0, col0 + w), rows [row0, row0 + h)
+    // of a grid `grid_width` texels wide (texel t = row * grid_width + col); `transfer` is
+    // [16][w * h], the rectangle's texels row-major (a moving mesh's footprint).
+    virtual void update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer) = 0;
 };
 
 class RenderBackend {

@@ -123,6 +123,20 @@ void Scene::attach_mesh_views(const PerspectiveView& view) {
     mesh_radiance_.resize(placed.size());
 }
 
+visibility::TexelRect Scene::move_mesh(std::size_t k, const mesh::Placement& placement) {
+    if (k >= options_.meshes.size()) throw InputError("move_mesh: no mesh " + std::to_string(k));
+    if (mesh_view_) throw InputError("a moving mesh is drawn in map and extent views only, not in perspective");
+    SceneMesh& m = options_.meshes[k];
+    const glm::dvec2 anchor = mesh_anchor(dem_.georef, placement, m.name);
+    const double ground = ground_height(*grid_, anchor);
+    if (placement.above_ground && std::isnan(ground))
+        throw input_error(m.name, "an agl height over a void of the DEM: give the height above the datum");
+    m.placement = placement;
+    blockers_.meshes[k] = blockers::place_spheres(m.model_spheres, placement, anchor, std::isnan(ground) ? 0.0 : ground,
+                                                  m.name);
+    return state_->move_mesh(k, blockers_.meshes[k]);
+}
+
 const Camera* Scene::camera() const {
     const auto* c = dynamic_cast<const CameraTarget*>(target_.get());
     return c ? &c->camera() : nullptr;

@@ -96,6 +96,14 @@ public:
     // Renders one frame: the sky from options.sky for this sun, per-texel radiance, then the
     // target's picture. `image` keeps its storage from frame to frame.
     void render(const SunState& sun, LinearImage& image);
+    // Mesh k (of options.meshes) moves to `placement` for the frames that follow: its spheres
+    // are placed again and the shading state recomputes only its old and new footprints
+    // (ShadingState::move_mesh). Map and extent views (a drawn mesh does not move: InputError
+    // in a perspective view). Throws ts::InputError for a placement off the DEM. Returns the
+    // rectangle of texels recomputed.
+    visibility::TexelRect move_mesh(std::size_t k, const mesh::Placement& placement);
+    // The blockers' part recomputed over the whole grid (ShadingState::recompute_blockers).
+    void recompute_blockers() { state_->recompute_blockers(); }
     // The relief contrast the last frame got (k = 1: none; relief_contrast.hpp).
     ReliefContrastApplied last_relief_contrast() const { return last_relief_; }
     // The sky of the last frame (for its description).

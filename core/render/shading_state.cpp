@@ -3,13 +3,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "core/geo/azimuth.hpp"
 #include "core/render/diffuse_band_correction.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/material/log_brdf.hpp"
+#include "core/visibility/blocker_footprint.hpp"
+#include "core/visibility/blocker_log_sh.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/sun_sweep.hpp"
@@ -33,6 +38,115 @@ ShadingState::ShadingState(const terrain::HeightGrid& grid, MaterialRaster mater
 
 ShadingState::~ShadingState() = default;
 
+namespace {
+
+// Whether the blockers changed any coefficient of texel k of two [16][n] planes (bit for bit:
+// outside the footprints the sum was never made).
+bool differs(const float* a, const float* b, std::size_t n, std::size_t k) {
+    for (int i = 0; i < 16; ++i)
+        if (std::memcmp(a + std::size_t(i) * n + k, b + std::size_t(i) * n + k, sizeof(float)) != 0) return true;
+    return false;
+}
+
+void gather(const float* from, std::size_t from_n, std::span<const std::uint32_t> index, float* to) {
+    const std::size_t n = index.size();
+    for (int i = 0; i < 16; ++i)
+        for (std::size_t k = 0; k < n; ++k) to[std::size_t(i) * n + k] = from[std::size_t(i) * from_n + index[k]];
+}
+
+}  // namespace
+
+void ShadingState::diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index,
+                                    float* out) const {
+    if (n == 0) return;
+    std::vector<float> axis(n * 3);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t t = index ? index[k] : k;
+        axis[3 * k] = normals_.x[t], axis[3 * k + 1] = normals_.y[t], axis[3 * k + 2] = normals_.z[t];
+    }
+    // Diffuse: the cos/pi lobe about the normal, the same ZH for every texel.
+    const sh::LogBrdfTable table(options_.brdf_log_eps);
+    const sh::ZhVec zh = table.diffuse();
+    const std::array<float, 4> lobe = {float(zh[0]), float(zh[1]), float(zh[2]), float(zh[3])};
+    TransferInputs in;
+    in.texels = n;
+    in.log_visibility = log_sh;
+    in.lobe_axis = axis.data();
+    in.lobe_log_zh = lobe.data();
+    in.uniform_lobe = true;
+    in.method = options_.exp_method;
+    in.threads = options_.threads;
+    if (options_.backend) options_.backend->transfer_vectors(in, out);
+    else transfer_vectors(in, out);
+    if (options_.band_correction) correct_diffuse_bands(lobe, in.method, out, n);
+}
+
+glm::vec3 ShadingState::sky_weight(std::size_t t) const {
+    // The fused CPU pass multiplies by the albedo (1 for water: its body pass weights it);
+    // the backend's field returns the sky term alone.
+    if (options_.backend || materials_.water[t]) return glm::vec3(1.0f);
+    return {materials_.albedo_r[t], materials_.albedo_g[t], materials_.albedo_b[t]};
+}
+
+void ShadingState::bound_changed(const visibility::TexelRect& rect, const std::vector<std::uint32_t>& changed,
+                                 const float* t_blocked, const float* t_terrain) {
+    std::vector<glm::vec3> weight(changed.size());
+    for (std::size_t k = 0; k < changed.size(); ++k) weight[k] = sky_weight(changed[k]);
+    if (!sky_clamp_) sky_clamp_ = std::make_unique<BlockerSkyClamp>(options_.band_correction ? 9 : 16);
+    sky_clamp_->replace(rect, grid_.width, changed, t_blocked, t_terrain, weight.data());
+}
+
+visibility::TexelRect ShadingState::move_mesh(std::size_t k, blockers::PlacedSpheres placed) {
+    if (k >= blockers_.meshes.size()) throw std::out_of_range("ShadingState::move_mesh: no mesh " + std::to_string(k));
+    const double min_sine = blockers::min_cap_sine(blockers_.options.min_solid_angle_sr);
+    const visibility::TexelRect before = visibility::sky_footprint(grid_, blockers_.meshes[k], min_sine);
+    blockers_.meshes[k] = std::move(placed);
+    blocker_sun_.reset();  // it keeps per-mesh bounds of the old placement
+    const visibility::TexelRect after = visibility::sky_footprint(grid_, blockers_.meshes[k], min_sine);
+    visibility::TexelRect rect = before.empty() ? after : before;
+    if (!before.empty() && !after.empty())
+        rect = {std::min(before.col0, after.col0), std::min(before.row0, after.row0), std::max(before.col1, after.col1),
+                std::max(before.row1, after.row1)};
+    update_blocked_rect(rect);
+    return rect;
+}
+
+void ShadingState::recompute_blockers() {
+    if (!blockers_.empty()) update_blocked_rect({0, 0, grid_.width, grid_.height});
+}
+
+void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
+    if (rect.empty()) return;
+    const int w = rect.col1 - rect.col0, h = rect.row1 - rect.row0;
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    std::vector<std::uint32_t> index(n);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c)
+            index[std::size_t(r) * std::size_t(w) + std::size_t(c)] =
+                std::uint32_t(std::size_t(rect.row0 + r) * std::size_t(grid_.width) + std::size_t(rect.col0 + c));
+    std::vector<float> terrain(16 * n);
+    gather(terrain_log_sh_.data(), texels_, index, terrain.data());
+    std::vector<float> blocked = terrain;
+    visibility::add_blocker_log_sh(grid_, {rect.col0, rect.row0, w, h}, blockers_,
+                                   visibility::curvature_factor(options_.curvature), options_.threads, blocked.data());
+    // The rectangle's transfer is the terrain's, the blocked one where the blockers changed it.
+    std::vector<float> t_rect(16 * n);
+    diffuse_transfer(terrain.data(), n, index.data(), t_rect.data());
+    std::vector<std::uint32_t> changed, at;
+    for (std::size_t k = 0; k < n; ++k)
+        if (differs(blocked.data(), terrain.data(), n, k)) changed.push_back(index[k]), at.push_back(std::uint32_t(k));
+    const std::size_t m = changed.size();
+    std::vector<float> log_b(16 * m), t_blocked(16 * m), t_terrain(16 * m);
+    gather(blocked.data(), n, at, log_b.data());
+    diffuse_transfer(log_b.data(), m, changed.data(), t_blocked.data());
+    gather(t_rect.data(), n, at, t_terrain.data());
+    for (int i = 0; i < 16; ++i)
+        for (std::size_t j = 0; j < m; ++j) t_rect[std::size_t(i) * n + at[j]] = t_blocked[std::size_t(i) * m + j];
+    bound_changed(rect, changed, t_blocked.data(), t_terrain.data());
+    if (diffuse_) diffuse_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
+    else diffuse_field_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
+}
+
 std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& grid, MaterialRaster materials,
                                                     NormalField normals, const RendererOptions& options) {
     auto state = std::make_unique<ShadingState>(grid, std::move(materials), std::move(normals), options);
@@ -41,6 +155,9 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     // Water is a flat mirror whatever the DEM's noise on a lake says.
     for (std::size_t t = 0; t < texels; ++t)
         if (s.materials_.water[t]) s.normals_.x[t] = 0, s.normals_.y[t] = 0, s.normals_.z[t] = 1;
+    const bool with_blockers = options.blockers && !options.blockers->empty();
+    if (with_blockers) s.blockers_ = *options.blockers;
+    s.options_.blockers = with_blockers ? &s.blockers_ : nullptr;
 
     Stopwatch t0;
     visibility::VisibilityRequest request;
@@ -51,7 +168,8 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     request.horizon.progress = options.progress;
     request.log_sh = true;
     request.log_eps = options.visibility_log_eps;
-    request.blockers = options.blockers;
+    request.blockers = s.options_.blockers;
+    request.keep_terrain_log_sh = with_blockers;
     std::unique_ptr<visibility::VisibilityBackend> own_cpu;
     visibility::VisibilityBackend* vb = options.visibility;
     if (!vb) own_cpu = visibility::make_cpu_visibility_backend(), vb = own_cpu.get();
@@ -63,26 +181,23 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
 
     t0.restart();
     RenderBackend* backend = options.backend;
-    const sh::LogBrdfTable table(options.brdf_log_eps);
-    // Diffuse: the cos/pi lobe about the normal, the same ZH for every texel.
     {
-        std::vector<float> axis(texels * 3);
-        for (std::size_t t = 0; t < texels; ++t)
-            axis[3 * t] = s.normals_.x[t], axis[3 * t + 1] = s.normals_.y[t], axis[3 * t + 2] = s.normals_.z[t];
-        const sh::ZhVec zh = table.diffuse();
-        const std::array<float, 4> lobe = {float(zh[0]), float(zh[1]), float(zh[2]), float(zh[3])};
-        TransferInputs in;
-        in.texels = texels;
-        in.log_visibility = log_sh;
-        in.lobe_axis = axis.data();
-        in.lobe_log_zh = lobe.data();
-        in.uniform_lobe = true;
-        in.method = options.exp_method;
-        in.threads = options.threads;
         std::vector<float> t_diffuse(16 * texels);
-        if (backend) backend->transfer_vectors(in, t_diffuse.data());
-        else transfer_vectors(in, t_diffuse.data());
-        if (options.band_correction) correct_diffuse_bands(lobe, in.method, t_diffuse.data(), texels);
+        s.diffuse_transfer(log_sh, texels, nullptr, t_diffuse.data());
+        if (with_blockers && !vis.terrain_log_sh.empty()) {
+            s.terrain_log_sh_.assign(vis.terrain_log_sh.begin(), vis.terrain_log_sh.end());
+            // The texels the blockers changed, with their terrain-only transfer.
+            const float* terrain = s.terrain_log_sh_.data();
+            std::vector<std::uint32_t> changed;
+            for (std::size_t t = 0; t < texels; ++t)
+                if (differs(log_sh, terrain, texels, t)) changed.push_back(std::uint32_t(t));
+            const std::size_t m = changed.size();
+            std::vector<float> log_t(16 * m), t_blocked(16 * m), t_terrain(16 * m);
+            gather(terrain, texels, changed, log_t.data());
+            s.diffuse_transfer(log_t.data(), m, changed.data(), t_terrain.data());
+            gather(t_diffuse.data(), texels, changed, t_blocked.data());
+            s.bound_changed({0, 0, grid.width, grid.height}, changed, t_blocked.data(), t_terrain.data());
+        }
         if (backend) {
             s.diffuse_field_ = backend->keep_transfer(t_diffuse.data(), texels);
         } else {
@@ -112,6 +227,13 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     for (std::size_t k = 0; k < n_spec; ++k)
         for (int i = 0; i < 16; ++i)
             s.spec_log_sh_[std::size_t(i) * n_spec + k] = log_sh[std::size_t(i) * texels + s.spec_index_[k]];
+    if (!s.terrain_log_sh_.empty()) {
+        s.spec_terrain_log_sh_.resize(16 * n_spec);
+        for (std::size_t k = 0; k < n_spec; ++k)
+            for (int i = 0; i < 16; ++i)
+                s.spec_terrain_log_sh_[std::size_t(i) * n_spec + k] =
+                    s.terrain_log_sh_[std::size_t(i) * texels + s.spec_index_[k]];
+    }
     const int d_count = vis.horizons.directions;
     s.water_horizons_.resize(s.water_index_.size() * std::size_t(d_count));
     for (std::size_t k = 0; k < s.water_index_.size(); ++k)
@@ -141,10 +263,10 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
         so.threads = options_.threads;
         out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
     }
-    if (options_.blockers && !options_.blockers->empty()) {
+    if (!blockers_.empty()) {
         if (!blocker_sun_)
             blocker_sun_ = std::make_unique<visibility::BlockerSunShadow>(
-                grid_, *options_.blockers, visibility::curvature_factor(options_.curvature), options_.threads);
+                grid_, blockers_, visibility::curvature_factor(options_.curvature), options_.threads);
         blocker_sun_->apply(sun.azimuth_deg, sun.elevation_deg, out);
     }
     if (options_.outer_sun_shadow) options_.outer_sun_shadow(sun, out);

@@ -7,6 +7,8 @@
 //   diffuse transfer T_d = exp(V + rot(F_diffuse, n)), band-corrected    (every texel)
 //   kept for the views: V of the specular texels (ks > 0), the horizons of the water texels
 //   per frame: the sun's visibility per texel (the sun sweep, built on the first frame)
+//   with mesh blockers: the terrain's own log-SH, and per texel they change the terrain-only
+//   transfer, so each frame's sky term is bounded by it (blocker_sky_clamp.hpp)
 //
 // What depends on the view (specular and water reflection) is ViewShading (view_shading.hpp);
 // a frame is FrameRenderer (frame_renderer.hpp); the picture is a RenderTarget.
@@ -16,11 +18,14 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "core/blockers/placed_spheres.hpp"
+#include "core/render/blocker_sky_clamp.hpp"
 #include "core/render/diffuse_shading.hpp"
 #include "core/material/material.hpp"
 #include "core/terrain/terrain_normals.hpp"
@@ -85,7 +90,7 @@ struct RendererOptions {
     visibility::SunMethod sun_method = visibility::SunMethod::sweep;
     // Mesh blockers over the grid (must outlive the state): their sphere log-SH joins the
     // visibility (through the backend's request), their sun shadows multiply each frame's sun
-    // visibility. nullptr or empty: none.
+    // visibility. nullptr or empty: none. The state keeps its own copy (move_mesh changes it).
     const blockers::SphereBlockers* blockers = nullptr;
     // Terrain beyond the grid that shades it from the sun (a block of a larger level: the far
     // field beyond its window, core/tiles/shade_source.cpp): lowers each frame's sun visibility
@@ -127,6 +132,8 @@ public:
     // Specular texels (ks > 0, not water) and their log-SH visibility [16][n].
     const std::vector<std::uint32_t>& specular_index() const { return spec_index_; }
     const std::vector<float>& specular_log_sh() const { return spec_log_sh_; }
+    // With mesh blockers: the same texels' terrain-only log-SH [16][n] (else empty).
+    const std::vector<float>& specular_terrain_log_sh() const { return spec_terrain_log_sh_; }
     // Water texels and their D horizons [texel-in-list * D + d] (radians).
     const std::vector<std::uint32_t>& water_index() const { return water_index_; }
     const std::vector<float>& water_horizons() const { return water_horizons_; }
@@ -137,7 +144,34 @@ public:
     // sweep is built on the first call and kept.
     void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out);
 
+    // Mesh blockers: the state's copy of them, and the bound on the sky term of the texels
+    // they change (null without blockers). FrameRenderer applies it after the diffuse pass.
+    const blockers::SphereBlockers& blockers() const { return blockers_; }
+    const BlockerSkyClamp* blocker_sky_clamp() const { return sky_clamp_.get(); }
+
+    // Mesh k of the blockers moves to `placed` (a moving mesh, relight --mesh-path): in the
+    // bounding rectangle of its old and new sky footprints the terrain's log-SH is restored,
+    // every mesh's spheres added again, and the diffuse transfer, its copy for the frames and
+    // the sky bound recomputed; nothing outside that rectangle changes. The sun shadows follow
+    // on the next sun_visibility. The specular texels' sheen keeps the first placement's
+    // visibility. Returns the rectangle. Throws std::out_of_range for a bad k.
+    visibility::TexelRect move_mesh(std::size_t k, blockers::PlacedSpheres placed);
+    // The same recompute over the whole grid (what move_mesh saves; tests compare the two).
+    void recompute_blockers();
+
 private:
+    // The band-corrected diffuse transfer of n texels (grid indices `index`; null: texel k is k)
+    // from their log-SH [16][n], into `out` [16][n], through the backend when there is one.
+    void diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index, float* out) const;
+    // Recomputes the blockers' part of the texels of `rect` (move_mesh).
+    void update_blocked_rect(const visibility::TexelRect& rect);
+    // Hands the sky bound the changed texels of a rectangle (grid indices, ascending) with their
+    // blocked and terrain-only transfers [16][changed].
+    void bound_changed(const visibility::TexelRect& rect, const std::vector<std::uint32_t>& changed,
+                       const float* t_blocked, const float* t_terrain);
+    // The weight the frame's diffuse pass gives texel t's sky term (blocker_sky_clamp.hpp).
+    glm::vec3 sky_weight(std::size_t t) const;
+
     friend std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid&, MaterialRaster, NormalField,
                                                                const RendererOptions&);
 
@@ -152,9 +186,13 @@ private:
     std::unique_ptr<DiffuseShading> diffuse_;
     std::unique_ptr<ShadeField> diffuse_field_;
     std::vector<std::uint32_t> spec_index_;
-    std::vector<float> spec_log_sh_;
+    std::vector<float> spec_log_sh_, spec_terrain_log_sh_;
     std::vector<std::uint32_t> water_index_;
     std::vector<float> water_horizons_;
+    blockers::SphereBlockers blockers_;
+    // With blockers: the terrain's log-SH [16][texels] before the blockers were added.
+    std::vector<float> terrain_log_sh_;
+    std::unique_ptr<BlockerSkyClamp> sky_clamp_;
     std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;
     std::unique_ptr<visibility::BlockerSunShadow> blocker_sun_;
 };

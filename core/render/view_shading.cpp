@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "core/material/fresnel.hpp"
@@ -73,6 +74,39 @@ ViewShading compute_view_shading(const ShadingState& state, const ViewDirections
         out.t_spec.resize(16 * n);
         if (options.backend) options.backend->transfer_vectors(in, out.t_spec.data());
         else transfer_vectors(in, out.t_spec.data());
+        // The specular texels the blockers changed: their terrain-only transfer bounds the sky term.
+        const std::vector<float>& terrain = state.specular_terrain_log_sh();
+        if (!terrain.empty()) {
+            const float* blocked = state.specular_log_sh().data();
+            std::vector<std::uint32_t> changed;
+            for (std::size_t k = 0; k < n; ++k)
+                for (int i = 0; i < 16; ++i)
+                    if (std::memcmp(blocked + std::size_t(i) * n + k, terrain.data() + std::size_t(i) * n + k,
+                                    sizeof(float)) != 0) {
+                        changed.push_back(std::uint32_t(k));
+                        break;
+                    }
+            const std::size_t n_changed = changed.size();
+            std::vector<float> log_t(16 * n_changed), ax(3 * n_changed), lb(4 * n_changed), t_terrain(16 * n_changed), t_blocked(16 * n_changed);
+            for (std::size_t j = 0; j < n_changed; ++j) {
+                const std::size_t k = changed[j];
+                for (int i = 0; i < 16; ++i) {
+                    log_t[std::size_t(i) * n_changed + j] = terrain[std::size_t(i) * n + k];
+                    t_blocked[std::size_t(i) * n_changed + j] = out.t_spec[std::size_t(i) * n + k];
+                }
+                for (int i = 0; i < 3; ++i) ax[3 * j + std::size_t(i)] = axis[3 * k + std::size_t(i)];
+                for (int i = 0; i < 4; ++i) lb[4 * j + std::size_t(i)] = lobes[4 * k + std::size_t(i)];
+            }
+            if (n_changed > 0) {
+                TransferInputs tin = in;
+                tin.texels = n_changed, tin.log_visibility = log_t.data(), tin.lobe_axis = ax.data(), tin.lobe_log_zh = lb.data();
+                if (options.backend) options.backend->transfer_vectors(tin, t_terrain.data());
+                else transfer_vectors(tin, t_terrain.data());
+            }
+            const std::vector<glm::vec3> weight(n_changed, glm::vec3(1.0f));
+            out.spec_clamp.emplace(16);
+            out.spec_clamp->replace({}, 1, changed, t_blocked.data(), t_terrain.data(), weight.data());
+        }
     }
 
     // Water: the mirror direction, its Fresnel weight and whether the terrain hides it.

@@ -8,10 +8,12 @@
 // camera for a perspective view) and r = 2 (n.v) n - v. One ViewShading serves every frame of
 // its view and every target that looks from the same place (all map-like targets share one).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "core/render/blocker_sky_clamp.hpp"
 #include "core/render/shading_state.hpp"
 
 namespace ts::render {
@@ -31,6 +33,10 @@ struct ViewShading {
     };
     std::vector<float> t_spec;
     std::vector<SpecTexel> spec;
+    // With mesh blockers: the bound on the specular sky term <T_s, L> of the specular texels
+    // they change (indices into the specular list, weight 1), as the diffuse one
+    // (blocker_sky_clamp.hpp); empty without blockers.
+    std::optional<BlockerSkyClamp> spec_clamp;
     // Water texels (the state's water_index() order).
     std::vector<glm::vec3> water_r;
     std::vector<float> water_fresnel, water_vis;

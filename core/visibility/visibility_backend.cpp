@@ -77,6 +77,10 @@ void complete_on_cpu(const terrain::HeightGrid& grid, const VisibilityRequest& r
 
     if (request.log_sh && request.blockers && !request.blockers->empty()) {
         const Stopwatch t1;
+        if (request.keep_terrain_log_sh) {
+            result.terrain_log_sh.resize(result.log_sh.size());
+            std::copy(result.log_sh.begin(), result.log_sh.end(), result.terrain_log_sh.begin());
+        }
         const ReceiverWindow& w = request.horizon.window;
         const ReceiverWindow resolved{w.col0, w.row0, set.width, set.height};
         const BlockerStageStats st =

@@ -38,6 +38,9 @@ struct VisibilityRequest {
     // terrain's in the log-SH product (blocker_log_sh.hpp), inside each mesh's footprint. svf and
     // sky_visible stay the terrain's. nullptr or empty: none.
     const blockers::SphereBlockers* blockers = nullptr;
+    // With blockers: also return the log-SH before the blockers were added (terrain_log_sh),
+    // for consumers that bound or redo the blockers' part (core/render/shading_state.hpp).
+    bool keep_terrain_log_sh = false;
 };
 
 // One stage of a computation and where it ran, for logs and benchmarks.
@@ -52,6 +55,8 @@ struct VisibilityStage {
 struct VisibilityResult {
     HorizonSet horizons;
     UninitialisedVector<float> log_sh, svf, sky_visible;
+    // The terrain's own log-SH when the request had blockers and keep_terrain_log_sh (else empty).
+    UninitialisedVector<float> terrain_log_sh;
     std::vector<VisibilityStage> stages;
     // Where the horizons were computed (the first stage's path).
     const std::string& path() const;

@@ -18,6 +18,9 @@ public:
     void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out) override {
         field_.shade(light_sh, rgb_out);
     }
+    void update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer) override {
+        field_.update_rect(grid_width, col0, row0, w, h, transfer);
+    }
 
 private:
     TransferField field_;

@@ -227,6 +227,39 @@ void TransferField::shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* 
     wall_ms_ = start.milliseconds();
 }
 
+void TransferField::update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer) {
+    if (w <= 0 || h <= 0) return;
+    if (col0 < 0 || row0 < 0 || col0 + w > grid_width || std::size_t(row0 + h) * std::size_t(grid_width) > texels_)
+        throw std::invalid_argument("gpu::render::TransferField::update_rect: rectangle outside the texels");
+    if (host_copy_.empty()) {
+        host_copy_.resize(kCoeffs * texels_);
+        download(host_copy_.data());
+    }
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    for (std::size_t i = 0; i < kCoeffs; ++i)
+        for (int r = 0; r < h; ++r)
+            std::copy_n(transfer + i * n + std::size_t(r) * std::size_t(w), std::size_t(w),
+                        host_copy_.begin() + std::ptrdiff_t(i * texels_ + std::size_t(row0 + r) * std::size_t(grid_width) +
+                                                            std::size_t(col0)));
+    // The rows' span, whole: one upload per coefficient and band.
+    const std::size_t first = std::size_t(row0) * std::size_t(grid_width);
+    const std::size_t last = std::size_t(row0 + h) * std::size_t(grid_width);
+    stages_.clear();
+    const Stopwatch start;
+    Batch batch(context_);
+    for (const Band& b : bands_) {
+        const std::size_t a = std::max(first, b.first), e = std::min(last, b.first + b.texels);
+        if (a >= e) continue;
+        for (VkDeviceSize i = 0; i < kCoeffs; ++i)
+            batch.upload(b.transfer, bytes_of(host_copy_.data() + i * texels_ + a, e - a),
+                         (i * padded(b.texels) + (a - b.first)) * sizeof(float));
+        batch.mark("upload");
+    }
+    batch.submit_and_wait();
+    add_stage_times(stages_, batch);
+    wall_ms_ = start.milliseconds();
+}
+
 std::vector<StageTime> transfer_vectors(const Context& context, const ts::render::TransferInputs& inputs,
                                         float* transfer_out) {
     TransferField field(context, inputs);

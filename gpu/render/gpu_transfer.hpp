@@ -75,6 +75,10 @@ public:
     // Stages: shade, and download where the radiance goes through a staging copy (a discrete
     // GPU; lavapipe's kernels write host memory directly).
     void shade(const std::array<glm::vec3, 16>& light_sh, glm::vec3* rgb_out);
+    // Rewrites T of a rectangle's texels (ts::render::ShadeField::update_rect). A host copy of
+    // T is made on the first call (one download); each call then uploads the rectangle's rows,
+    // whole, per coefficient and band. Stage: upload.
+    void update_rect(int grid_width, int col0, int row0, int w, int h, const float* transfer);
 
     // Per-stage device times and the wall-clock time of the last operation (the constructor,
     // download or shade).
@@ -97,6 +101,7 @@ private:
     // The recorded per-frame relight, made by the first shade(); it refers to bands_' buffers
     // and kernels_' pipeline, so it is declared after them (and destroyed before them).
     std::unique_ptr<ShadeRecording> recording_;
+    std::vector<float> host_copy_;  // [16][texels], made by the first update_rect
 };
 
 // One-shot mirrors of ts::render::transfer_vectors and shade_transfer (the second uploads T);

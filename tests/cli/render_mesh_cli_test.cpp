@@ -119,6 +119,87 @@ TEST(RenderMeshCli, APerspectiveViewDrawsTheCessnaAndHidesOneBelowTheTerrain) {
     EXPECT_EQ(covered_pixels(c.out), 0) << c.out;
 }
 
+// The centroid (texels from the picture's centre) of where `with` is darker than `plain`.
+bool shadow_centroid(const Image& plain, const Image& with, double& x, double& y) {
+    double sx = 0, sy = 0, weight = 0;
+    for (int r = 0; r < plain.h; ++r)
+        for (int c = 0; c < plain.w; ++c) {
+            double drop = 0;
+            for (int k = 0; k < plain.channels; ++k) {
+                const std::size_t i = (std::size_t(r) * plain.w + c) * plain.channels + k;
+                drop += double(plain.px[i]) - double(with.px[i]);
+            }
+            if (drop > 3 * 6) sx += (c + 0.5 - plain.w / 2.0) * drop, sy += (r + 0.5 - plain.h / 2.0) * drop, weight += drop;
+        }
+    if (weight <= 0) return false;
+    x = sx / weight, y = sy / weight;
+    return true;
+}
+
+// relight --mesh-path: the Cessna flies south-west to north-east over the crop; each frame's
+// shadow (against the same frames without it) lies further north-east than the last.
+TEST(RenderMeshCli, RelightMeshPathMovesTheShadowAlongThePath) {
+    const auto dir = temp_dir("relight_mesh_path");
+    const auto path = dir / "path.csv";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_TRUE(f);
+        std::fprintf(f, "t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg\n0,5.70,45.15,700,45,0,0\n"
+                        "7200,5.80,45.25,700,45,0,0\n");
+        std::fclose(f);
+    }
+    const std::string times = " --times 2025-06-21T10:00:00Z/2025-06-21T12:00:00Z/PT1H --directions 8 --exposure 13";
+    const std::string cache = " --sphere-cache-dir " + quote((dir / "cache").string());
+    const Result a = run(ts_cmd("relight " + quote(kDem) + kCrop + times + " --out " + quote((dir / "plain").string())));
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const Result b = run(ts_cmd("relight " + quote(kDem) + kCrop + times + " --mesh " + quote(kCessna) + " --mesh-path " +
+                                quote(path.string()) + " --scale 80 --spheres 32" + cache + " --out " +
+                                quote((dir / "moving").string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.out.find("a frame recomputing"), std::string::npos) << b.out;
+    std::vector<std::filesystem::path> frames;
+    for (const auto& e : std::filesystem::directory_iterator(dir / "moving"))
+        if (e.path().extension() == ".png") frames.push_back(e.path().filename());
+    std::sort(frames.begin(), frames.end());
+    ASSERT_EQ(frames.size(), 3u);
+    double last_x = -1e9, last_y = 1e9;
+    for (const auto& name : frames) {
+        double x = 0, y = 0;
+        ASSERT_TRUE(shadow_centroid(read_png(dir / "plain" / name), read_png(dir / "moving" / name), x, y)) << name;
+        std::printf("%s: shadow centroid %.1f texels east, %.1f texels south of the centre\n", name.c_str(), x, y);
+        EXPECT_GT(x, last_x + 5) << name;  // east
+        EXPECT_LT(y, last_y - 5) << name;  // north
+        last_x = x, last_y = y;
+    }
+    // Bad uses: one line, exit 2, before any frame.
+    const std::string base = "relight " + quote(kDem) + kCrop + times + " --out " + quote((dir / "bad").string());
+    const std::vector<std::string> cases = {
+        " --mesh-path " + quote(path.string()),                                                    // no --mesh
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --mesh-path " + quote(path.string()),   // --at for it
+        " --mesh " + quote(kCessna) + " --mesh-path /no/such/path.csv",
+        " --mesh " + quote(kCessna) + " --mesh-path " + quote(path.string()) +
+            " --view perspective --camera 5.70,45.17,1200,40,-10,40",
+    };
+    for (const std::string& c : cases) {
+        const Result r = run(ts_cmd(base + c));
+        EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c << "\n" << r.err;
+    }
+    // A path that leaves the DEM.
+    const auto off = dir / "off.csv";
+    {
+        std::FILE* f = std::fopen(off.c_str(), "w");
+        ASSERT_TRUE(f);
+        std::fprintf(f, "t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg\n0,5.70,45.15,700,45,0,0\n"
+                        "60,7.80,45.25,700,45,0,0\n");
+        std::fclose(f);
+    }
+    const Result r = run(ts_cmd(base + " --mesh " + quote(kCessna) + " --mesh-path " + quote(off.string())));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad" / "times.csv"));
+}
+
 TEST(RenderMeshCli, BadMeshFlagsExitTwoWithOneLine) {
     const auto dir = temp_dir("render_mesh_bad");
     const std::string out = " --out " + quote((dir / "x.png").string());

@@ -290,6 +290,49 @@ TEST_F(GpuRenderBackendTest, KeptTransferShadesAsTheCpuBackendAndBandsJoin) {
     EXPECT_TRUE(std::isnan(rgb_gpu[5].x));
 }
 
+// A moving mesh's rectangle rewrite (ShadeField::update_rect): the GPU field, in one band and in
+// bands of 1000 texels (the rectangle straddles them), shades as the CPU field rewritten alike.
+TEST_F(GpuRenderBackendTest, ARectangleRewriteShadesAsTheCpuFieldAcrossBands) {
+    const terrain::GridCrop& c = grenoble_crop();
+    const vis::VisibilityResult& cpu = cpu_visibility();
+    const Lobes lobes = lobes_of(c.grid);
+    cr::TransferInputs in = transfer_inputs(lobes, cpu.log_sh, false, sh::ExpMethod::scaling_squaring);
+    std::vector<float> t(16 * in.texels);
+    cr::transfer_vectors(in, t.data());
+    const auto gpu_backend = render::make_gpu_backend(*context_);
+    const auto banded_backend = render::make_gpu_backend(*context_, {.max_band_texels = 1000});
+    const auto cpu_backend = cr::make_cpu_backend();
+    const auto gpu_field = gpu_backend->keep_transfer(t.data(), in.texels);
+    const auto banded_field = banded_backend->keep_transfer(t.data(), in.texels);
+    const auto cpu_field = cpu_backend->keep_transfer(t.data(), in.texels);
+    const int w = c.grid.width, rw = std::min(17, w - 3), rh = std::min(23, c.grid.height - 5);
+    std::vector<float> rect(16 * std::size_t(rw) * std::size_t(rh));
+    for (std::size_t k = 0; k < rect.size(); ++k) rect[k] = 0.01f * float(k % 97) - 0.3f;
+    for (const auto* f : {&gpu_field, &banded_field, &cpu_field}) (*f)->update_rect(w, 3, 5, rw, rh, rect.data());
+    const auto light = sky_light();
+    std::vector<glm::vec3> rgb_gpu(in.texels), rgb_banded(in.texels), rgb_cpu(in.texels);
+    gpu_field->shade(light, rgb_gpu.data());
+    banded_field->shade(light, rgb_banded.data());
+    cpu_field->shade(light, rgb_cpu.data());
+    long long inside = 0;
+    for (std::size_t x = 0; x < in.texels; ++x) {
+        const int col = int(x % std::size_t(w)), row = int(x / std::size_t(w));
+        inside += col >= 3 && col < 3 + rw && row >= 5 && row < 5 + rh;
+        for (int ch = 0; ch < 3; ++ch) {
+            if (std::isnan(rgb_cpu[x][ch])) continue;
+            ASSERT_EQ(rgb_gpu[x][ch], rgb_banded[x][ch]) << x;
+            ASSERT_NEAR(rgb_gpu[x][ch], rgb_cpu[x][ch], 1e-4 * (1 + std::abs(rgb_cpu[x][ch]))) << x;
+        }
+    }
+    EXPECT_EQ(inside, (long long)rw * rh);
+    // The rectangle's first texel (3, 5) shades with the rewritten coefficients.
+    const std::size_t n = std::size_t(rw) * std::size_t(rh);
+    glm::vec3 expected(0.0f);
+    for (std::size_t i = 0; i < 16; ++i) expected += rect[i * n] * light[i];
+    EXPECT_NEAR(rgb_gpu[std::size_t(5) * std::size_t(w) + 3].x, expected.x, 1e-4 * (1 + std::abs(expected.x)));
+    EXPECT_THROW(cpu_field->update_rect(w, w - 2, 0, 5, 1, rect.data()), std::invalid_argument);
+}
+
 // A FrameRenderer on the crop with each backend; radiance of two frames compared. The GPU
 // backend in small bands (visibility rows and transfer texels) gives the unbanded frames bit
 // for bit.

@@ -50,7 +50,8 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     const Result r = run("TERRASHADE_VALIDATION=1 " +
                          ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
                                 quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
-                                " --mesh-forward -x --out " + quote(out.string())));
+                                " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()) +
+                                " --out " + quote(out.string())));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("wrote 3 frames"), std::string::npos) << r.out;
@@ -144,6 +145,11 @@ TEST(FlyCli, BadInputExitsTwoBeforeWork) {
                                    quote(bad.string())));
     EXPECT_EQ(path.exit_code, 2);
     EXPECT_NE(path.err.find("7 numbers"), std::string::npos) << path.err;
+    const Result spheres = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --mesh " +
+                                      quote(kCessna) + " --spheres 4"));
+    EXPECT_EQ(spheres.exit_code, 2);
+    EXPECT_NE(spheres.err.find("--spheres"), std::string::npos) << spheres.err;
+    EXPECT_EQ(std::count(spheres.err.begin(), spheres.err.end(), '\n'), 1) << spheres.err;
 }
 
 TEST(FlyCli, HelpListsTheKeys) {

@@ -39,7 +39,7 @@ struct FlyFrameUniforms {
     glm::vec4 sky_sh[16]{};
     glm::vec4 aircraft_light{1.0f, 0.0f, 0.0f, 0.0f};
     // The aircraft's shadows (fly_frame.glsl): its spheres' bound, eye-relative centre and
-    // radius (radius 0: no shadows), and the sphere count, the sky footprint's radius (m), the
+    // radius (radius 0: no shadows), and the hierarchy's node count, the sky footprint's radius (m), the
     // sun's angular radius (rad), 1 for its self-shadow.
     glm::vec4 aircraft_bound{0.0f};
     glm::vec4 aircraft_shadow{0.0f};
@@ -74,8 +74,9 @@ public:
     // Where the aircraft is this frame: model -> eye-relative metres; `draw` false skips it
     // (no mesh, or the cockpit view from inside it).
     void set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw);
-    // The aircraft's spheres this frame: eye-relative centre (xyz) and radius (w), metres.
-    void set_aircraft_spheres(std::span<const glm::vec4> spheres);
+    // The aircraft's sphere hierarchy this frame, depth-first (blockers::FlatSphereNode): per
+    // node its bound (eye-relative centre, radius; metres) and (skip index, 1 for a leaf, 0, 0).
+    void set_aircraft_spheres(std::span<const glm::vec4> nodes);
 
     // Records one frame into `cmd` (begun by the caller): the render pass, leaving the colour
     // target in TRANSFER_SRC_OPTIMAL for a blit or a copy.

@@ -151,9 +151,7 @@ fly::CameraPose Flythrough::default_pose() const {
 
 void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg,
                               std::span<const blockers::Sphere> spheres) {
-    aircraft_spheres_.assign(spheres.begin(), spheres.end());
-    const blockers::SphereHierarchy h = blockers::build_sphere_hierarchy(aircraft_spheres_);
-    aircraft_bound_ = h.nodes.empty() ? blockers::Sphere{} : h.nodes.front().bound;
+    aircraft_nodes_ = blockers::flatten_sphere_hierarchy(blockers::build_sphere_hierarchy(spheres));
     placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
@@ -187,21 +185,22 @@ void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const f
                                         const fly::CameraPose& camera, FlyFrameUniforms& u) {
     placed_spheres_.clear();
     u.aircraft_bound = u.aircraft_shadow = glm::vec4(0.0f);
-    if (aircraft_spheres_.empty() || !settings_.aircraft_shadows) return;
-    // The rotation times a uniform scale: lengths scale by |first column|.
+    if (aircraft_nodes_.empty() || !settings_.aircraft_shadows) return;
+    // The rotation times a uniform scale: lengths scale by |first column|, and every node still
+    // holds the spheres below it.
     const double scale = glm::length(model_to_grid[0]);
     sphere_upload_.clear();
-    for (const blockers::Sphere& s : aircraft_spheres_) {
-        const blockers::Sphere p{aircraft.eye + model_to_grid * s.center, s.radius * scale};
-        placed_spheres_.push_back(p);
+    for (const blockers::FlatSphereNode& n : aircraft_nodes_) {
+        const blockers::Sphere p{aircraft.eye + model_to_grid * n.bound.center, n.bound.radius * scale};
+        if (n.sphere >= 0) placed_spheres_.push_back(p);
         sphere_upload_.push_back(glm::vec4(glm::vec3(p.center - camera.eye), float(p.radius)));
+        sphere_upload_.push_back(glm::vec4(float(n.skip), n.sphere >= 0 ? 1.0f : 0.0f, 0.0f, 0.0f));
     }
     renderer_->set_aircraft_spheres(sphere_upload_);
-    const glm::dvec3 bound = aircraft.eye + model_to_grid * aircraft_bound_.center - camera.eye;
-    const double bound_radius = aircraft_bound_.radius * scale;
-    u.aircraft_bound = glm::vec4(glm::vec3(bound), float(bound_radius));
+    const double bound_radius = aircraft_nodes_.front().bound.radius * scale;
+    u.aircraft_bound = sphere_upload_.front();
     const double footprint = bound_radius / std::max(blockers::min_cap_sine(settings_.aircraft_min_solid_angle_sr), 1e-6);
-    u.aircraft_shadow = glm::vec4(float(placed_spheres_.size()), float(footprint), float(sun_radius_rad_), 1.0f);
+    u.aircraft_shadow = glm::vec4(float(aircraft_nodes_.size()), float(footprint), float(sun_radius_rad_), 1.0f);
 }
 
 void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,

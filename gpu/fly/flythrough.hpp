@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/blockers/sphere_blocker.hpp"
+#include "core/blockers/sphere_hierarchy.hpp"
 #include "core/dem/dem.hpp"
 #include "core/fly/camera_rig.hpp"
 #include "core/fly/cdlod_tree.hpp"
@@ -111,8 +112,8 @@ private:
     light::SkySh sky_sh_{};
     double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
     std::size_t aircraft_triangles_ = 0;
-    std::vector<blockers::Sphere> aircraft_spheres_;  // model frame
-    blockers::Sphere aircraft_bound_{};               // model frame, holds them all
+    // The spheres' hierarchy in depth-first order (model frame; [0] holds them all).
+    std::vector<blockers::FlatSphereNode> aircraft_nodes_;
     std::vector<blockers::Sphere> placed_spheres_;
     std::vector<glm::vec4> sphere_upload_;
     void place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,

@@ -22,13 +22,20 @@ float self_shadow_sun(vec3 p) {
     float alpha = frame.aircraft_shadow.z;
     float visible = 1.0;
     int count = int(frame.aircraft_shadow.x);
-    for (int i = 0; i < count && visible > 0.0; ++i) {
-        vec4 b = spheres[i];
+    // The hierarchy walk, its subtrees pruned by the sun cone; a node holding the point is
+    // entered (the cone meets it) but a leaf holding it is skipped: the point lies on the
+    // surface that sphere bounds (its surface included, within float rounding of eye-relative
+    // metres).
+    for (int i = 0; i < count && visible > 0.0;) {
+        vec4 b = sphere_nodes[2 * i];
+        vec2 link = sphere_nodes[2 * i + 1].xy;
         vec3 v = b.xyz - p;
-        // Holding the point (its surface included, within float rounding of eye-relative metres).
-        float hold = b.w * 1.001 + 0.005;
-        if (dot(v, v) <= hold * hold) continue;
-        if (sun_cone_meets(v, b.w, s, alpha)) visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
+        bool meets = sun_cone_meets(v, b.w, s, alpha);
+        if (meets && link.y > 0.0) {
+            float hold = b.w * 1.001 + 0.005;
+            if (dot(v, v) > hold * hold) visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
+        }
+        i = meets ? i + 1 : int(link.x);
     }
     return visible;
 }

@@ -39,11 +39,18 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
     float sun_visible = 1.0, sky_product = 1.0;
     int count = int(frame.aircraft_shadow.x);
-    for (int i = 0; i < count; ++i) {
-        vec4 b = spheres[i];
-        if (sun && sun_visible > 0.0 && sun_cone_meets(b.xyz - p, b.w, s, alpha))
-            sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
-        if (bound_sky > 0.0) sky_product = ts_sky_cover_step(sky_product, ts_sphere_sky_cover(b.xyz, b.w, p, n), bound_sky);
+    // The hierarchy walk: the sun cone prunes subtrees; the sky needs every leaf (their caps
+    // combine inside the bound's), so with the sky the walk visits them all.
+    for (int i = 0; i < count;) {
+        vec4 b = sphere_nodes[2 * i];
+        vec2 link = sphere_nodes[2 * i + 1].xy;
+        bool in_sun = sun && sun_visible > 0.0 && sun_cone_meets(b.xyz - p, b.w, s, alpha);
+        if (link.y > 0.0) {
+            if (in_sun) sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
+            if (bound_sky > 0.0)
+                sky_product = ts_sky_cover_step(sky_product, ts_sphere_sky_cover(b.xyz, b.w, p, n), bound_sky);
+        }
+        i = in_sun || bound_sky > 0.0 ? i + 1 : int(link.x);
     }
     float sky_cover = ts_sky_cover_union(sky_product, bound_sky);
     vec3 l_sky = max(l - l_sun, vec3(0.0));

@@ -1,7 +1,9 @@
 // `terrashade bench fly`: the flythrough's frame rate offscreen (the window's pipeline without
 // presenting), along a fixed path over a DEM at 960x540: fps (mean), the 99th-percentile frame
 // time, triangles per frame and the screen-space error bound of the LOD selection; and the same
-// with a coarser LOD goal as a baseline for the ratio. docs/flythrough.md records the figures.
+// with a coarser LOD goal as a baseline for the ratio; with --mesh, the aircraft without and with
+// its shadows, and a low chase (the aircraft 25 m above the ground) terrain-only and with it,
+// for the shadows' cost against terrain-only in the same run. docs/flythrough.md records the figures.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -43,7 +45,11 @@ struct Figures {
     double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, error_max_px = 0, select_ms = 0;
 };
 
-Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
+// low: the aircraft 25 m above the ground along the same track and the camera chasing it (60 m
+// behind, 15 m above), so its sky shadow's footprint (about 100 m across for a Cessna) fills
+// the lower part of the frame: the shadows' worst case. Terrain-only runs of it keep the
+// camera and draw no aircraft.
+Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft, bool low) {
     // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
     // over the ground at the start, looking ahead and down a little.
     const auto& frame = flight.frame();
@@ -65,11 +71,15 @@ Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
     for (int i = -3; i < frames; ++i) {  // three warm-up frames
         const double f = double(std::max(i, 0)) / double(std::max(frames - 1, 1));
         const Stopwatch w;
-        const fly::CameraPose camera = pose_at(f);
+        fly::CameraPose camera = pose_at(f);
         fly::CameraPose aircraft = camera;
         const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, 0.0);
         aircraft.eye += axes.forward * 60.0;
         aircraft.pitch_deg = 0.0;
+        if (low) {
+            aircraft.eye.z = flight.ground_height_m(aircraft.eye) + 25.0;
+            camera = fly::chase_pose(aircraft);
+        }
         flight.prepare(camera, u, st, with_aircraft ? &aircraft : nullptr);
         flight.renderer().render_to_memory(u, flight.patches(), rgba);
         if (i < 0) continue;
@@ -105,6 +115,7 @@ void run_bench_fly(const BenchFlyArgs& a) {
         double goal, quantile;
         bool aircraft;
         int spheres;  // its shadows' sphere count, 0: no shadows
+        bool low = false;
     };
     // The goal at the default quantile, then every texel held to it (strict), then a 4x coarser
     // goal; with --mesh, the first again with the aircraft without shadows, then with its
@@ -115,6 +126,11 @@ void run_bench_fly(const BenchFlyArgs& a) {
         runs.push_back({a.pixel_error, 0.99, true, 0});
         for (int n : a.spheres)
             if (n > 0) runs.push_back({a.pixel_error, 0.99, true, n});
+        // The low chase: terrain-only, then with the aircraft and its shadows.
+        runs.push_back({a.pixel_error, 0.99, false, 0, true});
+        runs.push_back({a.pixel_error, 0.99, true, 0, true});
+        for (int n : a.spheres)
+            if (n > 0) runs.push_back({a.pixel_error, 0.99, true, n, true});
     }
     for (int n : a.spheres) {
         blockers::DecompositionOptions d;
@@ -141,16 +157,17 @@ void run_bench_fly(const BenchFlyArgs& a) {
             spheres = blockers::decompose_cached(aircraft_mesh, d, cache).spheres;
         }
         if (run.aircraft) flight.set_aircraft(aircraft_mesh, 1.0, yaw, spheres);
-        if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft) {
+        if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft && !run.low) {
             const double k_px = h / (2.0 * std::tan(0.5 * fly::Projection{s.fov_deg, w, h, 1.0}.vertical_fov_rad()));
             std::printf("level,vertex_spacing_texels,error_q99_m,error_max_m,range_m (goal %.2f px)\n", goal);
             for (int k = 0; k < flight.tree().levels(); ++k)
                 std::printf("%d,%d,%.2f,%.2f,%.0f\n", k, 1 << k, flight.tree().level_error_m(k),
                             flight.tree().level_max_error_m(k), flight.tree().range_m(k, k_px));
         }
-        const Figures f = fly_once(flight, a.frames, run.aircraft);
+        const Figures f = fly_once(flight, a.frames, run.aircraft, run.low);
         const std::string label =
-            !run.aircraft ? "" : spheres.empty() ? "aircraft " : "aircraft+shadows(" + std::to_string(spheres.size()) + " spheres) ";
+            std::string(run.low ? "low chase " : "") +
+            (!run.aircraft ? "" : spheres.empty() ? "aircraft " : "aircraft+shadows(" + std::to_string(spheres.size()) + " spheres) ");
         std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", label.c_str(), goal,
                     run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
     }

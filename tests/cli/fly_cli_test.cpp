@@ -113,6 +113,7 @@ TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// With the Cessna and its shadows, so their buffers go through the window's frames too.
 TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     // The window test is part of the suite: without xvfb-run it fails (scripts/setup.sh installs xvfb).
     ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
@@ -124,7 +125,8 @@ TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
                                 ts_cmd("fly " + quote(kDem) +
                                        " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
-                                       quote(write_path(dir).string()));
+                                       quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
+                                       " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()));
     Result r = run(command);
     if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;

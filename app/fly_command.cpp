@@ -63,6 +63,7 @@ struct FlyArgs {
     std::string sphere_cache_dir;
     bool no_aircraft_shadows = false;
     double min_solid_angle_sr = 0.01;
+    double sky_detail = 0.05;
     std::string camera = "chase";
     int frames = 0;
     int exit_after = 0;
@@ -387,6 +388,7 @@ void run_fly(const FlyArgs& a) {
     }
     if (!(a.min_solid_angle_sr > 0 && a.min_solid_angle_sr < 2.0 * kPi))
         throw InputError("--blocker-min-solid-angle must be in (0, 2 pi) steradians");
+    if (!(a.sky_detail >= 0 && a.sky_detail <= 1)) throw InputError("--aircraft-sky-detail must be in [0, 1]");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
     plan.input("--path", a.path);
@@ -421,6 +423,7 @@ void run_fly(const FlyArgs& a) {
     settings.fov_deg = a.fov_deg;
     settings.aircraft_shadows = !a.no_aircraft_shadows;
     settings.aircraft_min_solid_angle_sr = a.min_solid_angle_sr;
+    settings.aircraft_sky_detail = a.sky_detail;
     const dem::Dem dem = load_dem_input(a.dem);
     if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
     context = std::make_unique<gpu::Context>(context_options);
@@ -483,6 +486,10 @@ void add_fly_command(CLI::App& root) {
                   "the aircraft casts no shadow on the terrain nor on itself");
     cmd->add_option("--blocker-min-solid-angle", args->min_solid_angle_sr,
                     "the aircraft darkens the terrain's sky only where its spheres' bound subtends more than this (sr)")
+        ->capture_default_str();
+    cmd->add_option("--aircraft-sky-detail", args->sky_detail,
+                    "where the spheres' bound hides more of a receiver's sky than this fraction, its spheres count one "
+                    "by one (0: everywhere); farther, the bound's cover scaled once")
         ->capture_default_str();
     cmd->add_option("--camera", args->camera, "chase, cockpit, free or orbit (C cycles them)")->capture_default_str();
     cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");

@@ -20,6 +20,7 @@ layout(std430, set = 0, binding = 0) readonly buffer Frame {
     vec4 aircraft_light;   // x: the visible fraction of the sun's disc at the aircraft
     vec4 aircraft_bound;   // the aircraft's spheres' bound: eye-relative centre, radius (0: no shadows)
     vec4 aircraft_shadow;  // node count, sky footprint radius (m), sun angular radius (rad), self-shadow (1)
+    vec4 aircraft_sky;     // x: far share of the bound's sky cover, y: bound cover above which each sphere counts
 } frame;
 layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
 layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m

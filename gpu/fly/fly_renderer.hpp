@@ -43,6 +43,9 @@ struct FlyFrameUniforms {
     // sun's angular radius (rad), 1 for its self-shadow.
     glm::vec4 aircraft_bound{0.0f};
     glm::vec4 aircraft_shadow{0.0f};
+    // x: the share of the bound's sky cover its spheres keep far from it, y: the bound's sky
+    // cover above which the spheres are summed one by one (FlySettings::aircraft_sky_detail).
+    glm::vec4 aircraft_sky{0.0f};
 };
 
 struct FlyTerrain {

@@ -7,6 +7,7 @@
 
 #include "core/blockers/placed_spheres.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
+#include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/light/sky.hpp"
 #include "core/mesh/placement.hpp"
 #include "core/render/tone_map.hpp"
@@ -152,6 +153,17 @@ fly::CameraPose Flythrough::default_pose() const {
 void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg,
                               std::span<const blockers::Sphere> spheres) {
     aircraft_nodes_ = blockers::flatten_sphere_hierarchy(blockers::build_sphere_hierarchy(spheres));
+    // Far from the bound (d >> r) a sphere's cover against the bound's is (r_b / r)^2 whatever
+    // the direction: the union's share of the bound's cover tends to this.
+    aircraft_far_sky_share_ = 0.0;
+    if (!aircraft_nodes_.empty()) {
+        double product = 1.0;
+        const double r = aircraft_nodes_.front().bound.radius;
+        for (const blockers::FlatSphereNode& n : aircraft_nodes_)
+            if (n.sphere >= 0)
+                product = blockers::shared::ts_sky_cover_step(product, (n.bound.radius / r) * (n.bound.radius / r), 1.0);
+        aircraft_far_sky_share_ = blockers::shared::ts_sky_cover_union(product, 1.0);
+    }
     placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
@@ -184,7 +196,7 @@ void Flythrough::update_aircraft_light(const glm::dvec3& centre) {
 void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,
                                         const fly::CameraPose& camera, FlyFrameUniforms& u) {
     placed_spheres_.clear();
-    u.aircraft_bound = u.aircraft_shadow = glm::vec4(0.0f);
+    u.aircraft_bound = u.aircraft_shadow = u.aircraft_sky = glm::vec4(0.0f);
     if (aircraft_nodes_.empty() || !settings_.aircraft_shadows) return;
     // The rotation times a uniform scale: lengths scale by |first column|, and every node still
     // holds the spheres below it.
@@ -201,6 +213,7 @@ void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const f
     u.aircraft_bound = sphere_upload_.front();
     const double footprint = bound_radius / std::max(blockers::min_cap_sine(settings_.aircraft_min_solid_angle_sr), 1e-6);
     u.aircraft_shadow = glm::vec4(float(aircraft_nodes_.size()), float(footprint), float(sun_radius_rad_), 1.0f);
+    u.aircraft_sky = glm::vec4(float(aircraft_far_sky_share_), float(settings_.aircraft_sky_detail), 0.0f, 0.0f);
 }
 
 void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
@@ -260,7 +273,7 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     } else {
         renderer_->set_aircraft_transform(glm::mat4(1.0f), false);
         placed_spheres_.clear();
-        u.aircraft_bound = u.aircraft_shadow = glm::vec4(0.0f);
+        u.aircraft_bound = u.aircraft_shadow = u.aircraft_sky = glm::vec4(0.0f);
     }
     u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
                             float(sky_table_.highest_rad));

@@ -40,6 +40,10 @@ struct FlySettings {
     // radius r, 2 pi (1 - cos theta_min) = this solid angle, are not darkened (as
     // blockers::SphereBlockerOptions::min_solid_angle_sr).
     double aircraft_min_solid_angle_sr = 0.01;
+    // Where the root sphere hides more than this fraction of a receiver's cosine-weighted sky
+    // the spheres' covers are combined one by one; farther the root's cover times the share of
+    // it the spheres keep from afar (their far limit), one evaluation a fragment.
+    double aircraft_sky_detail = 0.05;
 };
 
 struct FlyFrameStats {
@@ -114,6 +118,7 @@ private:
     std::size_t aircraft_triangles_ = 0;
     // The spheres' hierarchy in depth-first order (model frame; [0] holds them all).
     std::vector<blockers::FlatSphereNode> aircraft_nodes_;
+    double aircraft_far_sky_share_ = 0.0;
     std::vector<blockers::Sphere> placed_spheres_;
     std::vector<glm::vec4> sphere_upload_;
     void place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,

@@ -37,22 +37,27 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     vec3 l_sun = mix(mix(texel_sun_radiance(texels.x), texel_sun_radiance(texels.y), f.x),
                      mix(texel_sun_radiance(texels.z), texel_sun_radiance(texels.w), f.x), f.y);
     sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
+    // Near the bound its spheres' covers combine one by one; farther the bound's cover times
+    // the share its spheres keep from afar (one evaluation).
+    bool sky_detail = bound_sky > frame.aircraft_sky.y;
+    float sky_cover = bound_sky * frame.aircraft_sky.x;
+    if (!sun && !sky_detail) return l - max(l - l_sun, vec3(0.0)) * sky_cover;
     float sun_visible = 1.0, sky_product = 1.0;
     int count = int(frame.aircraft_shadow.x);
-    // The hierarchy walk: the sun cone prunes subtrees; the sky needs every leaf (their caps
-    // combine inside the bound's), so with the sky the walk visits them all.
+    // The hierarchy walk: the sun cone prunes subtrees; the sky in detail needs every leaf
+    // (their caps combine inside the bound's), so then the walk visits them all.
     for (int i = 0; i < count;) {
         vec4 b = sphere_nodes[2 * i];
         vec2 link = sphere_nodes[2 * i + 1].xy;
         bool in_sun = sun && sun_visible > 0.0 && sun_cone_meets(b.xyz - p, b.w, s, alpha);
         if (link.y > 0.0) {
             if (in_sun) sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
-            if (bound_sky > 0.0)
+            if (sky_detail)
                 sky_product = ts_sky_cover_step(sky_product, ts_sphere_sky_cover(b.xyz, b.w, p, n), bound_sky);
         }
-        i = in_sun || bound_sky > 0.0 ? i + 1 : int(link.x);
+        i = in_sun || sky_detail ? i + 1 : int(link.x);
     }
-    float sky_cover = ts_sky_cover_union(sky_product, bound_sky);
+    if (sky_detail) sky_cover = ts_sky_cover_union(sky_product, bound_sky);
     vec3 l_sky = max(l - l_sun, vec3(0.0));
     return l - l_sun * (1.0 - sun_visible) - l_sky * sky_cover;
 }

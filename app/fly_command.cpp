@@ -18,6 +18,8 @@
 #include "app/dem_input.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
+#include "core/blockers/sphere_cache.hpp"
+#include "core/blockers/sphere_decomposition.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/raster/png_writer.hpp"
 #include "core/util/angles.hpp"
@@ -57,6 +59,11 @@ struct FlyArgs {
     std::string mesh;
     double mesh_scale = 1.0;
     std::string mesh_forward = "+y";
+    int spheres = 64;
+    std::string sphere_cache_dir;
+    bool no_aircraft_shadows = false;
+    double min_solid_angle_sr = 0.01;
+    double sky_detail = 0.05;
     std::string camera = "chase";
     int frames = 0;
     int exit_after = 0;
@@ -372,6 +379,16 @@ void run_fly(const FlyArgs& a) {
     const double forward_yaw = a.mesh_forward == "+y" ? 0.0 : a.mesh_forward == "-x" ? -90.0
                              : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 1e9;
     if (forward_yaw > 360.0) throw InputError("--mesh-forward " + a.mesh_forward + ": give +x, -x, +y or -y");
+    blockers::DecompositionOptions decomposition;
+    decomposition.count = a.spheres;
+    try {
+        blockers::validate(decomposition);
+    } catch (const InputError& e) {
+        throw InputError(std::string("--spheres: ") + e.what());
+    }
+    if (!(a.min_solid_angle_sr > 0 && a.min_solid_angle_sr < 2.0 * kPi))
+        throw InputError("--blocker-min-solid-angle must be in (0, 2 pi) steradians");
+    if (!(a.sky_detail >= 0 && a.sky_detail <= 1)) throw InputError("--aircraft-sky-detail must be in [0, 1]");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
     plan.input("--path", a.path);
@@ -404,12 +421,27 @@ void run_fly(const FlyArgs& a) {
     settings.lod.error_quantile = a.lod_quantile;
     settings.haze_km = a.haze_km;
     settings.fov_deg = a.fov_deg;
+    settings.aircraft_shadows = !a.no_aircraft_shadows;
+    settings.aircraft_min_solid_angle_sr = a.min_solid_angle_sr;
+    settings.aircraft_sky_detail = a.sky_detail;
     const dem::Dem dem = load_dem_input(a.dem);
     if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
     context = std::make_unique<gpu::Context>(context_options);
     gpu::Flythrough flight(dem, settings, *context);
     const fly::FlightPath path = given_path ? *given_path : default_path(flight);
-    if (!a.mesh.empty()) flight.set_aircraft(mesh::import_mesh(a.mesh), a.mesh_scale, forward_yaw);
+    if (!a.mesh.empty()) {
+        const mesh::TriangleMesh aircraft = mesh::import_mesh(a.mesh);
+        std::vector<blockers::Sphere> spheres;
+        if (settings.aircraft_shadows) {
+            const std::filesystem::path cache = a.sphere_cache_dir.empty() ? blockers::default_sphere_cache_dir()
+                                                                           : std::filesystem::path(a.sphere_cache_dir);
+            const blockers::SphereDecomposition d = blockers::decompose_cached(aircraft, decomposition, cache);
+            spheres = d.spheres;
+            std::printf("aircraft %s: %zu triangles, %zu spheres (%s)\n", a.mesh.c_str(), aircraft.triangle_count(),
+                        spheres.size(), d.cached ? "cached" : "decomposed now");
+        }
+        flight.set_aircraft(aircraft, a.mesh_scale, forward_yaw, spheres);
+    }
     const double relight_ms = flight.set_time(time);
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg at %s (relight %.0f ms); %d LOD levels, on %s\n",
                 flight.sun().azimuth_deg, flight.sun().elevation_deg, light::format_utc_time(time).c_str(),
@@ -444,6 +476,20 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--mesh-scale", args->mesh_scale, "scale of the aircraft mesh")->capture_default_str();
     cmd->add_option("--mesh-forward", args->mesh_forward,
                     "the mesh's nose axis after import: +x, -x, +y or -y (the shared Cessna: -x)")
+        ->capture_default_str();
+    cmd->add_option("--spheres", args->spheres,
+                    "bounding spheres of the aircraft that cast its shadows, 8..512 (cached on disk)")
+        ->capture_default_str();
+    cmd->add_option("--sphere-cache-dir", args->sphere_cache_dir,
+                    "where sphere decompositions are cached (default $XDG_CACHE_HOME/terrashade/spheres)");
+    cmd->add_flag("--no-aircraft-shadows", args->no_aircraft_shadows,
+                  "the aircraft casts no shadow on the terrain nor on itself");
+    cmd->add_option("--blocker-min-solid-angle", args->min_solid_angle_sr,
+                    "the aircraft darkens the terrain's sky only where its spheres' bound subtends more than this (sr)")
+        ->capture_default_str();
+    cmd->add_option("--aircraft-sky-detail", args->sky_detail,
+                    "where the spheres' bound hides more of a receiver's sky than this fraction, its spheres count one "
+                    "by one (0: everywhere); farther, the bound's cover scaled once")
         ->capture_default_str();
     cmd->add_option("--camera", args->camera, "chase, cockpit, free or orbit (C cycles them)")->capture_default_str();
     cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");

@@ -1,16 +1,21 @@
 // `terrashade bench fly`: the flythrough's frame rate offscreen (the window's pipeline without
 // presenting), along a fixed path over a DEM at 960x540: fps (mean), the 99th-percentile frame
 // time, triangles per frame and the screen-space error bound of the LOD selection; and the same
-// with a coarser LOD goal as a baseline for the ratio. docs/flythrough.md records the figures.
+// with a coarser LOD goal as a baseline for the ratio; with --mesh, the aircraft without and with
+// its shadows, and a low chase (the aircraft 25 m above the ground) terrain-only and with it,
+// for the shadows' cost against terrain-only in the same run. docs/flythrough.md records the figures.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/bench/bench_command.hpp"
 #include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
+#include "core/blockers/sphere_cache.hpp"
+#include "core/blockers/sphere_decomposition.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/fly/fly_camera.hpp"
 #include "core/light/utc_time.hpp"
@@ -32,13 +37,19 @@ struct BenchFlyArgs {
     std::string time = "2024-06-21T07:30:00Z";
     std::string mesh;  // an aircraft 60 m ahead of the camera: the run is repeated with it
     std::string mesh_forward = "+y";
+    std::vector<int> spheres = {64, 400};  // the aircraft's shadows at each count (0: none)
+    std::string sphere_cache_dir;
 };
 
 struct Figures {
     double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, error_max_px = 0, select_ms = 0;
 };
 
-Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
+// low: the aircraft 25 m above the ground along the same track and the camera chasing it (60 m
+// behind, 15 m above), so its sky shadow's footprint (about 100 m across for a Cessna) fills
+// the lower part of the frame: the shadows' worst case. Terrain-only runs of it keep the
+// camera and draw no aircraft.
+Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft, bool low) {
     // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
     // over the ground at the start, looking ahead and down a little.
     const auto& frame = flight.frame();
@@ -60,11 +71,15 @@ Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft) {
     for (int i = -3; i < frames; ++i) {  // three warm-up frames
         const double f = double(std::max(i, 0)) / double(std::max(frames - 1, 1));
         const Stopwatch w;
-        const fly::CameraPose camera = pose_at(f);
+        fly::CameraPose camera = pose_at(f);
         fly::CameraPose aircraft = camera;
         const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, 0.0);
         aircraft.eye += axes.forward * 60.0;
         aircraft.pitch_deg = 0.0;
+        if (low) {
+            aircraft.eye.z = flight.ground_height_m(aircraft.eye) + 25.0;
+            camera = fly::chase_pose(aircraft);
+        }
         flight.prepare(camera, u, st, with_aircraft ? &aircraft : nullptr);
         flight.renderer().render_to_memory(u, flight.patches(), rgba);
         if (i < 0) continue;
@@ -99,12 +114,32 @@ void run_bench_fly(const BenchFlyArgs& a) {
     struct Run {
         double goal, quantile;
         bool aircraft;
+        int spheres;  // its shadows' sphere count, 0: no shadows
+        bool low = false;
     };
     // The goal at the default quantile, then every texel held to it (strict), then a 4x coarser
-    // goal; with --mesh, the first again with the aircraft.
-    std::vector<Run> runs = {{a.pixel_error, 0.99, false}, {a.pixel_error, 1.0, false}, {4.0 * a.pixel_error, 0.99, false}};
-    if (!a.mesh.empty()) runs.push_back({a.pixel_error, 0.99, true});
+    // goal; with --mesh, the first again with the aircraft without shadows, then with its
+    // shadows at each --spheres count.
+    std::vector<Run> runs = {
+        {a.pixel_error, 0.99, false, 0}, {a.pixel_error, 1.0, false, 0}, {4.0 * a.pixel_error, 0.99, false, 0}};
+    if (!a.mesh.empty()) {
+        runs.push_back({a.pixel_error, 0.99, true, 0});
+        for (int n : a.spheres)
+            if (n > 0) runs.push_back({a.pixel_error, 0.99, true, n});
+        // The low chase: terrain-only, then with the aircraft and its shadows.
+        runs.push_back({a.pixel_error, 0.99, false, 0, true});
+        runs.push_back({a.pixel_error, 0.99, true, 0, true});
+        for (int n : a.spheres)
+            if (n > 0) runs.push_back({a.pixel_error, 0.99, true, n, true});
+    }
+    for (int n : a.spheres) {
+        blockers::DecompositionOptions d;
+        d.count = n;
+        if (n != 0) blockers::validate(d);
+    }
     const mesh::TriangleMesh aircraft_mesh = a.mesh.empty() ? mesh::TriangleMesh{} : mesh::import_mesh(a.mesh);
+    const std::filesystem::path cache =
+        a.sphere_cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.sphere_cache_dir);
     const double yaw = a.mesh_forward == "-x" ? -90.0 : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 0.0;
     for (const Run& run : runs) {
         const double goal = run.goal;
@@ -115,16 +150,25 @@ void run_bench_fly(const BenchFlyArgs& a) {
         s.lod.error_quantile = run.quantile;
         gpu::Flythrough flight(dem, s, context);
         flight.set_time(light::parse_utc_time(a.time));
-        if (run.aircraft) flight.set_aircraft(aircraft_mesh, 1.0, yaw);
-        if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft) {
+        std::vector<blockers::Sphere> spheres;
+        if (run.aircraft && run.spheres > 0) {
+            blockers::DecompositionOptions d;
+            d.count = run.spheres;
+            spheres = blockers::decompose_cached(aircraft_mesh, d, cache).spheres;
+        }
+        if (run.aircraft) flight.set_aircraft(aircraft_mesh, 1.0, yaw, spheres);
+        if (goal == a.pixel_error && run.quantile < 1.0 && !run.aircraft && !run.low) {
             const double k_px = h / (2.0 * std::tan(0.5 * fly::Projection{s.fov_deg, w, h, 1.0}.vertical_fov_rad()));
             std::printf("level,vertex_spacing_texels,error_q99_m,error_max_m,range_m (goal %.2f px)\n", goal);
             for (int k = 0; k < flight.tree().levels(); ++k)
                 std::printf("%d,%d,%.2f,%.2f,%.0f\n", k, 1 << k, flight.tree().level_error_m(k),
                             flight.tree().level_max_error_m(k), flight.tree().range_m(k, k_px));
         }
-        const Figures f = fly_once(flight, a.frames, run.aircraft);
-        std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", run.aircraft ? "aircraft " : "", goal,
+        const Figures f = fly_once(flight, a.frames, run.aircraft, run.low);
+        const std::string label =
+            std::string(run.low ? "low chase " : "") +
+            (!run.aircraft ? "" : spheres.empty() ? "aircraft " : "aircraft+shadows(" + std::to_string(spheres.size()) + " spheres) ");
+        std::printf("%s%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n", label.c_str(), goal,
                     run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
     }
     if (a.mesh.empty()) std::printf("with an aircraft: give --mesh FILE\n");
@@ -143,6 +187,10 @@ void add_bench_fly_command(CLI::App& bench) {
     cmd->add_option("--time", a->time, "UTC time of the sun")->capture_default_str();
     cmd->add_option("--mesh", a->mesh, "an aircraft mesh: the first run again with it 60 m ahead of the camera");
     cmd->add_option("--mesh-forward", a->mesh_forward, "its nose axis: +x, -x, +y, -y")->capture_default_str();
+    cmd->add_option("--spheres", a->spheres, "with --mesh: its shadows' sphere counts, one run each (0: none)")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--sphere-cache-dir", a->sphere_cache_dir, "where sphere decompositions are cached");
     cmd->callback([a] { run_bench_fly(*a); });
 }
 

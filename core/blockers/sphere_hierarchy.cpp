@@ -58,4 +58,24 @@ SphereHierarchy build_sphere_hierarchy(std::span<const Sphere> spheres) {
     return h;
 }
 
+namespace {
+void flatten(const SphereHierarchy& h, int node, std::vector<FlatSphereNode>& out) {
+    const SphereNode& n = h.nodes[std::size_t(node)];
+    const std::size_t at = out.size();
+    out.push_back({n.bound, 0, n.sphere});
+    if (!n.is_leaf()) {
+        flatten(h, n.left, out);
+        flatten(h, n.right, out);
+    }
+    out[at].skip = int(out.size());
+}
+}  // namespace
+
+std::vector<FlatSphereNode> flatten_sphere_hierarchy(const SphereHierarchy& hierarchy) {
+    std::vector<FlatSphereNode> out;
+    out.reserve(hierarchy.nodes.size());
+    if (!hierarchy.nodes.empty()) flatten(hierarchy, 0, out);
+    return out;
+}
+
 }  // namespace ts::blockers

@@ -26,6 +26,16 @@ Sphere enclosing_sphere(const Sphere& a, const Sphere& b);
 
 SphereHierarchy build_sphere_hierarchy(std::span<const Sphere> spheres);
 
+// The tree in depth-first order for a walk without a stack (the flythrough's shaders): from
+// entry i a walk whose test accepts the bound goes on to i + 1 (the first child, or past a
+// leaf), and one whose test refuses it jumps to `skip`, just past its subtree.
+struct FlatSphereNode {
+    Sphere bound;
+    int skip = 0;
+    int sphere = -1;  // the leaf's sphere, or -1 (inner)
+};
+std::vector<FlatSphereNode> flatten_sphere_hierarchy(const SphereHierarchy& hierarchy);
+
 }  // namespace ts::blockers
 
 namespace ts::blockers {

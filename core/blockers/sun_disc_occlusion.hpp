@@ -9,7 +9,8 @@
 // theta_b and the sun, alpha << 1, a disc of radius alpha at distance delta (its sideways
 // stretch sin(delta)/delta changes the covered fraction by O(alpha delta), below 1e-3 for any
 // cap up to a hemisphere); the covered fraction is then the area of two overlapping discs
-// over pi alpha^2.
+// over pi alpha^2. The formulas are sphere_occlusion_shared.h, the text the flythrough's shaders
+// compile too.
 #include <glm/vec3.hpp>
 
 #include "core/blockers/sphere_blocker.hpp"
@@ -32,5 +33,9 @@ double sun_disc_covered_fraction(double sun_radius, double cap_radius, double se
 // hides from `receiver`.
 double sphere_sun_cover(const Sphere& sphere, const glm::dvec3& receiver, const glm::dvec3& sun,
                         double sun_radius = kSunAngularRadiusRad);
+
+// The fraction of the cosine-weighted hemisphere about the unit `normal` at `receiver` that
+// `sphere` hides (its form factor; 1 inside it).
+double sphere_sky_cover(const Sphere& sphere, const glm::dvec3& receiver, const glm::dvec3& normal);
 
 }  // namespace ts::blockers

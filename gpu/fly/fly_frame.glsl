@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = 0) readonly buffer Frame {
     vec4 sky_sh[16];       // rgb: the sky the terrain lets reach the aircraft, order-4 SH
                            // (core/render/point_terrain_light.hpp: exp(V_log) * L_sky)
     vec4 aircraft_light;   // x: the visible fraction of the sun's disc at the aircraft
+    vec4 aircraft_bound;   // the aircraft's spheres' bound: eye-relative centre, radius (0: no shadows)
+    vec4 aircraft_shadow;  // node count, sky footprint radius (m), sun angular radius (rad), self-shadow (1)
+    vec4 aircraft_sky;     // x: far share of the bound's sky cover, y: bound cover above which each sphere counts
 } frame;
 layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
 layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m
@@ -25,6 +28,23 @@ layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]
 layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
 // The aircraft: 3 vertices per triangle, each position (xyz, model metres), normal, colour.
 layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[]; };
+// The sun's part of Radiance (what an aircraft's shadow takes away), packed the same way.
+layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec2 terrain_sun[]; };
+// The aircraft's sphere hierarchy this frame, depth-first (core/blockers/sphere_hierarchy.hpp,
+// FlatSphereNode), two vec4 a node: its bound (eye-relative centre, radius; metres), then (the
+// index past its subtree, 1 for a leaf). A walk goes on to i + 1 from a node it accepts and to
+// the skip index from one it refuses.
+layout(std430, set = 0, binding = 7) readonly buffer Spheres { vec4 sphere_nodes[]; };
+
+// Whether the cone of directions within `sun_radius` of the sun seen from a receiver meets a
+// sphere `v` (centre minus receiver) away: the sphere then hides part of the disc. A cheap
+// conservative test (the exact cover is ts_sphere_sun_cover) for skipping spheres.
+bool sun_cone_meets(vec3 v, float radius, vec3 sun, float sun_radius) {
+    float along = dot(v, sun);
+    if (along < -radius) return false;
+    float reach = max(along, 0.0) * sun_radius * 1.001 + radius * 1.001;
+    return dot(v, v) - along * along < reach * reach;
+}
 
 // Sky radiance (the sun's disc apart) in a direction, bilinear in azimuth (wrapping) and
 // elevation (clamped); azimuth counter-clockwise from east as in the rest of terrashade.

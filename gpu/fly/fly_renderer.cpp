@@ -14,7 +14,7 @@ namespace {
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr int kBindings = 6;
+constexpr int kBindings = 8;
 
 struct PatchPush {
     float col0, row0, spacing, morph_start_m, morph_end_m;
@@ -198,6 +198,10 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
     radiance_ = context.create_buffer(std::size_t(grid_width_) * std::size_t(grid_height_) * 8, MemoryKind::host_visible);
     std::memset(radiance_.mapped(), 0, radiance_.size());
+    sun_radiance_ = context.create_buffer(radiance_.size(), MemoryKind::host_visible);
+    std::memset(sun_radiance_.mapped(), 0, sun_radiance_.size());
+    spheres_ = context.create_buffer(16, MemoryKind::host_visible);
+    std::memset(spheres_.mapped(), 0, spheres_.size());
     sky_ = context.create_buffer(16, MemoryKind::host_visible);
     std::memset(sky_.mapped(), 0, sky_.size());
     aircraft_ = context.create_buffer(16, MemoryKind::host_visible);
@@ -225,8 +229,8 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
 FlyRenderer::~FlyRenderer() { context_.device().wait_idle(); }
 
 void FlyRenderer::write_descriptors() {
-    const VkBuffer buffers[kBindings] = {frame_.get(),    heights_.get(), rows_.get(),
-                                         radiance_.get(), sky_.get(),     aircraft_.get()};
+    const VkBuffer buffers[kBindings] = {frame_.get(), heights_.get(),  rows_.get(),          radiance_.get(),
+                                         sky_.get(),   aircraft_.get(), sun_radiance_.get(), spheres_.get()};
     write_storage_buffers(context_.vk_device(), set_, buffers);
 }
 
@@ -263,6 +267,20 @@ void FlyRenderer::resize(int width, int height) {
 void FlyRenderer::set_radiance(std::span<const std::uint32_t> packed) {
     if (packed.size_bytes() != radiance_.size()) throw std::logic_error("FlyRenderer::set_radiance: wrong size");
     std::memcpy(radiance_.mapped(), packed.data(), packed.size_bytes());
+}
+
+void FlyRenderer::set_sun_radiance(std::span<const std::uint32_t> packed) {
+    if (packed.size_bytes() != sun_radiance_.size()) throw std::logic_error("FlyRenderer::set_sun_radiance: wrong size");
+    std::memcpy(sun_radiance_.mapped(), packed.data(), packed.size_bytes());
+}
+
+void FlyRenderer::set_aircraft_spheres(std::span<const glm::vec4> spheres) {
+    if (spheres.size_bytes() > spheres_.size()) {
+        context_.device().wait_idle();
+        spheres_ = context_.create_buffer(spheres.size_bytes(), MemoryKind::host_visible);
+        write_descriptors();
+    }
+    if (!spheres.empty()) std::memcpy(spheres_.mapped(), spheres.data(), spheres.size_bytes());
 }
 
 void FlyRenderer::set_sky(std::span<const glm::vec4> table) {

@@ -38,6 +38,14 @@ struct FlyFrameUniforms {
     glm::vec4 sky_table{0.0f};
     glm::vec4 sky_sh[16]{};
     glm::vec4 aircraft_light{1.0f, 0.0f, 0.0f, 0.0f};
+    // The aircraft's shadows (fly_frame.glsl): its spheres' bound, eye-relative centre and
+    // radius (radius 0: no shadows), and the hierarchy's node count, the sky footprint's radius (m), the
+    // sun's angular radius (rad), 1 for its self-shadow.
+    glm::vec4 aircraft_bound{0.0f};
+    glm::vec4 aircraft_shadow{0.0f};
+    // x: the share of the bound's sky cover its spheres keep far from it, y: the bound's sky
+    // cover above which the spheres are summed one by one (FlySettings::aircraft_sky_detail).
+    glm::vec4 aircraft_sky{0.0f};
 };
 
 struct FlyTerrain {
@@ -58,6 +66,9 @@ public:
 
     // Per-texel radiance, 2 words per texel (packHalf2x16 of r,g and of b,0).
     void set_radiance(std::span<const std::uint32_t> packed);
+    // The sun's part of that radiance (albedo/pi E_sun max(0, n.s) times the terrain's sun
+    // visibility), packed the same way: what an aircraft's shadow takes away.
+    void set_sun_radiance(std::span<const std::uint32_t> packed);
     // Sky radiance table, [elevation][azimuth] rgb_.
     void set_sky(std::span<const glm::vec4> table);
     // The aircraft's triangles: 3 vertices each, 3 vec4 per vertex (position, normal, colour),
@@ -66,6 +77,9 @@ public:
     // Where the aircraft is this frame: model -> eye-relative metres; `draw` false skips it
     // (no mesh, or the cockpit view from inside it).
     void set_aircraft_transform(const glm::mat4& model_to_eye_relative, bool draw);
+    // The aircraft's sphere hierarchy this frame, depth-first (blockers::FlatSphereNode): per
+    // node its bound (eye-relative centre, radius; metres) and (skip index, 1 for a leaf, 0, 0).
+    void set_aircraft_spheres(std::span<const glm::vec4> nodes);
 
     // Records one frame into `cmd` (begun by the caller): the render pass, leaving the colour
     // target in TRANSFER_SRC_OPTIMAL for a blit or a copy.
@@ -87,7 +101,7 @@ private:
     int grid_width_ = 0, grid_height_ = 0, patch_quads_ = 16;
     int width_ = 0, height_ = 0;
     std::uint32_t quadrant_indices_ = 0;
-    Buffer heights_, rows_, indices_, frame_, radiance_, sky_;
+    Buffer heights_, rows_, indices_, frame_, radiance_, sun_radiance_, sky_, spheres_;
     DescriptorSetLayout set_layout_;
     DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;

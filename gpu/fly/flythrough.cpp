@@ -5,6 +5,9 @@
 
 #include <glm/packing.hpp>
 
+#include "core/blockers/placed_spheres.hpp"
+#include "core/blockers/sphere_hierarchy.hpp"
+#include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/light/sky.hpp"
 #include "core/mesh/placement.hpp"
 #include "core/render/tone_map.hpp"
@@ -14,6 +17,13 @@
 
 namespace ts::gpu {
 namespace {
+
+std::uint32_t pack_rgb(glm::vec3 c, std::uint32_t& second) {
+    const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+    const glm::vec3 v = finite ? glm::max(c, glm::vec3(0.0f)) : glm::vec3(0.0f);
+    second = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+    return glm::packHalf2x16(glm::vec2(v.x, v.y));
+}
 
 std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings& s) {
     render::SceneOptions options;
@@ -59,17 +69,28 @@ double Flythrough::set_time(light::UtcTime time) {
     lit_ = true;
     sun_ = scene_->sun_at(time);
     scene_->render(sun_, radiance_);
+    const light::Sky& sky = *scene_->last_sky();
     const std::size_t texels = radiance_.rgb.size();
     packed_.resize(2 * texels);
+    packed_sun_.resize(2 * texels);
+    // The sun's part of each texel's radiance, albedo/pi E_sun max(0, n.s) times the sun's
+    // visibility (FrameRenderer's diffuse sun term; the few specular and water texels' sun
+    // terms stay in the rest): what an aircraft's shadow takes away.
+    const render::MaterialRaster& m = scene_->state().materials();
+    const render::NormalField& nf = scene_->state().normals();
+    const std::vector<float>& sun_vis = scene_->renderer().sun_visibility();
+    const glm::vec3 s = glm::vec3(render::sun_direction(sun_));
+    const glm::vec3 e = sky.sun().irradiance * float(1.0 / kPi);
     for (std::size_t t = 0; t < texels; ++t) {
         const glm::vec3 c = radiance_.rgb[t];
-        const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
-        const glm::vec3 v = finite ? glm::max(c, glm::vec3(0.0f)) : glm::vec3(0.0f);
-        packed_[2 * t] = glm::packHalf2x16(glm::vec2(v.x, v.y));
-        packed_[2 * t + 1] = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+        const float v = sun_vis[t] == sun_vis[t] ? sun_vis[t] : 0.0f;
+        const float w = v * std::max(0.0f, nf.x[t] * s.x + nf.y[t] * s.y + nf.z[t] * s.z);
+        const glm::vec3 sun_part = glm::min(glm::vec3(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]) * e * w, c);
+        packed_[2 * t] = pack_rgb(c, packed_[2 * t + 1]);
+        packed_sun_[2 * t] = pack_rgb(sun_part, packed_sun_[2 * t + 1]);
     }
     renderer_->set_radiance(packed_);
-    const light::Sky& sky = *scene_->last_sky();
+    renderer_->set_sun_radiance(packed_sun_);
     sky_table_ = fly::make_sky_table(sky);
     sky_sh_ = light::project_sky_sh(sky);
     aircraft_light_ = {sky_sh_, 1.0f};
@@ -129,7 +150,21 @@ fly::CameraPose Flythrough::default_pose() const {
     return c;
 }
 
-void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg) {
+void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg,
+                              std::span<const blockers::Sphere> spheres) {
+    aircraft_nodes_ = blockers::flatten_sphere_hierarchy(blockers::build_sphere_hierarchy(spheres));
+    // Far from the bound (d >> r) a sphere's cover against the bound's is (r_b / r)^2 whatever
+    // the direction: the union's share of the bound's cover tends to this.
+    aircraft_far_sky_share_ = 0.0;
+    if (!aircraft_nodes_.empty()) {
+        double product = 1.0;
+        const double r = aircraft_nodes_.front().bound.radius;
+        for (const blockers::FlatSphereNode& n : aircraft_nodes_)
+            if (n.sphere >= 0)
+                product = blockers::shared::ts_sky_cover_step(product, (n.bound.radius / r) * (n.bound.radius / r), 1.0);
+        aircraft_far_sky_share_ = blockers::shared::ts_sky_cover_union(product, 1.0);
+    }
+    placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
     v.reserve(m.positions.size() * 3);
@@ -156,6 +191,29 @@ void Flythrough::update_aircraft_light(const glm::dvec3& centre) {
     aircraft_light_ = aircraft_lighting_->light(texel, centre.z, sky_sh_, glm::dvec3(sun_dir_), sun_radius_rad_);
     aircraft_lit_ = true;
     aircraft_lit_at_ = centre;
+}
+
+void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,
+                                        const fly::CameraPose& camera, FlyFrameUniforms& u) {
+    placed_spheres_.clear();
+    u.aircraft_bound = u.aircraft_shadow = u.aircraft_sky = glm::vec4(0.0f);
+    if (aircraft_nodes_.empty() || !settings_.aircraft_shadows) return;
+    // The rotation times a uniform scale: lengths scale by |first column|, and every node still
+    // holds the spheres below it.
+    const double scale = glm::length(model_to_grid[0]);
+    sphere_upload_.clear();
+    for (const blockers::FlatSphereNode& n : aircraft_nodes_) {
+        const blockers::Sphere p{aircraft.eye + model_to_grid * n.bound.center, n.bound.radius * scale};
+        if (n.sphere >= 0) placed_spheres_.push_back(p);
+        sphere_upload_.push_back(glm::vec4(glm::vec3(p.center - camera.eye), float(p.radius)));
+        sphere_upload_.push_back(glm::vec4(float(n.skip), n.sphere >= 0 ? 1.0f : 0.0f, 0.0f, 0.0f));
+    }
+    renderer_->set_aircraft_spheres(sphere_upload_);
+    const double bound_radius = aircraft_nodes_.front().bound.radius * scale;
+    u.aircraft_bound = sphere_upload_.front();
+    const double footprint = bound_radius / std::max(blockers::min_cap_sine(settings_.aircraft_min_solid_angle_sr), 1e-6);
+    u.aircraft_shadow = glm::vec4(float(aircraft_nodes_.size()), float(footprint), float(sun_radius_rad_), 1.0f);
+    u.aircraft_sky = glm::vec4(float(aircraft_far_sky_share_), float(settings_.aircraft_sky_detail), 0.0f, 0.0f);
 }
 
 void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,
@@ -211,8 +269,11 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
         m[3] = glm::dvec4(aircraft->eye - camera.eye, 1.0);
         renderer_->set_aircraft_transform(glm::mat4(m), true);
         stats.triangles += aircraft_triangles_;
+        place_aircraft_spheres(r, *aircraft, camera, u);
     } else {
         renderer_->set_aircraft_transform(glm::mat4(1.0f), false);
+        placed_spheres_.clear();
+        u.aircraft_bound = u.aircraft_shadow = u.aircraft_sky = glm::vec4(0.0f);
     }
     u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
                             float(sky_table_.highest_rad));

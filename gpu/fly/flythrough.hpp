@@ -5,9 +5,12 @@
 // sun and sky (the fused diffuse pass over the cached transfer vectors) and the sky table,
 // uploaded. Each frame: the LOD selection for the camera and the frame's uniforms.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "core/blockers/sphere_blocker.hpp"
+#include "core/blockers/sphere_hierarchy.hpp"
 #include "core/dem/dem.hpp"
 #include "core/fly/camera_rig.hpp"
 #include "core/fly/cdlod_tree.hpp"
@@ -31,6 +34,16 @@ struct FlySettings {
     double haze_km = 250.0;
     double fov_deg = 60.0;
     int width = 960, height = 540;
+    // The aircraft's spheres shadow the terrain (sun and sky) and the aircraft itself (sun).
+    bool aircraft_shadows = true;
+    // The sky footprint: receivers farther than r / sin(theta_min) from the spheres' bound of
+    // radius r, 2 pi (1 - cos theta_min) = this solid angle, are not darkened (as
+    // blockers::SphereBlockerOptions::min_solid_angle_sr).
+    double aircraft_min_solid_angle_sr = 0.01;
+    // Where the root sphere hides more than this fraction of a receiver's cosine-weighted sky
+    // the spheres' covers are combined one by one; farther the root's cover times the share of
+    // it the spheres keep from afar (their far limit), one evaluation a fragment.
+    double aircraft_sky_detail = 0.05;
 };
 
 struct FlyFrameStats {
@@ -67,8 +80,13 @@ public:
     fly::CameraPose default_pose() const;
 
     // The aircraft drawn at the path's pose (its model frame in metres, times `scale`), its nose
-    // turned by `forward_yaw_deg` (counter-clockwise about up) onto the model's +y first.
-    void set_aircraft(const mesh::TriangleMesh& mesh, double scale, double forward_yaw_deg);
+    // turned by `forward_yaw_deg` (counter-clockwise about up) onto the model's +y first;
+    // `spheres` (its decomposition, the same model frame) cast its shadows (none: no shadows).
+    void set_aircraft(const mesh::TriangleMesh& mesh, double scale, double forward_yaw_deg,
+                      std::span<const blockers::Sphere> spheres = {});
+    // The aircraft's spheres as the last prepared frame placed them: grid-frame metres (the
+    // frame's metric coordinates, heights above the datum), before any curvature drop.
+    const std::vector<blockers::Sphere>& placed_aircraft_spheres() const { return placed_spheres_; }
     bool has_aircraft() const { return aircraft_triangles_ > 0; }
     // The terrain's light at the aircraft's centre in the last prepared frame (open sky and the
     // whole sun before any).
@@ -98,6 +116,13 @@ private:
     light::SkySh sky_sh_{};
     double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
     std::size_t aircraft_triangles_ = 0;
+    // The spheres' hierarchy in depth-first order (model frame; [0] holds them all).
+    std::vector<blockers::FlatSphereNode> aircraft_nodes_;
+    double aircraft_far_sky_share_ = 0.0;
+    std::vector<blockers::Sphere> placed_spheres_;
+    std::vector<glm::vec4> sphere_upload_;
+    void place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,
+                                const fly::CameraPose& camera, FlyFrameUniforms& uniforms);
     // The terrain's horizons from the aircraft, recomputed only when it moved by more than a
     // fraction of a texel or the sun changed (set_time clears aircraft_lit_).
     void update_aircraft_light(const glm::dvec3& centre);
@@ -108,7 +133,7 @@ private:
     double sun_radius_rad_ = 0.0;
     fly::CdlodSelection selection_;
     render::LinearImage radiance_;
-    std::vector<std::uint32_t> packed_;
+    std::vector<std::uint32_t> packed_, packed_sun_;
 };
 
 }  // namespace ts::gpu

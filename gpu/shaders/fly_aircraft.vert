@@ -10,11 +10,13 @@ layout(push_constant) uniform Placement { mat4 model_to_eye_relative; } placemen
 
 layout(location = 0) out vec3 v_normal;  // ENU
 layout(location = 1) out vec3 v_color;
+layout(location = 2) out vec3 v_rel;     // eye-relative metres before the curvature drop (the spheres' frame)
 
 void main() {
     vec4 p = aircraft[3 * gl_VertexIndex];
     vec3 n = aircraft[3 * gl_VertexIndex + 1].xyz;
     vec3 rel = (placement.model_to_eye_relative * vec4(p.xyz, 1.0)).xyz;
+    v_rel = rel;
     rel.z -= ts_curvature_drop(dot(rel.xy, rel.xy));
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_normal = normalize(mat3(placement.model_to_eye_relative) * n);

@@ -1,19 +1,65 @@
 #version 450
 // The terrain's colour: the per-texel radiance of this sun and sky (the CPU's fused diffuse
-// pass over the cached transfer vectors, core/render/diffuse_shading.hpp), bilinear, then
+// pass over the cached transfer vectors, core/render/diffuse_shading.hpp), bilinear, less what
+// the aircraft's spheres hide of the sun's disc and of the sky (core/blockers/
+// sphere_occlusion_shared.h, the text the CPU's blockers compile) inside its footprint, then
 // aerial perspective towards the sky's horizon radiance in the ray's azimuth (as
 // core/render/perspective_view.hpp; from the vertex shader), exposure and the display curve.
 #extension GL_GOOGLE_include_directive : require
+#define TS_GLSL 1
+#include "core/blockers/sphere_occlusion_shared.h"
 #include "gpu/fly/fly_frame.glsl"
 
 layout(location = 0) in vec2 v_texel;
 layout(location = 1) in vec3 v_haze;
 layout(location = 2) in float v_transmittance;
+layout(location = 3) in vec3 v_rel;
 layout(location = 0) out vec4 out_color;
 
-vec3 texel_radiance(int c, int r) {
-    uvec2 p = radiance[r * int(frame.grid.x) + c];
-    return vec3(unpackHalf2x16(p.x), unpackHalf2x16(p.y).x);
+vec3 unpack_rgb(uvec2 p) { return vec3(unpackHalf2x16(p.x), unpackHalf2x16(p.y).x); }
+vec3 texel_radiance(int i) { return unpack_rgb(radiance[i]); }
+vec3 texel_sun_radiance(int i) { return unpack_rgb(terrain_sun[i]); }
+
+// The aircraft's shadows at this fragment: the radiance `l` (of which `l_sun` is the sun's part)
+// with the sun's disc fraction its spheres hide taken from the sun's part, and the fraction of
+// the cosine-weighted sky they hide from the rest. Only receivers in the bound's sun cone or
+// sky footprint loop over the spheres.
+vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
+    vec3 c = frame.aircraft_bound.xyz;
+    float r = frame.aircraft_bound.w;
+    vec3 s = frame.sun_direction.xyz;
+    float alpha = frame.aircraft_shadow.z;
+    vec3 v = c - p;
+    float footprint = frame.aircraft_shadow.y;
+    bool sun = sun_cone_meets(v, r, s, alpha);
+    float bound_sky = dot(v, v) < footprint * footprint ? ts_sphere_sky_cover(c, r, p, n) : 0.0;
+    if (!sun && bound_sky <= 0.0) return l;
+    vec3 l_sun = mix(mix(texel_sun_radiance(texels.x), texel_sun_radiance(texels.y), f.x),
+                     mix(texel_sun_radiance(texels.z), texel_sun_radiance(texels.w), f.x), f.y);
+    sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
+    // Near the bound its spheres' covers combine one by one; farther the bound's cover times
+    // the share its spheres keep from afar (one evaluation).
+    bool sky_detail = bound_sky > frame.aircraft_sky.y;
+    float sky_cover = bound_sky * frame.aircraft_sky.x;
+    if (!sun && !sky_detail) return l - max(l - l_sun, vec3(0.0)) * sky_cover;
+    float sun_visible = 1.0, sky_product = 1.0;
+    int count = int(frame.aircraft_shadow.x);
+    // The hierarchy walk: the sun cone prunes subtrees; the sky in detail needs every leaf
+    // (their caps combine inside the bound's), so then the walk visits them all.
+    for (int i = 0; i < count;) {
+        vec4 b = sphere_nodes[2 * i];
+        vec2 link = sphere_nodes[2 * i + 1].xy;
+        bool in_sun = sun && sun_visible > 0.0 && sun_cone_meets(b.xyz - p, b.w, s, alpha);
+        if (link.y > 0.0) {
+            if (in_sun) sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
+            if (sky_detail)
+                sky_product = ts_sky_cover_step(sky_product, ts_sphere_sky_cover(b.xyz, b.w, p, n), bound_sky);
+        }
+        i = in_sun || sky_detail ? i + 1 : int(link.x);
+    }
+    if (sky_detail) sky_cover = ts_sky_cover_union(sky_product, bound_sky);
+    vec3 l_sky = max(l - l_sun, vec3(0.0));
+    return l - l_sun * (1.0 - sun_visible) - l_sky * sky_cover;
 }
 
 void main() {
@@ -21,8 +67,14 @@ void main() {
     vec2 t = clamp(v_texel, vec2(0.0), frame.grid.xy - 1.0);
     int c0 = min(int(floor(t.x)), w - 2), r0 = min(int(floor(t.y)), h - 2);
     vec2 f = t - vec2(c0, r0);
-    vec3 l = mix(mix(texel_radiance(c0, r0), texel_radiance(c0 + 1, r0), f.x),
-                 mix(texel_radiance(c0, r0 + 1), texel_radiance(c0 + 1, r0 + 1), f.x), f.y);
+    int i00 = r0 * w + c0, i10 = i00 + 1, i01 = i00 + w, i11 = i01 + 1;
+    vec3 l = mix(mix(texel_radiance(i00), texel_radiance(i10), f.x), mix(texel_radiance(i01), texel_radiance(i11), f.x),
+                 f.y);
+    // The drawn triangle's normal (derivatives are taken where every fragment still runs).
+    vec3 n = cross(dFdx(v_rel), dFdy(v_rel));
+    n = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);
+    if (n.z < 0.0) n = -n;
+    if (frame.aircraft_bound.w > 0.0) l = aircraft_shadowed(l, ivec4(i00, i10, i01, i11), f, v_rel, n);
     l = l * v_transmittance + v_haze * (1.0 - v_transmittance);
     out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
 }

@@ -15,6 +15,7 @@ layout(push_constant) uniform Patch {
 layout(location = 0) out vec2 v_texel;  // level-0 texel-centre coordinates
 layout(location = 1) out vec3 v_haze;      // the sky's horizon radiance in this azimuth
 layout(location = 2) out float v_transmittance;
+layout(location = 3) out vec3 v_rel;    // eye-relative grid-frame metres, before the curvature drop
 
 float height_at(vec2 t) {
     int w = int(frame.grid.x), h = int(frame.grid.y);
@@ -42,6 +43,7 @@ void main() {
     vec2 tm = min(vec2(patch_.col0 + ts_cdlod_morph_index(i, m) * patch_.spacing,
                        patch_.row0 + ts_cdlod_morph_index(j, m) * patch_.spacing), last);
     vec3 rel = grid_point(tm) - frame.eye.xyz;
+    v_rel = rel;
     rel.z -= ts_curvature_drop(dot(rel.xy, rel.xy));
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_texel = tm;

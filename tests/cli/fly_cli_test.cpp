@@ -50,7 +50,8 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     const Result r = run("TERRASHADE_VALIDATION=1 " +
                          ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
                                 quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
-                                " --mesh-forward -x --out " + quote(out.string())));
+                                " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()) +
+                                " --out " + quote(out.string())));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("wrote 3 frames"), std::string::npos) << r.out;
@@ -112,6 +113,7 @@ TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// With the Cessna and its shadows, so their buffers go through the window's frames too.
 TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     // The window test is part of the suite: without xvfb-run it fails (scripts/setup.sh installs xvfb).
     ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
@@ -123,7 +125,8 @@ TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
                                 ts_cmd("fly " + quote(kDem) +
                                        " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
-                                       quote(write_path(dir).string()));
+                                       quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
+                                       " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()));
     Result r = run(command);
     if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -144,6 +147,11 @@ TEST(FlyCli, BadInputExitsTwoBeforeWork) {
                                    quote(bad.string())));
     EXPECT_EQ(path.exit_code, 2);
     EXPECT_NE(path.err.find("7 numbers"), std::string::npos) << path.err;
+    const Result spheres = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --mesh " +
+                                      quote(kCessna) + " --spheres 4"));
+    EXPECT_EQ(spheres.exit_code, 2);
+    EXPECT_NE(spheres.err.find("--spheres"), std::string::npos) << spheres.err;
+    EXPECT_EQ(std::count(spheres.err.begin(), spheres.err.end(), '\n'), 1) << spheres.err;
 }
 
 TEST(FlyCli, HelpListsTheKeys) {

@@ -21,6 +21,10 @@
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/mesh/mesh_import.hpp"
+#include "core/quality/radiance_quality.hpp"
+#include "core/quality/visibility_quality.hpp"
+#include "core/render/render_scene.hpp"
+#include "core/visibility/visibility_grid.hpp"
 #include "core/raster/png_writer.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/atomic_file.hpp"
@@ -75,7 +79,32 @@ struct FlyArgs {
     int patch_quads = 16;
     double haze_km = 250.0;
     double fov_deg = 60.0;
+    // --max-error E[,PX]: the relative radiance error E chooses --directions, the screen-space
+    // error PX (pixels) is the LOD's --pixel-error; the flags given explicitly, which conflict.
+    std::string max_error;
+    bool directions_given = false, pixel_error_given = false;
 };
+
+struct FlyErrorBounds {
+    double radiance = 0;
+    std::optional<double> pixels;
+};
+
+FlyErrorBounds parse_fly_max_error(const std::string& text) {
+    FlyErrorBounds b;
+    double px = 0;
+    char rest = 0;
+    const int n = std::sscanf(text.c_str(), "%lf,%lf%c", &b.radiance, &px, &rest);
+    const bool one = n == 1 && text.find(',') == std::string::npos;
+    if (!(one || n == 2))
+        throw InputError("--max-error " + text + ": give E (relative radiance error) or E,PX (and screen-space pixels)");
+    if (!(b.radiance > 0)) throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+    if (n == 2) {
+        if (!(px > 0.05 && px <= 100)) throw InputError("--max-error " + text + ": the screen-space error PX in (0.05, 100]");
+        b.pixels = px;
+    }
+    return b;
+}
 
 void parse_size(const std::string& text, int& w, int& h) {
     char x = 0;
@@ -374,6 +403,13 @@ void run_fly(const FlyArgs& a) {
         throw InputError("--patch-quads must be a power of two in [4, 128]");
     if (!(a.lod_quantile >= 0.5 && a.lod_quantile <= 1.0)) throw InputError("--lod-quantile must be in [0.5, 1]");
     if (!(a.fov_deg > 5 && a.fov_deg < 150)) throw InputError("--fov must be in (5, 150) degrees");
+    std::optional<FlyErrorBounds> bounds;
+    if (!a.max_error.empty()) {
+        bounds = parse_fly_max_error(a.max_error);
+        if (a.directions_given) throw InputError("--max-error chooses --directions itself; drop one of them");
+        if (bounds->pixels && a.pixel_error_given)
+            throw InputError("--max-error E,PX sets --pixel-error to PX; drop one of them");
+    }
     if (!(a.haze_km >= 0)) throw InputError("--haze-km must be >= 0");
     if (!(a.mesh_scale > 0)) throw InputError("--mesh-scale must be > 0");
     const double forward_yaw = a.mesh_forward == "+y" ? 0.0 : a.mesh_forward == "-x" ? -90.0
@@ -426,6 +462,19 @@ void run_fly(const FlyArgs& a) {
     settings.aircraft_sky_detail = a.sky_detail;
     const dem::Dem dem = load_dem_input(a.dem);
     if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
+    if (bounds) {
+        quality::RadianceScene scene;
+        scene.roughness = quality::mean_tan_slope(visibility::VisibilityGrid(dem).view());
+        scene.sun_elevations_deg = {render::sun_at_dem_centre(dem, time).elevation_deg};
+        scene.exact_sun_available = false;  // fly's sun shadows are the sweep's
+        const quality::RadianceChoice c = quality::choose_radiance(bounds->radiance, scene);
+        settings.directions = c.directions;
+        if (bounds->pixels) settings.lod.pixel_error = *bounds->pixels;
+        std::printf("%s; screen-space error: --pixel-error %g px at the %g quantile of texels%s\n", c.reason.c_str(),
+                    settings.lod.pixel_error, settings.lod.error_quantile,
+                    bounds->pixels ? "" : " (give --max-error E,PX to bound it)");
+        std::fflush(stdout);
+    }
     context = std::make_unique<gpu::Context>(context_options);
     gpu::Flythrough flight(dem, settings, *context);
     const fly::FlightPath path = given_path ? *given_path : default_path(flight);
@@ -497,9 +546,15 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
     cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
     cmd->add_option("--directions", args->directions, "horizon azimuths of the visibility (once per DEM)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each([a = args.get()](const std::string&) { a->directions_given = true; });
     cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each([a = args.get()](const std::string&) { a->pixel_error_given = true; });
+    cmd->add_option("--max-error", args->max_error,
+                    "adaptive quality E[,PX]: --directions the cheapest predicted to keep the relative radiance error "
+                    "under E for this terrain and sun (e.g. 0.05), and PX the screen-space error in pixels "
+                    "(--pixel-error; docs/accuracy.md)");
     cmd->add_option("--lod-quantile", args->lod_quantile,
                     "terrain LOD: which quantile of the per-texel mesh errors meets --pixel-error (1 = every texel)")
         ->capture_default_str();

@@ -167,8 +167,18 @@ void run_relight(const RelightArgs& a) {
         render::mesh_anchor(dem.georef, on, a.mesh_path + where);
     }
     attach_meshes(render_args, dem, options);
+    if (render_args.max_error) {
+        // Every frame of the series (all shards choose alike): the prediction is the worst sun's.
+        std::vector<double> elevations;
+        const render::SunSite sun_place = render::sun_site(dem);
+        for (const auto& t : times)
+            if (const double el = render::sun_at(sun_place, t).elevation_deg; !a.skip_night || el >= kNightElevationDeg)
+                elevations.push_back(el);
+        apply_max_error(render_args, dem, elevations, options);
+    }
+    const int directions = options.renderer.directions;
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
-                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     // The output directory only once the inputs are known good: a refused DEM leaves nothing.
     std::error_code ec;
@@ -225,7 +235,7 @@ void run_relight(const RelightArgs& a) {
     const Stopwatch t0;
     std::unique_ptr<render::Scene> scene;
     {
-        ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(a.render.directions), "rays");
+        ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(directions), "rays");
         render::SceneOptions with_bar = options;
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);

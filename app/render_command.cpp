@@ -52,20 +52,22 @@ void run_render(const RenderCommandArgs& a) {
     const dem::Dem dem = load_dem_input(a.render.dem);
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
+    const render::SunState sun = time ? render::sun_at_dem_centre(dem, *time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
+    apply_max_error(a.render, dem, {sun.elevation_deg}, options);
+    const int directions = options.renderer.directions;
     check_job_memory("render of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
-                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, a.render.directions),
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::unique_ptr<render::Scene> scene;
     {
-        ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(a.render.directions), "rays");
+        ProgressBar bar("visibility", std::uint64_t(dem.width) * dem.height * std::uint64_t(directions), "rays");
         render::SceneOptions with_bar = options;
         with_bar.renderer.progress = &bar;
         scene = std::make_unique<render::Scene>(dem, with_bar);
     }
     print_stages(a.render, *scene);
-    const render::SunState sun = time ? scene->sun_at(*time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
     if (sun.elevation_deg < -0.27)
         std::fprintf(stderr, "terrashade: warning: the sun is below the horizon (elevation %.2f deg): sky light only\n",
                      sun.elevation_deg);
@@ -105,7 +107,7 @@ void run_render(const RenderCommandArgs& a) {
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
     std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
-                scene->state().visibility_seconds(), scene->state().transfer_seconds(), a.render.directions,
+                scene->state().visibility_seconds(), scene->state().transfer_seconds(), directions,
                 frame_s, device.name().c_str());
     if (!a.out.ends_with(".exr"))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);

@@ -7,6 +7,9 @@
 #include <string_view>
 
 #include "core/geo/crs.hpp"
+#include "core/quality/radiance_quality.hpp"
+#include "core/quality/visibility_quality.hpp"
+#include "core/visibility/visibility_grid.hpp"
 
 #include "core/sh/exp_method.hpp"
 #include "core/util/error.hpp"
@@ -76,7 +79,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->check(CLI::Range(0.0, 1.0));
     cmd.add_option("--directions", a.directions, "Horizon azimuths for the sky visibility (exact sweep)")
         ->capture_default_str()
-        ->check(CLI::Range(4, 1024));
+        ->check(CLI::Range(4, 1024))
+        ->each([&a](const std::string&) { a.quality_flags_given.push_back("--directions"); });
     cmd.add_flag("--no-curvature", a.no_curvature, "Ignore Earth curvature (default: d^2/(2 R_eff) with refraction)");
     cmd.add_option("--haze-km", a.haze_km,
                    "Perspective: aerial haze distance (transmittance exp(-d/haze)); 0 = none")
@@ -91,7 +95,12 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "Per-frame sun shadows: sweep (fast, shadow heights along the sweep lines) or exact (the "
                    "reference horizon sweep in the sun's azimuth; docs/accuracy.md)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"sweep", "exact"}));
+        ->check(CLI::IsMember({"sweep", "exact"}))
+        ->each([&a](const std::string&) { a.quality_flags_given.push_back("--sun-shadows"); });
+    cmd.add_option("--max-error", a.max_error,
+                   "Adaptive quality: choose --directions and --sun-shadows, the cheapest predicted to keep the "
+                   "relative radiance error (RMSE / mean against the ray-traced reference) under E for this "
+                   "terrain and sun, e.g. 0.05; prints what it chose and why (docs/accuracy.md)");
     cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")
         ->capture_default_str()
         ->check(CLI::Range(0, 256));
@@ -99,6 +108,12 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
 }
 
 render::SceneOptions scene_options(const RenderArgs& a) {
+    if (a.max_error) {
+        if (!(*a.max_error > 0))
+            throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+        if (!a.quality_flags_given.empty())
+            throw InputError("--max-error chooses " + a.quality_flags_given.front() + " itself; drop one of them");
+    }
     render::SceneOptions o;
     o.sky = light::parse_sky_options(a.sky);
     o.view = a.view == "perspective" ? render::ViewKind::perspective : render::ViewKind::map;
@@ -171,6 +186,22 @@ void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOp
 
 void attach_meshes(const RenderArgs& a, const dem::Dem& dem, render::SceneOptions& o) {
     o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes);
+}
+
+void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector<double>& sun_elevations_deg,
+                     render::SceneOptions& o) {
+    if (!a.max_error) return;
+    const visibility::VisibilityGrid grid(dem);
+    quality::RadianceScene scene;
+    scene.roughness = quality::mean_tan_slope(grid.view());
+    scene.sun_elevations_deg = sun_elevations_deg;
+    const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene);
+    o.renderer.directions = c.directions;
+    o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
+    std::printf("%s\n", c.reason.c_str());
+    if (!o.meshes.empty())
+        std::printf("--max-error: the meshes' spheres stay as given (--spheres): their error is not in the model\n");
+    std::fflush(stdout);
 }
 
 void print_stages(const RenderArgs& a, const render::Scene& scene) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -41,6 +42,10 @@ struct RenderArgs {
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     int threads = 0;
     MeshArgs meshes;  // --mesh, --at, ... (app/mesh_options.hpp)
+    // --max-error E: choose --directions and --sun-shadows for a relative radiance error E
+    // (core/quality/radiance_quality.hpp); the quality flags given explicitly, which conflict.
+    std::optional<double> max_error;
+    std::vector<std::string> quality_flags_given;
 };
 
 // Adds the shared options to `cmd` (not the sun/time or output options).
@@ -58,6 +63,12 @@ inline const std::vector<std::string> kImageExtensions = {".png", ".tif", ".tiff
 // After the DEM is read: the meshes of --mesh placed on it, imported, their spheres from the
 // cache, into options.meshes (InputError for a mesh off the DEM or a bad mesh file).
 void attach_meshes(const RenderArgs& args, const dem::Dem& dem, render::SceneOptions& options);
+// --max-error: once the DEM and the suns are known (their elevations, degrees), the cheapest
+// directions and sun shadows predicted under E for this terrain, set in `options`; prints the
+// chosen line. Does nothing without --max-error. (E <= 0 and explicit --directions or
+// --sun-shadows are refused earlier, by scene_options.)
+void apply_max_error(const RenderArgs& args, const dem::Dem& dem, const std::vector<double>& sun_elevations_deg,
+                     render::SceneOptions& options);
 // --verbose: each visibility stage and where it ran (the mesh blockers' on the CPU).
 void print_stages(const RenderArgs& args, const render::Scene& scene);
 

@@ -78,6 +78,7 @@ void run_tiles(const TilesCommandArgs& a) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
     }
+    if (tiles::uses_visibility(job.shading.style)) choose_tile_directions(a.tiles, dem, job);
     const std::vector<tiles::TileId> tile_plan = tiles::plan_tiles(dem, job);
     if (tile_plan.empty() && job.shard.whole())
         throw input_error(dem.source, "covers no Web Mercator tile (it lies beyond +-85.05 deg latitude?)");

@@ -1,9 +1,16 @@
 #include "app/tiles_options.hpp"
 
 #include <charconv>
+#include <cstdio>
+#include <map>
 #include <string_view>
+#include <vector>
 
 #include "core/light/utc_time.hpp"
+#include "core/quality/radiance_quality.hpp"
+#include "core/quality/visibility_quality.hpp"
+#include "core/tiles/dem_level.hpp"
+#include "core/visibility/visibility_grid.hpp"
 #include "core/tiles/web_mercator.hpp"
 #include "core/util/error.hpp"
 
@@ -42,7 +49,11 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
         ->capture_default_str();
     cmd.add_option("--directions", a.directions, "relief/svf/color: horizon azimuths of the visibility")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each([&a](const std::string&) { a.directions_given = true; });
+    cmd.add_option("--max-error", a.max_error,
+                   "relief/color: adaptive quality: each zoom's --directions, the cheapest predicted to keep the "
+                   "relative radiance error under E for that zoom's terrain and the sun, e.g. 0.05 (docs/accuracy.md)");
     cmd.add_option("--block-texels", a.block_texels,
                    "relief/svf/color: levels larger than this many texels a side are shaded in blocks of it, "
                    "bounding memory (0 = whole levels; docs/tiles.md)")
@@ -82,6 +93,13 @@ tiles::TileJob tile_job(const TilesArgs& a) {
             throw InputError("--exaggeration " + a.exaggeration + ": auto or a number > 0");
         s.exaggeration = e;
     }
+    if (a.max_error) {
+        if (!(*a.max_error > 0))
+            throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+        if (a.directions_given) throw InputError("--max-error chooses --directions itself; drop one of them");
+        if (s.style != tiles::TileStyle::relief && s.style != tiles::TileStyle::color)
+            throw InputError("--max-error bounds the radiance of --style relief or color, not " + a.style);
+    }
     s.directions = a.directions;
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
@@ -90,6 +108,36 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.threads = a.threads;
     tiles::check_tile_job(job);
     return job;
+}
+
+void choose_tile_directions(const TilesArgs& a, const dem::Dem& dem, tiles::TileJob& job) {
+    if (!a.max_error) return;
+    std::map<int, double> level_roughness;  // mean tan slope of each level at vertical scale 1
+    struct Group {
+        int z0, z1;
+        quality::RadianceChoice choice;
+    };
+    std::vector<Group> groups;
+    for (int z = job.z0; z <= job.z1; ++z) {
+        const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, z + tiles::tile_size_shift(job.tile_size));
+        if (!level_roughness.count(zs.level)) {
+            const visibility::VisibilityGrid grid(zs.level == 0 ? dem : tiles::dem_level(dem, zs.level, job.shading.threads));
+            level_roughness[zs.level] = quality::mean_tan_slope(grid.view());
+        }
+        quality::RadianceScene scene;
+        scene.roughness = level_roughness[zs.level] * zs.vertical_scale;  // heights scale, so do their slopes
+        scene.sun_elevations_deg = {job.shading.sun_elevation_deg};
+        scene.exact_sun_available = false;  // tiles shade their sun with the sweep
+        const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene);
+        job.directions_by_zoom[z] = c.directions;
+        if (!groups.empty() && groups.back().choice.reason == c.reason) groups.back().z1 = z;
+        else groups.push_back({z, z, c});
+    }
+    for (const Group& g : groups) {
+        if (g.z0 == g.z1) std::printf("zoom %d: %s\n", g.z0, g.choice.reason.c_str());
+        else std::printf("zooms %d-%d: %s\n", g.z0, g.z1, g.choice.reason.c_str());
+    }
+    std::fflush(stdout);
 }
 
 }  // namespace ts::app

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/dem/dem.hpp"
 #include "core/tiles/tile_export.hpp"
 
 namespace ts::app {
@@ -25,12 +26,21 @@ struct TilesArgs {
     std::string far_field = "balanced";
     std::string resampling = "cubic";
     int threads = 0;
+    // --max-error E: each zoom's --directions chosen for a relative radiance error E
+    // (core/quality/radiance_quality.hpp); --directions given too conflicts.
+    std::optional<double> max_error;
+    bool directions_given = false;
 };
 
 // `with_zoom`: add --zoom (bench tiles fixes its own).
 void add_tiles_options(CLI::App& cmd, TilesArgs& args, bool with_zoom = true);
 // Parses and checks every flag (ts::InputError); the sun from --time is set once the DEM is read.
 tiles::TileJob tile_job(const TilesArgs& args);
+// --max-error: once the DEM and the sun are known, each zoom's directions (the cheapest
+// predicted under E for that zoom's level and vertical scale) into job.directions_by_zoom, with
+// one line per group of zooms saying what and why. Does nothing without --max-error or for a
+// style without visibility.
+void choose_tile_directions(const TilesArgs& args, const dem::Dem& dem, tiles::TileJob& job);
 // "Z" or "Z0-Z1" -> (z0, z1), each 0..24 with z0 <= z1.
 void parse_zoom_range(const std::string& text, int& z0, int& z1);
 

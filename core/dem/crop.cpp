@@ -58,4 +58,23 @@ Dem crop(const Dem& dem, const LonLatBox& box) {
     return out;
 }
 
+Dem texel_window(const Dem& dem, int col0, int row0, int width, int height) {
+    col0 = std::clamp(col0, 0, dem.width - 1);
+    row0 = std::clamp(row0, 0, dem.height - 1);
+    Dem out;
+    out.width = std::clamp(width, 1, dem.width - col0);
+    out.height = std::clamp(height, 1, dem.height - row0);
+    out.z.resize(std::size_t(out.width) * std::size_t(out.height));
+    out.void_mask.resize(out.z.size());
+    for (int r = 0; r < out.height; ++r)
+        for (int c = 0; c < out.width; ++c) {
+            out.z[out.index(c, r)] = dem.at(col0 + c, row0 + r);
+            out.void_mask[out.index(c, r)] = dem.void_mask.empty() ? 0 : dem.void_mask[dem.index(col0 + c, row0 + r)];
+        }
+    out.georef = dem.georef.window(col0, row0, out.width, out.height);
+    out.vertical_datum = dem.vertical_datum;
+    out.source = dem.source;
+    return out;
+}
+
 }  // namespace ts::dem

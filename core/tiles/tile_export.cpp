@@ -7,6 +7,7 @@
 #include <mutex>
 #include <map>
 #include <memory>
+#include <tuple>
 #include <utility>
 
 #include "core/raster/png_writer.hpp"
@@ -58,6 +59,10 @@ std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
 
 std::string describe_job(const TileJob& job) {
     const TileShading& s = job.shading;
+    std::string by_zoom;  // only with --max-error, so that older jobs describe themselves as before
+    for (const auto& [z, d] : job.directions_by_zoom)
+        by_zoom += (by_zoom.empty() ? ",\"directions_by_zoom\":{\"" : ",\"") + std::to_string(z) + "\":" + std::to_string(d);
+    if (!by_zoom.empty()) by_zoom += "}";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -65,8 +70,14 @@ std::string describe_job(const TileJob& job) {
            ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto-native\"")) +
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
-           std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) + "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" +
-           number(s.sky.turbidity) + "}\n";
+           std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
+           "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + by_zoom + "}\n";
+}
+
+TileShading shading_of_zoom(const TileJob& job, int z) {
+    TileShading s = job.shading;
+    if (const auto it = job.directions_by_zoom.find(z); it != job.directions_by_zoom.end()) s.directions = it->second;
+    return s;
 }
 
 ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom) {
@@ -113,8 +124,8 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
     stats.planned = plan.size();
     const TilePixelMap map(dem);
     const int workers = thread_count(job.shading.threads);
-    // Sources by (level, vertical scale): zooms that share both share the source.
-    std::map<std::pair<int, double>, std::shared_ptr<const ShadeSource>> sources;
+    // Sources by (level, vertical scale, directions): zooms that share all three share the source.
+    std::map<std::tuple<int, double, int>, std::shared_ptr<const ShadeSource>> sources;
     std::vector<TileScratch> scratch(static_cast<std::size_t>(workers));
     std::vector<TileImage> images(static_cast<std::size_t>(workers));
     std::vector<std::size_t> written(static_cast<std::size_t>(workers), 0), empty(static_cast<std::size_t>(workers), 0);
@@ -134,12 +145,13 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
         if (pending.empty()) continue;
         const int pixel_zoom = z + tile_size_shift(job.tile_size);
         const ZoomShading zs = zoom_shading(dem, job, pixel_zoom);
-        const auto key = std::make_pair(zs.level, zs.vertical_scale);
+        const TileShading shading = shading_of_zoom(job, z);
+        const auto key = std::make_tuple(zs.level, zs.vertical_scale, shading.directions);
         if (!sources.count(key)) {
             // Only the next zooms can share a source: drop the others (memory).
             sources.clear();
             const Stopwatch watch;
-            sources[key] = std::make_shared<const ShadeSource>(make_shade_source(dem, job.shading, zs.level, zs.vertical_scale));
+            sources[key] = std::make_shared<const ShadeSource>(make_shade_source(dem, shading, zs.level, zs.vertical_scale));
             stats.source_seconds += watch.seconds();
         }
         const ShadeSource& source = *sources[key];

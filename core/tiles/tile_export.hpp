@@ -6,6 +6,7 @@
 // to the sink. Tiles a resumed sink already has are skipped; tiles that show no data (all
 // transparent) are not written.
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct TileJob {
     int z0 = 0, z1 = 0;
     int tile_size = 256;
     TileShading shading;
+    // Tile zoom -> horizon directions for that zoom's source (--max-error: coarse, flattened
+    // levels need fewer); zooms not listed use shading.directions.
+    std::map<int, int> directions_by_zoom;
     Shard shard;  // this process's part of the tile set (core/tiles/tile_shard.hpp); not in describe_job
 };
 
@@ -51,6 +55,8 @@ struct ZoomShading {
     double vertical_scale = 1;
 };
 ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom);
+// The shading of tile zoom z: job.shading with that zoom's directions.
+TileShading shading_of_zoom(const TileJob& job, int z);
 
 // The heights a Horn style shades tile `t` from, with the 1-px halo ((size + 2)^2, row-major),
 // and their georef in EPSG:3857: what gdaldem is given to check the tile (tests, --debug-heights).

@@ -1,0 +1,110 @@
+// --max-error through the commands: render, relight, tiles (and fly, with a GPU) print the one
+// line of what they chose and why and use it; E <= 0 and an explicit quality flag beside
+// --max-error are refused with one line and exit 2 before any work.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace ts::cli_test {
+namespace {
+
+const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
+const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
+
+std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+
+// The chosen line: "--max-error E: D directions, sun shadows ... (predicted ...)".
+bool has_choice_line(const std::string& out, const std::string& e) {
+    return out.find("--max-error " + e + ": ") != std::string::npos && out.find(" directions, sun shadows ") != std::string::npos &&
+           out.find("predicted relative radiance error") != std::string::npos;
+}
+
+TEST(MaxErrorCli, RenderPrintsWhatItChoseAndUsesIt) {
+    const auto dir = temp_dir("max_error_render");
+    const Result r = run(ts_cmd("render " + quote(kDem) + kCrop +
+                                " --sun-azimuth 200 --sun-elevation 30 --max-error 0.06 --out " +
+                                quote((dir / "r.png").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(has_choice_line(r.out, "0.06")) << r.out;
+    // The frame's line names the directions chosen.
+    const auto at = r.out.find("--max-error 0.06: ");
+    ASSERT_NE(at, std::string::npos);
+    const int d = std::stoi(r.out.substr(at + 18));
+    EXPECT_NE(r.out.find("(" + std::to_string(d) + " directions)"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "r.png"));
+}
+
+TEST(MaxErrorCli, RelightChoosesForItsLowestSun) {
+    const auto dir = temp_dir("max_error_relight");
+    const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop +
+                                " --times 2025-06-21T06:00:00Z/2025-06-21T10:00:00Z/PT2H --max-error 0.08 --out " +
+                                quote((dir / "frames").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(has_choice_line(r.out, "0.08")) << r.out;
+}
+
+TEST(MaxErrorCli, TilesPrintOneLinePerGroupOfZooms) {
+    const auto dir = temp_dir("max_error_tiles");
+    const Result r = run(ts_cmd("tiles " + quote(kDem) + kCrop + " --zoom 9-11 --max-error 0.06 --out " +
+                                quote((dir / "tiles").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(has_choice_line(r.out, "0.06")) << r.out;
+    EXPECT_NE(r.out.find("zoom"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("sun shadows exact"), std::string::npos) << "tiles shade their sun with the sweep\n" << r.out;
+}
+
+TEST(MaxErrorCli, BadBoundsAndConflictingFlagsAreRefusedBeforeAnyWork) {
+    const auto dir = temp_dir("max_error_bad");
+    const std::string out = " --out " + quote((dir / "x.png").string());
+    const std::string sun = " --sun-azimuth 200 --sun-elevation 30";
+    struct Case {
+        std::string args, message;
+    };
+    for (const Case& c : {Case{"render " + quote(kDem) + sun + " --max-error 0" + out, "--max-error must be > 0"},
+                          Case{"render " + quote(kDem) + sun + " --max-error -1" + out, "--max-error must be > 0"},
+                          Case{"render " + quote(kDem) + sun + " --max-error 0.05 --directions 16" + out,
+                               "--max-error chooses --directions"},
+                          Case{"render " + quote(kDem) + sun + " --max-error 0.05 --sun-shadows exact" + out,
+                               "--max-error chooses --sun-shadows"},
+                          Case{"relight " + quote(kDem) + " --times 2025-06-21T06:00:00Z/2025-06-21T08:00:00Z/PT1H "
+                               "--max-error 0 --out " + quote((dir / "f").string()), "--max-error must be > 0"},
+                          Case{"tiles " + quote(kDem) + " --zoom 9 --max-error 0.05 --directions 8 --out " +
+                               quote((dir / "t").string()), "--max-error chooses --directions"},
+                          Case{"tiles " + quote(kDem) + " --zoom 9 --style hillshade --max-error 0.05 --out " +
+                               quote((dir / "t").string()), "relief or color"}}) {
+        const Result r = run(ts_cmd(c.args));
+        EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "f"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "t"));
+}
+
+#ifdef TS_TEST_FLY
+TEST(MaxErrorCli, FlyChoosesDirectionsAndTheScreenSpaceBound) {
+    const auto dir = temp_dir("max_error_fly");
+    const auto path = dir / "path.csv";
+    std::ofstream(path) << "t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg\n"
+                           "0,5.55,45.08,2500,45,-5,0\n"
+                           "6,5.62,45.13,2300,50,-8,10\n";
+    const Result r = run(ts_cmd("fly " + quote(kDem) + " --frames 1 --size 160x90 --max-error 0.08,4 --path " +
+                                quote(path.string()) + " --out " + quote((dir / "frames").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(has_choice_line(r.out, "0.08")) << r.out;
+    EXPECT_NE(r.out.find("screen-space error: --pixel-error 4 px"), std::string::npos) << r.out;
+    const Result bad = run(ts_cmd("fly " + quote(kDem) + " --frames 1 --max-error 0.08,4 --pixel-error 1 --out " +
+                                  quote((dir / "f2").string())));
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+    EXPECT_NE(bad.err.find("--max-error E,PX sets --pixel-error"), std::string::npos) << bad.err;
+}
+#endif
+
+}  // namespace
+}  // namespace ts::cli_test

@@ -84,38 +84,23 @@ std::size_t FarField::bytes() const {
 double FarField::far_slope(double col, double row, double z0, double phi) const {
     const int r = std::clamp(int(std::lround(row)), 0, height_ - 1);
     const double dx = metrics_.dx(r), dy = metrics_.dy(r), unit = std::min(dx, dy);
-    return march(col, row, z0, std::cos(phi) * unit / dx, -std::sin(phi) * unit / dy, unit);
+    return march(samples_, col, row, z0, std::cos(phi) * unit / dx, -std::sin(phi) * unit / dy, unit);
 }
 
-double FarField::march(double col, double row, double z0, double step_c, double step_r, double unit) const {
+double FarField::march(const std::vector<PyramidSample>& samples, double col, double row, double z0, double step_c,
+                       double step_r, double unit, double floor, double enough) const {
     const double wmax = width_ - 1, hmax = height_ - 1, inv_scale = 1.0 / coarse_scale();
     double best = kNoSlope;
-    for (const PyramidSample& smp : samples_) {
+    for (const PyramidSample& smp : samples) {
         const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
         if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
         const double s = smp.tau * unit;
-        if (shared::ts_pyramid_slope(z_top_, z0, s, curvature_) <= best) break;
+        if (shared::ts_pyramid_slope(z_top_, z0, s, curvature_) <= std::max(best, floor)) break;
         // Grid texel-centre coordinates to the coarse copy's (level `shift_` of the grid).
         const float z = pyramid_.level(smp.level).sample_level0_valid((c + 0.5) * inv_scale - 0.5, (r + 0.5) * inv_scale - 0.5);
         if (std::isnan(z)) continue;
         best = std::max(best, shared::ts_pyramid_slope(z, z0, s, curvature_));
-    }
-    return best;
-}
-
-double FarField::march_sun(double col, double row, double z0, double step_c, double step_r, double unit, double clear,
-                           double dark) const {
-    const double wmax = width_ - 1, hmax = height_ - 1, inv_scale = 1.0 / coarse_scale();
-    double best = kNoSlope;
-    for (const PyramidSample& smp : sun_samples_) {
-        const double c = col + smp.tau * step_c, r = row + smp.tau * step_r;
-        if (c < -1e-7 || r < -1e-7 || c > wmax + 1e-7 || r > hmax + 1e-7) break;
-        const double s = smp.tau * unit;
-        if (shared::ts_pyramid_slope(z_top_, z0, s, curvature_) <= std::max(best, clear)) break;
-        const float z = pyramid_.level(smp.level).sample_level0_valid((c + 0.5) * inv_scale - 0.5, (r + 0.5) * inv_scale - 0.5);
-        if (std::isnan(z)) continue;
-        best = std::max(best, shared::ts_pyramid_slope(z, z0, s, curvature_));
-        if (best >= dark) break;
+        if (best >= enough) break;
     }
     return best;
 }
@@ -136,7 +121,7 @@ void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_ra
             const float z0 = grid.at(col, row);
             float& v = vis[std::size_t(row - origin.row0) * std::size_t(origin.width) + std::size_t(col - origin.col0)];
             if (std::isnan(z0) || std::isnan(v) || v <= 0.0f) continue;
-            const double best = march_sun(col, row, z0, step_c, step_r, unit, clear, dark);
+            const double best = march(sun_samples_, col, row, z0, step_c, step_r, unit, clear, dark);
             if (best == kNoSlope || best < clear) continue;
             v = std::min(v, float(sun_disc_visible_fraction(std::atan(best), elevation, sun_radius_rad)));
         }
@@ -165,7 +150,7 @@ void FarField::raise(HorizonSet& set, const ReceiverWindow& origin, const Receiv
             if (std::isnan(z0)) continue;
             const std::size_t k = std::size_t(row - origin.row0) * std::size_t(set.width) + std::size_t(col - origin.col0);
             for (int d = 0; d < set.directions; ++d) {
-                const double best = march(col, row, z0, step_c[std::size_t(d)], step_r[std::size_t(d)], unit);
+                const double best = march(samples_, col, row, z0, step_c[std::size_t(d)], step_r[std::size_t(d)], unit);
                 if (best == kNoSlope) continue;
                 float& a = set.plane(d)[k];
                 a = std::max(a, float(std::atan(best)));

@@ -15,6 +15,7 @@
 // window reaches that far around it: raise() is for receivers at least that far inside the
 // window (or next to the grid's edge).
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "core/terrain/height_grid.hpp"
@@ -65,11 +66,12 @@ public:
     std::size_t bytes() const;
 
 private:
-    double march(double col, double row, double z0, double step_c, double step_r, double unit) const;
-    // The sun's march: stops once the slope reaches `dark` (the disc is hidden) or no farther
-    // terrain can reach `clear` (the disc's lower edge).
-    double march_sun(double col, double row, double z0, double step_c, double step_r, double unit, double clear,
-                     double dark) const;
+    // The highest slope along `samples` from (col, row) at height z0. It stops once no farther
+    // terrain can beat max(best, floor), or once best reaches `enough` (the sun's march: below
+    // `floor` the disc is clear anyway, at `enough` it is hidden).
+    double march(const std::vector<PyramidSample>& samples, double col, double row, double z0, double step_c,
+                 double step_r, double unit, double floor = -std::numeric_limits<double>::infinity(),
+                 double enough = std::numeric_limits<double>::infinity()) const;
 
     FarFieldOptions options_;
     int width_ = 0, height_ = 0;  // of the grid

@@ -46,8 +46,13 @@ std::size_t isal_compress(int level, const std::uint8_t* in, std::size_t in_size
                           std::size_t out_capacity) {
     // igzip counts in 32-bit lengths; a bigger picture goes to libdeflate.
     if (in_size > 0xffffffffu / 2 || out_capacity > 0xffffffffu) return 0;
-    isal_zstream s;
+    // Zeroed first: isal_deflate_stateless_init leaves fields unset that the stateless path
+    // reads, among them the window size, so whatever the stack held decided it (a small number
+    // there shrinks the window and changes the bytes). Tiles are compared by hash on resume and
+    // merge: the bytes must be a function of the input alone (tests/raster/zlib_stream_test.cpp).
+    isal_zstream s{};
     isal_deflate_stateless_init(&s);
+    s.hist_bits = 0;  // igzip's default window (32 KiB)
     auto& buffer = isal_level_buffer(level);
     s.level = std::uint32_t(level);
     s.level_buf = buffer.empty() ? nullptr : buffer.data();

@@ -32,7 +32,23 @@ struct Interrupted {
     std::string err;
 };
 
-// Starts terrashade with `args`, sends `sig` after `delay`, waits. The child gets default
+// Whether process `pid` blocks SIGINT and SIGTERM, as terrashade's main() does first
+// (app/interrupt_watcher.hpp): from then on a signal is its to handle. Before, the loader and
+// static initialisers are still running and the default disposition would end it.
+bool watches_signals(pid_t pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.starts_with("SigBlk:")) {
+            const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+            const unsigned long long both = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
+            return (mask & both) == both;
+        }
+    return false;
+}
+
+// Starts terrashade with `args`, sends `sig` `delay` after its signal watcher is up (however
+// long a loaded machine takes to get there), waits. The child gets default
 // dispositions and an empty mask (a test runner started in the background ignores SIGINT).
 Interrupted run_and_signal(const std::vector<std::string>& args, int sig, std::chrono::milliseconds delay,
                            const fs::path& err_path) {
@@ -58,6 +74,9 @@ Interrupted run_and_signal(const std::vector<std::string>& args, int sig, std::c
     pid_t pid = 0;
     Interrupted r;
     if (posix_spawn(&pid, argv[0], &files, &attr, argv.data(), environ) != 0) return r;
+    const auto start = std::chrono::steady_clock::now();
+    while (!watches_signals(pid) && std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
     std::this_thread::sleep_for(delay);
     ::kill(pid, sig);
     ::waitpid(pid, &r.status, 0);

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -80,6 +81,45 @@ std::map<std::string, std::uint64_t> xyz_hashes(const fs::path& dir) {
         out[fs::relative(e.path(), dir).string()] = fnv1a(read_bytes(e.path()));
     }
     return out;
+}
+
+// For a failed comparison of two XYZ folders: each tile that differs, in bytes and in pixels
+// (how many differ, by how much, the first one), or which folder lacks it. Tells an encoder
+// that is not a function of the pixels from shading that is not a function of the inputs.
+std::string xyz_differences(const fs::path& a, const fs::path& b) {
+    const auto ha = xyz_hashes(a), hb = xyz_hashes(b);
+    std::ostringstream out;
+    for (const auto& [key, hash] : ha) {
+        const auto it = hb.find(key);
+        if (it == hb.end()) {
+            out << key << ": only in " << a << "\n";
+            continue;
+        }
+        if (it->second == hash) continue;
+        const Pixels pa = read_png(a / key), pb = read_png(b / key);
+        out << key << ": " << fs::file_size(a / key) << " vs " << fs::file_size(b / key) << " bytes";
+        if (pa.width != pb.width || pa.height != pb.height || pa.channels != pb.channels || pa.data.empty()) {
+            out << ", different or unreadable pictures\n";
+            continue;
+        }
+        std::size_t differing = 0, first = pa.data.size();
+        int worst = 0;
+        for (std::size_t k = 0; k < pa.data.size(); ++k)
+            if (pa.data[k] != pb.data[k]) {
+                ++differing, first = std::min(first, k);
+                worst = std::max(worst, std::abs(int(pa.data[k]) - int(pb.data[k])));
+            }
+        out << ", " << differing << " of " << pa.data.size() << " samples differ";
+        if (differing) {
+            const std::size_t px = first / std::size_t(pa.channels);
+            out << " (by up to " << worst << "; first at column " << px % std::size_t(pa.width) << ", row "
+                << px / std::size_t(pa.width) << ")";
+        }
+        out << "\n";
+    }
+    for (const auto& [key, hash] : hb)
+        if (!ha.count(key)) out << key << ": only in " << b << "\n";
+    return out.str();
 }
 
 // The same for an MBTiles file, keyed "z/x/tmsrow".
@@ -350,7 +390,7 @@ TEST(TilesCli, XyzResumeAfterKillEqualsUninterruptedRun) {
     // Killed while shading the first zoom, and once a third of the tiles are written.
     const fs::path early = d / "early";
     kill_and_resume(args, early, [&] { return fs::exists(early / ".terrashade-tiles.json"); });
-    EXPECT_EQ(xyz_hashes(early), whole) << "killed early";
+    EXPECT_TRUE(xyz_hashes(early) == whole) << "killed early:\n" << xyz_differences(early, d / "whole");
     // A fast machine can write the last tiles between two polls: the run is then repeated and
     // killed at a lower count, until a kill lands while tiles are being written.
     std::string report;
@@ -359,7 +399,8 @@ TEST(TilesCli, XyzResumeAfterKillEqualsUninterruptedRun) {
         const fs::path late = d / ("late_" + std::to_string(part));
         const std::size_t at = std::max<std::size_t>(1, whole.size() / part);
         report = kill_and_resume(args, late, [&] { return count_files(late) >= at; }, &killed);
-        EXPECT_EQ(xyz_hashes(late), whole) << "killed late, after " << at << " tiles";
+        EXPECT_TRUE(xyz_hashes(late) == whole)
+            << "killed late, after " << at << " tiles:\n" << xyz_differences(late, d / "whole");
         if (killed) break;
     }
     ASSERT_TRUE(killed) << "every run finished before it was killed";

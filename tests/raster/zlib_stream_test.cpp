@@ -1,0 +1,73 @@
+// zlib_compress is a function of its input, deflater and level only: map tiles, their resume
+// and the merge of shards compare tiles by hash, so the bytes must not depend on what the
+// calling thread's stack held before. igzip's stateless init leaves the window size
+// (hist_bits) unset, and a small number left there by an earlier call shrinks the window.
+#include <cstdint>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/raster/zlib_stream.hpp"
+
+namespace ts::raster {
+namespace {
+
+// Leaves 32-bit words of `word` in the stack below the caller's frame, where the next call's
+// locals go.
+__attribute__((noinline)) void scribble_stack(std::uint32_t word) {
+    volatile std::uint32_t junk[1 << 16];  // 256 KiB: igzip's stream alone is ~100 KiB
+    for (std::size_t k = 0; k < sizeof junk / sizeof junk[0]; ++k) junk[k] = word;
+    (void)junk[0];
+}
+
+// Grey + alpha rows of a shaded tile: runs of slowly varying values, alpha 255.
+std::vector<std::uint8_t> tile_like_bytes(std::uint32_t seed) {
+    std::vector<std::uint8_t> v(256 * (1 + 2 * 256));
+    std::uint32_t state = seed;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        state = state * 1664525u + 1013904223u;
+        v[k] = k % 2 ? 255 : std::uint8_t(100 + (k / 512 + seed) % 50 + (state >> 30));
+    }
+    return v;
+}
+
+std::vector<std::uint8_t> compressed(Deflater d, int level, const std::vector<std::uint8_t>& in) {
+    std::vector<std::uint8_t> out(zlib_bound(in.size()));
+    out.resize(zlib_compress(d, level, in.data(), in.size(), out.data(), out.size()));
+    return out;
+}
+
+// `in` compressed after another picture went through the same thread's working memory and
+// the stack was left holding `stack_word`: what a worker sees after its previous tile.
+std::vector<std::uint8_t> compressed_after(const std::vector<std::uint8_t>& other, std::uint32_t stack_word,
+                                           Deflater d, int level, const std::vector<std::uint8_t>& in) {
+    (void)compressed(d, level, other);
+    std::vector<std::uint8_t> out(zlib_bound(in.size()));
+    scribble_stack(stack_word);
+    out.resize(zlib_compress(d, level, in.data(), in.size(), out.data(), out.size()));
+    return out;
+}
+
+TEST(ZlibStream, TheBytesDependOnTheInputOnlyNotOnEarlierCallsOrTheStack) {
+    const std::vector<std::uint8_t> in = tile_like_bytes(12345);
+    for (const Deflater d : {Deflater::isal, Deflater::libdeflate})
+        for (int level = 0; level <= max_level(d); ++level) {
+            // The reference from a new thread: fresh working memory, a zeroed stack.
+            std::vector<std::uint8_t> reference;
+            std::thread([&] { reference = compressed(d, level, in); }).join();
+            ASSERT_FALSE(reference.empty());
+            std::uint32_t seed = 1;
+            // Window sizes igzip would take (8..15) in both 16-bit halves (its field is 16-bit),
+            // zero, and values it ignores.
+            for (const std::uint32_t word : {0u, 0x00080008u, 0x00090009u, 0x000c000cu, 0x000e000eu, 0xffffffffu,
+                                             0x5a5a5a5au})
+                EXPECT_EQ(compressed_after(tile_like_bytes(seed++), word, d, level, in), reference)
+                    << (d == Deflater::isal ? "isal" : "libdeflate") << " level " << level << " after stack words "
+                    << word;
+        }
+}
+
+}  // namespace
+}  // namespace ts::raster

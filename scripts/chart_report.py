@@ -73,14 +73,19 @@ def main():
                 by_knob[r["knob"]].append(r)
             points = []
             palette = plt.get_cmap("tab10").colors
+            # An error of 0 (the reference setting itself, or settings equal to it) cannot sit on a
+            # log axis: it is drawn a factor 3 below the smallest non-zero error, marked "=0".
+            positive = [r["e"] for r in by_dem[dem] if r["e"] > 0]
+            zero_at = min(positive) / 3 if positive else 1.0
             for k, (knob, rs) in enumerate(sorted(by_knob.items())):
                 rs.sort(key=lambda r: sort_key(r["value"]))
                 ts = [max(r["t"], 1e-9) for r in rs]
-                es = [max(r["e"], 1e-9) for r in rs]
+                es = [r["e"] if r["e"] > 0 else zero_at for r in rs]
                 colour = palette[k % len(palette)]
                 ax.plot(ts, es, "o-", ms=4, lw=1.2, label=knob, color=colour)
                 for r, t, e in zip(rs, ts, es):
-                    ax.annotate(r["value"], (t, e), fontsize=7, xytext=(3, 3), textcoords="offset points")
+                    text = r["value"] + (" (=0)" if r["e"] <= 0 else "")
+                    ax.annotate(text, (t, e), fontsize=7, xytext=(3, 3), textcoords="offset points")
                     points.append((t, e, knob + "=" + r["value"]))
                     if r["is_default"] == "1":
                         ax.plot([t], [e], "o", ms=13, mfc="none", mec=colour, mew=1.8)

@@ -270,6 +270,26 @@ Study device_study(const std::string& dem, Size size) {
     return s;
 }
 
+// bench tiles --knobs: relief's block size, halo and far field against the level shaded whole,
+// and 512- against 256-px tiles.
+Study tile_knobs_study(const std::string& dem) {
+    Study s;
+    s.name = "tiles knobs on " + dem_name(dem);
+    s.expected_s = 35;
+    s.args = "tiles " + shell_quote(dem) + " --zoom 8-11 --knobs";
+    s.parse = [dem](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
+        for (const CsvRecord& r : csv) {
+            const std::string knob = r.at("knob"), value = r.at("value");
+            const bool tile_size = knob == "tile_size";
+            rows.push_back({"tiles", knob, value, csv_field(r, "is_default") == 1, csv_field(r, "seconds"),
+                            csv_field(r, "rms_codes"),
+                            tile_size ? "rms_srgb_codes_vs_256px_tiles" : "rms_srgb_codes_vs_whole_level",
+                            dem_name(dem) + " (relief z11)"});
+        }
+    };
+    return s;
+}
+
 #ifdef TERRASHADE_HAS_GPU
 // bench fly: frame time and screen-space error against the LOD goal (its log's CSV lines).
 Study fly_study(const std::string& dem, double goal_px, Size size) {
@@ -317,6 +337,7 @@ std::vector<Study> studies(const BenchReportOptions& o, Size size) {
     s.push_back(epsilon_study());
     s.push_back(spheres_study(o.data + "/meshes/c172p.ac", size));
     s.push_back(device_study(grenoble, size));
+    if (size != Size::tiny) s.push_back(tile_knobs_study(grenoble));
 #ifdef TERRASHADE_HAS_GPU
     if (size != Size::tiny)
         for (double g : {0.5, 1.0, 2.0, 4.0, 8.0}) s.push_back(fly_study(grenoble, g, size));

@@ -16,6 +16,7 @@
 #include "app/bench/process_usage.hpp"
 #include "app/bench/shell_command.hpp"
 #include "app/bench/synthetic_mosaic.hpp"
+#include "app/bench/tile_knobs_study.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
 #include "app/tiles_options.hpp"
@@ -43,6 +44,8 @@ struct BenchTilesArgs {
     int reference_texels = 96;
     int reference_azimuths = 720;
     std::string reference_out;
+    bool knobs = false;  // the tiles' knobs for the report (tile_knobs_study.hpp)
+    std::string csv;
 };
 
 std::uint8_t srgb_code(float linear) {
@@ -113,8 +116,11 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     if (base.zoom.empty()) base.zoom = "8-12";
     tiles::TileJob job = tile_job(base);
     for (const auto& s : a.styles) tiles::parse_tile_style(s);  // a bad name fails before any work
+    if (a.knobs && a.csv.empty()) throw InputError("bench tiles --knobs: give --csv FILE");
+    if (!a.csv.empty() && !a.knobs) throw InputError("bench tiles: --csv goes with --knobs");
     IoPlan plan;
     plan.output_directory("--reference-out", a.reference_out);
+    plan.output("--csv", a.csv, {".csv"});
     plan.check();
     const std::string& first = a.dem.files.front();
     const bool synthetic = first.starts_with("synthetic:");
@@ -125,6 +131,10 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     const int threads = thread_count(job.shading.threads);
     if (!a.reference_at.empty()) {
         run_reference(a, dem, job);
+        return;
+    }
+    if (a.knobs) {
+        run_tile_knobs_study(dem, job, a.csv);
         return;
     }
     const fs::path root = fs::temp_directory_path() / ("terrashade_bench_tiles_" + std::to_string(::getpid()));
@@ -206,6 +216,10 @@ void add_bench_tiles_command(CLI::App& bench) {
     cmd->add_option("--zoom", a->tiles.zoom, "Zooms Z0-Z1 (default 8-12)");
     cmd->add_option("--styles", a->styles, "Styles to measure (default all)")->delimiter(',');
     cmd->add_flag("!--no-classic", a->classic, "Skip the gdaldem + gdal2tiles.py pipeline");
+    cmd->add_flag("--knobs", a->knobs,
+                  "Relief's block size, halo and far field against the level shaded whole, and 512- against "
+                  "256-px tiles (time and sRGB-code error at the last zoom; needs --csv; bench report runs it)");
+    cmd->add_option("--csv", a->csv, "--knobs: the rows (knob,value,is_default,seconds,rms_codes,max_codes)");
     cmd->add_flag("--keep", a->keep, "Keep the tiles (printed path) to look at them");
     cmd->add_option("--reference", a->reference_at,
                     "LON,LAT: instead of the speeds, relief (at the last zoom's level) against the ray-traced "

@@ -515,3 +515,42 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
 }
 
 }  // namespace
+
+namespace ts::cli_test {
+namespace {
+
+// bench tiles --knobs (the report's tiles study) on a coarse zoom: every block setting within a
+// few sRGB codes of the level shaded whole (RMS), and the 512-px tiles equal to the 256-px ones.
+TEST(TilesCli, BenchKnobsBoundBlockErrorsAndFindTileSizesIdentical) {
+    const fs::path d = temp_dir("bench_knobs");
+    const fs::path csv = d / "knobs.csv";
+    const auto r = run(quote(terrashade()) + " bench tiles " + quote(kGrenoble) + " --zoom 7-8 --knobs --csv " +
+                       quote(csv.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "knob,value,is_default,seconds,rms_codes,max_codes");
+    std::map<std::string, int> rows, defaults;
+    while (std::getline(in, line)) {
+        std::stringstream ss(line);
+        std::string knob, value, is_default, seconds, rms, worst;
+        std::getline(ss, knob, ','), std::getline(ss, value, ','), std::getline(ss, is_default, ',');
+        std::getline(ss, seconds, ','), std::getline(ss, rms, ','), std::getline(ss, worst, ',');
+        ++rows[knob];
+        defaults[knob] += is_default == "1";
+        EXPECT_GT(std::stod(seconds), 0.0) << line;
+        if (knob == "tile_size" || value == "whole")
+            EXPECT_EQ(std::stod(rms), 0.0) << line;
+        else
+            EXPECT_LT(std::stod(rms), 2.0) << line;
+    }
+    for (const std::string k : {"far_field", "block_halo", "block_texels", "tile_size"}) {
+        EXPECT_GE(rows[k], 2) << k;
+        EXPECT_EQ(defaults[k], 1) << k;
+    }
+    EXPECT_EQ(run(quote(terrashade()) + " bench tiles " + quote(kGrenoble) + " --knobs").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace ts::cli_test

@@ -23,6 +23,7 @@ struct BenchBlockersOptions {
     std::string motion_dem = "../shared/data/dem/srtm3_N39E040_1000px.tif";
     int motion_spheres = 400;
     int motion_frames = 8;
+    bool motion_only = false;  // the moving aircraft alone (bench report's culling study)
 };
 
 // Per-frame cost of the mesh moving over motion_dem: the footprints of the old and new place

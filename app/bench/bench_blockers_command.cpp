@@ -92,6 +92,11 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         check.count = o.motion_spheres;
         blockers::validate(check);
     }
+    if (o.motion_only) {
+        if (o.motion_frames <= 0) throw InputError("bench blockers --motion-only: --motion-frames must be at least 1");
+        run_blocker_motion_bench(o);
+        return;
+    }
     const dem::Dem dem = dem::read_dem(o.dem);
     const terrain::HeightGrid grid = terrain::metric_view(dem);
     const mesh::TriangleMesh mesh = mesh::import_mesh(o.mesh);
@@ -251,6 +256,7 @@ void add_bench_blockers_command(CLI::App& bench) {
     cmd->add_option("--csv", o->csv, "Also write the accuracy rows as CSV");
     cmd->add_option("--motion-dem", o->motion_dem, "DEM of the moving-aircraft run")->capture_default_str();
     cmd->add_option("--motion-spheres", o->motion_spheres, "Spheres of the moving aircraft")->capture_default_str();
+    cmd->add_flag("--motion-only", o->motion_only, "Only the moving aircraft (no accuracy against the triangles)");
     cmd->add_option("--motion-frames", o->motion_frames, "Frames of the moving-aircraft run (0: skip it)")
         ->capture_default_str();
     cmd->callback([o] { run_bench_blockers(*o); });

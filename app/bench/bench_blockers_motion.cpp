@@ -22,6 +22,7 @@
 #include "core/util/stopwatch.hpp"
 #include "core/visibility/blocker_footprint.hpp"
 #include "core/visibility/blocker_log_sh.hpp"
+#include "core/visibility/blocker_reference.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/earth_curvature.hpp"
 
@@ -106,6 +107,10 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
         long long pairs = 0, texels = 0;
     };
     Totals tree, flat;
+    // The last frame's log-SH of each pass, and its footprint: culling's error is the
+    // hierarchy's sky visibility against the flat loop's (every sphere kept).
+    std::vector<float> last_log_sh[2];
+    visibility::TexelRect last_rect;
     for (int pass = 0; pass < 2; ++pass) {
         const bool use_tree = pass == 0;
         Totals& tot = use_tree ? tree : flat;
@@ -134,7 +139,21 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
             tot.sun_s += ts.seconds();
             old_rect = rect;
         }
+        last_log_sh[pass] = std::move(log_sh);
+        last_rect = old_rect;
     }
+    const sh::ShVec lobe = visibility::zenith_cosine_lobe();
+    double se = 0, worst = 0;
+    long long compared = 0;
+    for (int r = last_rect.row0; r < last_rect.row1; ++r)
+        for (int c = last_rect.col0; c < last_rect.col1; ++c) {
+            const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
+            const double a = visibility::sky_visibility_of_log_sh(last_log_sh[0].data() + t, texels,
+                                                                  sh::ExpMethod::scaling_squaring, lobe);
+            const double b = visibility::sky_visibility_of_log_sh(last_log_sh[1].data() + t, texels,
+                                                                  sh::ExpMethod::scaling_squaring, lobe);
+            se += (a - b) * (a - b), worst = std::max(worst, std::abs(a - b)), ++compared;
+        }
     const double n = std::max(1, o.motion_frames);
     auto line = [&](const char* what, const Totals& t) {
         std::printf("%-26s %10.1f %10.2f %14.0f %14.3g\n", what, 1e3 * t.sky_s / n, 1e3 * t.sun_s / n, t.pairs / n,
@@ -145,6 +164,8 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
     line("flat (every sphere)", flat);
     std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f\n", tree.texels / n,
                 flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0);
+    std::printf("culling error: sky visibility rms %.3g, max %.3g over %lld texels (hierarchy against flat, last "
+                "frame)\n", compared ? std::sqrt(se / double(compared)) : 0.0, worst, compared);
 }
 
 }  // namespace ts::app

@@ -290,6 +290,34 @@ Study tile_knobs_study(const std::string& dem) {
     return s;
 }
 
+// bench blockers --motion-only: a moving 400-sphere aircraft's per-frame sky update through the
+// sphere hierarchy (threshold and tangent-plane culling) against every sphere at every texel.
+Study culling_study(const std::string& dem, const std::string& mesh, Size size) {
+    Study s;
+    s.name = "sphere culling on " + dem_name(dem);
+    s.expected_s = size == Size::full ? 60 : 15;
+    s.writes_csv = false;
+    s.args = "blockers --motion-only --mesh " + shell_quote(mesh) + " --motion-dem " + shell_quote(dem) +
+             " --motion-frames " + (size == Size::full ? "8" : "2");
+    s.parse = [dem](const std::vector<CsvRecord>&, const std::string& log, std::vector<ReportRow>& rows) {
+        const std::regex frame(R"(^(hierarchy|flat) \([^)]*\)\s+([0-9.]+))");
+        const std::regex error(R"(^culling error: sky visibility rms ([0-9.eE+-]+))");
+        double tree_s = kNaN, flat_s = kNaN, rms = kNaN;
+        std::istringstream in(log);
+        std::string l;
+        while (std::getline(in, l)) {
+            std::smatch m;
+            if (std::regex_search(l, m, frame)) (m[1] == "hierarchy" ? tree_s : flat_s) = std::stod(m[2]) / 1000.0;
+            if (std::regex_search(l, m, error)) rms = std::stod(m[1]);
+        }
+        if (std::isnan(tree_s) || std::isnan(flat_s) || std::isnan(rms)) return;
+        const std::string where = dem_name(dem) + " (400 spheres, per frame)";
+        rows.push_back({"render", "sphere_culling", "hierarchy", true, tree_s, rms, "sky_visibility_rms_vs_no_culling", where});
+        rows.push_back({"render", "sphere_culling", "none", false, flat_s, 0.0, "sky_visibility_rms_vs_no_culling", where});
+    };
+    return s;
+}
+
 #ifdef TERRASHADE_HAS_GPU
 // bench fly: frame time and screen-space error against the LOD goal (its log's CSV lines).
 Study fly_study(const std::string& dem, double goal_px, Size size) {
@@ -338,6 +366,7 @@ std::vector<Study> studies(const BenchReportOptions& o, Size size) {
     s.push_back(spheres_study(o.data + "/meshes/c172p.ac", size));
     s.push_back(device_study(grenoble, size));
     if (size != Size::tiny) s.push_back(tile_knobs_study(grenoble));
+    if (size != Size::tiny) s.push_back(culling_study(grenoble, o.data + "/meshes/c172p.ac", size));
 #ifdef TERRASHADE_HAS_GPU
     if (size != Size::tiny)
         for (double g : {0.5, 1.0, 2.0, 4.0, 8.0}) s.push_back(fly_study(grenoble, g, size));

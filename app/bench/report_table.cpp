@@ -9,13 +9,23 @@
 
 namespace ts::bench {
 
+namespace {
+// A text field as RFC 4180 writes it: quoted (quotes doubled) when it holds a comma or a quote.
+std::string csv_text(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+}  // namespace
+
 std::string report_csv(const std::vector<ReportRow>& rows) {
     std::ostringstream out;
     out << "command,knob,value,is_default,seconds,error,error_metric,dem\n";
     for (const ReportRow& r : rows)
-        out << r.command << ',' << r.knob << ',' << r.value << ',' << (r.is_default ? 1 : 0) << ','
-            << app::csv_number(r.seconds) << ',' << app::csv_number(r.error) << ',' << r.error_metric << ',' << r.dem
-            << '\n';
+        out << csv_text(r.command) << ',' << csv_text(r.knob) << ',' << csv_text(r.value) << ','
+            << (r.is_default ? 1 : 0) << ',' << app::csv_number(r.seconds) << ',' << app::csv_number(r.error) << ','
+            << csv_text(r.error_metric) << ',' << csv_text(r.dem) << '\n';
     return out.str();
 }
 

@@ -93,9 +93,17 @@ void HudOverlay::set(const fly::HudImage& image, int x, int y) {
         visible_ = false;
         return;
     }
+    const std::size_t bytes = std::size_t(image.width) * std::size_t(image.height) * 4;
+    // The staging buffer still holds the last overlay: an unchanged one is not copied again.
+    const bool uploaded = pending_ || layout_now_ == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    if (uploaded && image.width == width_ && image.height == height_ && x == x_ && y == y_ &&
+        std::memcmp(staging_.mapped(), image.rgba.data(), bytes) == 0) {
+        visible_ = true;
+        return;
+    }
     if (image.width > capacity_w_ || image.height > capacity_h_) grow(image.width, image.height);
     // Rows packed tightly: the copy's buffer layout is the overlay's own width.
-    std::memcpy(staging_.mapped(), image.rgba.data(), std::size_t(image.width) * std::size_t(image.height) * 4);
+    std::memcpy(staging_.mapped(), image.rgba.data(), bytes);
     width_ = image.width, height_ = image.height, x_ = x, y_ = y;
     pending_ = true;
     visible_ = true;

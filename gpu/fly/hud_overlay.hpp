@@ -21,7 +21,8 @@ public:
     HudOverlay(const Context& context, VkRenderPass pass);
 
     // The new overlay, its top-left corner at pixel (x, y) of the target; an empty image hides
-    // it. The image grows (never shrinks) to hold it.
+    // it. The image grows (never shrinks) to hold it; the same pixels at the same place are not
+    // copied again.
     void set(const fly::HudImage& image, int x, int y);
     void hide() { visible_ = false; }
     bool visible() const { return visible_; }

@@ -20,6 +20,8 @@
 #include "app/io_plan.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
+#include "core/fly/hud_status.hpp"
+#include "core/fly/hud_text.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/quality/radiance_quality.hpp"
 #include "core/quality/visibility_quality.hpp"
@@ -51,7 +53,8 @@ constexpr const char* kKeys =
     "  [ / ]         time of day -15 / +15 minutes;  , / .  -1 / +1 hour\n"
     "  P or F12      screenshot (PNG in --out, default the current directory)\n"
     "  K             start / stop recording the flight to --record (CSV, the --path format)\n"
-    "  H             print these keys\n";
+    "  H             HUD in the frame on / off (--hud)\n"
+    "  F1            print these keys\n";
 
 struct FlyArgs {
     DemInput dem;
@@ -69,6 +72,7 @@ struct FlyArgs {
     double min_solid_angle_sr = 0.01;
     double sky_detail = 0.05;
     std::string camera = "chase";
+    std::string hud;  // on|off; empty: on in the window, off with --frames
     int frames = 0;
     int exit_after = 0;
     std::string out;
@@ -163,11 +167,36 @@ void write_rgba_png(const std::filesystem::path& file, int w, int h, const std::
     write_atomically(file, [&](const std::filesystem::path& tmp) { raster::write_png(tmp, file, w, h, 3, rgb.data()); });
 }
 
-std::string stats_line(const gpu::FlyFrameStats& st, double frame_ms, double gpu_ms) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%.1f ms (select %.2f, draw %.1f) %zu patches %zu tris err<=%.2f px", frame_ms,
-                  st.select_ms, gpu_ms, st.patches, st.triangles, st.screen_error_px);
-    return buf;
+// What the HUD and the window title say about this frame; `lead` is the fps or the frame number.
+fly::HudStatus hud_status(const gpu::Flythrough& flight, const std::string& lead, const gpu::FlyFrameStats& st,
+                          double frame_ms, double draw_ms, const fly::CameraPose& camera, light::UtcTime time,
+                          fly::CameraMode mode, bool paused, bool recording) {
+    fly::HudStatus h;
+    h.lead = lead;
+    h.frame_ms = frame_ms, h.select_ms = st.select_ms, h.draw_ms = draw_ms;
+    h.patches = st.patches, h.triangles = st.triangles, h.error_px = st.screen_error_px;
+    const glm::dvec2 ll = flight.lonlat_of(camera.eye);
+    h.lon_deg = ll.x, h.lat_deg = ll.y, h.height_m = camera.eye.z, h.heading_deg = camera.heading_deg;
+    h.solar_time = solar_time(time, ll.x);
+    h.sun_elevation_deg = flight.sun().elevation_deg;
+    h.camera = fly::camera_mode_name(mode);
+    h.paused = paused, h.recording = recording;
+    return h;
+}
+
+// The HUD in the frame's top-left corner, its font doubled on frames wider than 1200 px.
+void show_hud(gpu::FlyRenderer& renderer, const fly::HudStatus& status) {
+    fly::HudStyle style;
+    style.scale = fly::hud_scale_for_width(renderer.width());
+    const int margin = 6 * style.scale;
+    renderer.set_hud(fly::rasterise_hud(fly::hud_lines(status), style), margin, margin);
+}
+
+bool parse_hud(const std::string& text, bool offscreen) {
+    if (text.empty()) return !offscreen;
+    if (text == "on") return true;
+    if (text == "off") return false;
+    throw InputError("--hud " + text + ": give on or off");
 }
 
 void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath& path, fly::CameraMode mode) {
@@ -180,13 +209,23 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     std::size_t tris_sum = 0;
     ProgressBar bar("frames", std::uint64_t(a.frames), "frames");
     std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms\n";
+    const bool hud = parse_hud(a.hud, true);
+    double previous_draw_ms = 0;
     for (int i = 0; i < a.frames; ++i) {
         const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
         const fly::CameraPose aircraft = flight.pose_of(path.at(t));
-        flight.prepare(camera_for(mode, aircraft), u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        const fly::CameraPose camera = camera_for(mode, aircraft);
+        flight.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
+        // The draw time shown is the previous frame's: this one's is known only after it.
+        if (hud)
+            show_hud(flight.renderer(),
+                     hud_status(flight, "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames), st,
+                                st.select_ms + previous_draw_ms, previous_draw_ms, camera, flight.time(), mode, false,
+                                false));
         const Stopwatch draw;
         flight.renderer().render_to_memory(u, flight.patches(), rgba);
         const double draw_ms = draw.milliseconds();
+        previous_draw_ms = draw_ms;
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
         write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(), flight.renderer().height(),
@@ -240,6 +279,7 @@ void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& windo
     double fps = 0, frame_ms = 0, draw_ms = 0;
     fly::CameraPose camera;
     int frames_drawn = 0;
+    bool hud = parse_hud(a.hud, false);
     while (true) {
         const gpu::WindowInput in = window.poll();
         if (in.close) break;
@@ -274,7 +314,12 @@ void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& windo
                 case GLFW_KEY_MINUS: free_flight.speed_mps /= 1.5; break;
                 case GLFW_KEY_P:
                 case GLFW_KEY_F12: screenshot = true; break;
-                case GLFW_KEY_H: std::printf("%s", kKeys); break;
+                case GLFW_KEY_H:
+                    hud = !hud;
+                    if (!hud) flight.renderer().hide_hud();
+                    title_time = 1.0;  // shown (or its title refreshed) this frame, not in 0.25 s
+                    break;
+                case GLFW_KEY_F1: std::printf("%s", kKeys); break;
                 case GLFW_KEY_K:
                     if (!recording) {
                         recording = true;
@@ -367,15 +412,14 @@ void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& windo
         }
         if (title_time >= 0.25) {
             title_time = 0;
-            const glm::dvec2 ll = flight.lonlat_of(camera.eye);
-            char title[320];
-            std::snprintf(title, sizeof title,
-                          "terrashade fly | %.0f fps %s | %.4f%c %.4f%c %.0f m | hdg %03.0f | %s solar | sun %.0f deg | %s%s%s",
-                          fps, stats_line(st, frame_ms, draw_ms).c_str(), std::abs(ll.y), ll.y >= 0 ? 'N' : 'S',
-                          std::abs(ll.x), ll.x >= 0 ? 'E' : 'W', camera.eye.z, camera.heading_deg,
-                          solar_time(time, ll.x).c_str(), flight.sun().elevation_deg, fly::camera_mode_name(mode),
-                          paused ? " | paused" : "", recording ? " | REC" : "");
-            window.set_title(title);
+            char lead[32];
+            std::snprintf(lead, sizeof lead, "%.0f fps", fps);
+            const fly::HudStatus status =
+                hud_status(flight, lead, st, frame_ms, draw_ms, camera, time, mode, paused, recording);
+            window.set_title(fly::hud_title(status));
+            // Drawn from the next frame on; the text changes at this 4 Hz, so the overlay is
+            // copied to the device no more often.
+            if (hud) show_hud(flight.renderer(), status);
         }
     }
     if (recording && !recorded.empty()) {
@@ -397,6 +441,7 @@ void run_fly(const FlyArgs& a) {
     if (a.exit_after < 0) throw InputError("--exit-after must be >= 0");
     const bool offscreen = a.frames > 0;
     if (offscreen && a.out.empty()) throw InputError("fly: --frames N needs --out DIR");
+    parse_hud(a.hud, offscreen);
     if (a.directions < 4 || a.directions > 256) throw InputError("--directions must be in [4, 256]");
     if (!(a.pixel_error > 0.05 && a.pixel_error <= 100)) throw InputError("--pixel-error must be in (0.05, 100]");
     if (a.patch_quads < 4 || a.patch_quads > 128 || (a.patch_quads & (a.patch_quads - 1)) != 0)
@@ -541,6 +586,9 @@ void add_fly_command(CLI::App& root) {
                     "by one (0: everywhere); farther, the bound's cover scaled once")
         ->capture_default_str();
     cmd->add_option("--camera", args->camera, "chase, cockpit, free or orbit (C cycles them)")->capture_default_str();
+    cmd->add_option("--hud", args->hud,
+                    "on|off: the HUD (fps, timings, position, sun, camera) drawn in the frame's top-left corner "
+                    "(default on in the window, H toggles it; off with --frames)");
     cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");
     cmd->add_option("--exit-after", args->exit_after, "close the window after N frames (scripts and tests; 0 = never)");
     cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");

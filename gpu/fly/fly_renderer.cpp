@@ -5,7 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "gpu/spirv.hpp"
+#include "gpu/fly/graphics_pipeline.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace ts::gpu {
@@ -96,74 +96,6 @@ DeviceHandle<VkRenderPass> make_render_pass(VkDevice device) {
     return {device, pass, vkDestroyRenderPass};
 }
 
-DeviceHandle<VkPipeline> make_pipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass pass,
-                                       const char* vertex, const char* fragment, bool terrain) {
-    ShaderModule vs(device, spirv(vertex)), fs(device, spirv(fragment));
-    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vs.get();
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fs.get();
-    stages[1].pName = "main";
-    VkPipelineVertexInputStateCreateInfo input{};
-    input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    VkPipelineInputAssemblyStateCreateInfo assembly{};
-    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{};
-    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{};
-    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{};
-    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineDepthStencilStateCreateInfo depth_state{};
-    depth_state.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-    // Reversed Z. The terrain goes first and writes depth; the sky is drawn at depth 0 (infinitely
-    // far) only where nothing was (EQUAL against the clear value), so it is shaded once per pixel
-    // it covers instead of under the terrain too.
-    depth_state.depthTestEnable = VK_TRUE;
-    depth_state.depthWriteEnable = terrain ? VK_TRUE : VK_FALSE;
-    depth_state.depthCompareOp = terrain ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_EQUAL;
-    VkPipelineColorBlendAttachmentState blend_attachment{};
-    blend_attachment.colorWriteMask =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo blend{};
-    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blend_attachment;
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{};
-    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamic_states;
-    VkGraphicsPipelineCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    info.stageCount = 2;
-    info.pStages = stages.data();
-    info.pVertexInputState = &input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth_state;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = layout;
-    info.renderPass = pass;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
-    return {device, pipeline, vkDestroyPipeline};
-}
-
 }  // namespace
 
 std::vector<std::uint32_t> patch_indices(int n) {
@@ -214,12 +146,15 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     sky_layout_ = PipelineLayout(device, set_layout_.get(), 0, kStages);
     terrain_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(PatchPush), VK_SHADER_STAGE_VERTEX_BIT);
     render_pass_ = make_render_pass(device);
-    sky_pipeline_ = make_pipeline(device, sky_layout_.get(), render_pass_.get(), "fly_sky.vert", "fly_sky.frag", false);
+    sky_pipeline_ = make_graphics_pipeline(device, sky_layout_.get(), render_pass_.get(), "fly_sky.vert", "fly_sky.frag",
+                                           PipelineDepth::behind);
     terrain_pipeline_ =
-        make_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert", "fly_terrain.frag", true);
+        make_graphics_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert", "fly_terrain.frag",
+                               PipelineDepth::nearest);
     aircraft_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(glm::mat4), VK_SHADER_STAGE_VERTEX_BIT);
-    aircraft_pipeline_ = make_pipeline(device, aircraft_layout_.get(), render_pass_.get(), "fly_aircraft.vert",
-                                       "fly_aircraft.frag", true);
+    aircraft_pipeline_ = make_graphics_pipeline(device, aircraft_layout_.get(), render_pass_.get(), "fly_aircraft.vert",
+                                                "fly_aircraft.frag", PipelineDepth::nearest);
+    hud_ = HudOverlay(context, render_pass_.get());
     command_pool_ = CommandPool(device, context.device().queue_family());
     commands_ = CommandBuffer(device, command_pool_);
     fence_ = Fence(device);
@@ -306,6 +241,7 @@ void FlyRenderer::set_aircraft_transform(const glm::mat4& model_to_eye_relative,
 
 void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches) {
     std::memcpy(frame_.mapped(), &frame, sizeof frame);
+    hud_.record_upload(cmd);
     VkClearValue clears[2]{};
     clears[1].depthStencil = {0.0f, 0};  // reversed Z: 0 is infinitely far
     VkRenderPassBeginInfo begin{};
@@ -341,6 +277,7 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, sky_layout_.get(), 0, 1, &set_, 0, nullptr);
     vkCmdDraw(cmd, 3, 1, 0, 0);
+    hud_.record_draw(cmd, width_, height_);
     vkCmdEndRenderPass(cmd);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The flythrough's drawing on Vulkan: a render pass into an RGBA8 colour target (already
 // exposed and display-encoded by the shaders) with a reversed-Z depth buffer, the terrain's
-// CDLOD patches (fly_terrain.*, one push-constant block per patch) then the sky (fly_sky.*)
-// where no terrain was drawn. The window blits that target into its swapchain image; --frames copies it to memory:
+// CDLOD patches (fly_terrain.*, one push-constant block per patch), the aircraft, then the sky
+// (fly_sky.*) where no terrain was drawn, and the HUD over it all (gpu/fly/hud_overlay.hpp). The window blits that target into its swapchain image; --frames copies it to memory:
 // the same pixels either way.
 //
 // One frame in flight: record() and the host-side updates happen while the device is idle
@@ -21,6 +21,7 @@
 #include "gpu/context.hpp"
 #include "gpu/descriptors.hpp"
 #include "gpu/fly/gpu_image.hpp"
+#include "gpu/fly/hud_overlay.hpp"
 #include "gpu/pipeline.hpp"
 
 namespace ts::gpu {
@@ -81,6 +82,11 @@ public:
     // node its bound (eye-relative centre, radius; metres) and (skip index, 1 for a leaf, 0, 0).
     void set_aircraft_spheres(std::span<const glm::vec4> nodes);
 
+    // The HUD drawn last, over everything, its top-left corner at pixel (x, y); an empty image
+    // (or hide_hud) draws none. Copied to the device at the next record() only.
+    void set_hud(const fly::HudImage& image, int x, int y) { hud_.set(image, x, y); }
+    void hide_hud() { hud_.hide(); }
+
     // Records one frame into `cmd` (begun by the caller): the render pass, leaving the colour
     // target in TRANSFER_SRC_OPTIMAL for a blit or a copy.
     void record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, const std::vector<fly::CdlodPatch>& patches);
@@ -115,6 +121,7 @@ private:
     GpuImage color_, depth_;
     DeviceHandle<VkFramebuffer> framebuffer_;
     Buffer readback_, depth_readback_;
+    HudOverlay hud_;
     CommandPool command_pool_;
     CommandBuffer commands_;
     Fence fence_;

@@ -209,7 +209,7 @@ WindowInput FlyWindow::poll() {
     static constexpr int kPressKeys[] = {GLFW_KEY_ESCAPE, GLFW_KEY_C, GLFW_KEY_O, GLFW_KEY_V, GLFW_KEY_P,
                                          GLFW_KEY_F12, GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET,
                                          GLFW_KEY_COMMA, GLFW_KEY_PERIOD, GLFW_KEY_EQUAL, GLFW_KEY_MINUS,
-                                         GLFW_KEY_SPACE, GLFW_KEY_K, GLFW_KEY_H};
+                                         GLFW_KEY_SPACE, GLFW_KEY_K, GLFW_KEY_H, GLFW_KEY_F1};
     // Edge detection is done here (no callbacks: no state shared through a global).
     static_assert(sizeof(kPressKeys) / sizeof(int) < 64);
     WindowInput in;

@@ -1,6 +1,6 @@
 // `terrashade fly`: a short path over the shared Grenoble DEM rendered offscreen (--frames) with
-// the validation layer on, the window opened and closed under xvfb-run, the one-line message
-// without a display, and bad input found before any work.
+// the validation layer on, the HUD drawn over those frames, the window opened and closed under
+// xvfb-run, the one-line message without a display, and bad input found before any work.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -106,6 +106,47 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     EXPECT_NEAR(cy / changed, h / 2.0, 0.2 * h);
 }
 
+// --hud on draws the HUD over the same frame: a dark box with near-white text in the top-left
+// corner, every other pixel as without it (--frames defaults to no HUD, so the frames above
+// are unaffected).
+TEST(FlyCli, TheHudIsDrawnInTheTopLeftCornerOnly) {
+    const auto dir = temp_dir("fly_hud");
+    const std::string args = "fly " + quote(kDem) + " --frames 2 --size 480x270 --directions 8 --path " +
+                             quote(write_path(dir).string()) + " --out ";
+    const Result on = run("TERRASHADE_VALIDATION=1 " + ts_cmd(args + quote((dir / "on").string()) + " --hud on"));
+    ASSERT_EQ(on.exit_code, 0) << on.err;
+    EXPECT_EQ(on.err.find("validation:"), std::string::npos) << on.err;
+    const Result off = run(ts_cmd(args + quote((dir / "off").string())));
+    ASSERT_EQ(off.exit_code, 0) << off.err;
+    for (const char* frame : {"frame_0000.png", "frame_0001.png"}) {
+        int w = 0, h = 0;
+        const auto with = read_rgb(dir / "on" / frame, w, h);
+        const auto without = read_rgb(dir / "off" / frame, w, h);
+        ASSERT_EQ(with.size(), without.size());
+        int x0 = w, y0 = h, x1 = -1, y1 = -1, white = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = 3 * (std::size_t(y) * std::size_t(w) + std::size_t(x));
+                bool differs = false, text = true;
+                for (int c = 0; c < 3; ++c) {
+                    differs |= with[i + std::size_t(c)] != without[i + std::size_t(c)];
+                    text &= with[i + std::size_t(c)] >= 225;
+                }
+                if (!differs) continue;
+                x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+                white += text ? 1 : 0;
+            }
+        // Three lines of text at 1x (the frame is narrower than 1200 px) on their box.
+        EXPECT_GE(x0, 4) << frame;
+        EXPECT_GE(y0, 4) << frame;
+        EXPECT_LT(y1, 60) << frame << ": the HUD reaches down to row " << y1;
+        EXPECT_GT(y1 - y0, 30) << frame;
+        EXPECT_GT(x1 - x0, 200) << frame;
+        EXPECT_LT(x1, w * 85 / 100) << frame << ": the HUD reaches across to column " << x1;
+        EXPECT_GT(white, 300) << frame << ": no near-white text";
+    }
+}
+
 TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
     const Result r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + ts_cmd("fly " + quote(kDem)));
     EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -157,7 +198,7 @@ TEST(FlyCli, BadInputExitsTwoBeforeWork) {
 TEST(FlyCli, HelpListsTheKeys) {
     const Result r = run(ts_cmd("fly --help"));
     EXPECT_EQ(r.exit_code, 0);
-    for (const char* key : {"Esc", "W/S", "screenshot", "recording", "time of day"})
+    for (const char* key : {"Esc", "W/S", "screenshot", "recording", "time of day", "HUD", "--hud"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key;
 }
 

@@ -76,7 +76,8 @@ def main():
             # An error of 0 (the reference setting itself, or settings equal to it) cannot sit on a
             # log axis: it is drawn a factor 3 below the smallest non-zero error, marked "=0".
             positive = [r["e"] for r in by_dem[dem] if r["e"] > 0]
-            zero_at = min(positive) / 3 if positive else 1.0
+            # Without any non-zero error (settings all equal to the reference) the axis is linear.
+            zero_at = min(positive) / 3 if positive else 0.0
             for k, (knob, rs) in enumerate(sorted(by_knob.items())):
                 rs.sort(key=lambda r: sort_key(r["value"]))
                 ts = [max(r["t"], 1e-9) for r in rs]
@@ -92,8 +93,12 @@ def main():
             front = pareto(points)
             ax.step([p[0] for p in front], [p[1] for p in front], "k--", where="post", lw=1, alpha=0.6,
                     label="Pareto front")
-            ax.set_xscale("log")
-            ax.set_yscale("log")
+            times = [max(r["t"], 1e-9) for r in by_dem[dem]]
+            # Times within a factor 10 read better on a linear axis (log ticks would crowd it).
+            ax.set_xscale("log" if max(times) > 10 * min(times) else "linear")
+            ax.set_yscale("log" if positive else "linear")
+            if not positive:
+                ax.set_ylim(-0.5, 1.0)
             ax.set_xlabel("seconds")
             ax.set_ylabel(metric)
             ax.set_title(f"{command}: {dem}", fontsize=10)

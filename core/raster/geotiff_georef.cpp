@@ -1,7 +1,11 @@
 #include "core/raster/geotiff_georef.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 #include <geo_normalize.h>
 #include <geotiff.h>
@@ -9,6 +13,7 @@
 #include <xtiffio.h>
 
 #include "core/util/error.hpp"
+#include "core/util/isolated_call.hpp"
 
 namespace ts::raster {
 
@@ -62,6 +67,36 @@ bool raster_space_transform(TIFF* tif, geo::GeoTransform& t) {
     return false;
 }
 
+// User-defined keys assembled into a PROJ string by libgeotiff, in a child process: its
+// normalisation writes into fixed buffers (GTIFGetProj4Defn strcat()s names taken from the
+// file), so a crafted file overflows them and aborts the process. A crash there becomes an
+// InputError. Empty when libgeotiff cannot resolve the keys.
+std::string proj_string_from_user_defined_keys(GTIF* gt, const std::string& path) {
+    IsolationLimits limits;
+    limits.timeout_s = 8.0;
+    const std::vector<std::uint8_t> bytes = run_isolated(
+        [gt] {
+            // Only this child's stderr: libgeotiff and PROJ print their complaints there, and
+            // libc its abort message; the caller reports one line.
+            if (const int null_fd = ::open("/dev/null", O_WRONLY); null_fd >= 0) ::dup2(null_fd, STDERR_FILENO);
+            std::string definition;
+            GTIFDefn* defn = GTIFAllocDefn();
+            if (GTIFGetDefn(gt, defn) && defn->DefnSet) {
+                if (char* proj4 = GTIFGetProj4Defn(defn)) {
+                    definition = proj4;
+                    GTIFFreeMemory(proj4);
+                }
+            }
+            GTIFFreeDefn(defn);
+            return std::vector<std::uint8_t>(definition.begin(), definition.end());
+        },
+        path + " (its user-defined GeoKeys)", limits);
+    std::string definition(bytes.begin(), bytes.end());
+    // PROJ reads a bare "+proj=..." as a conversion; "+type=crs" makes it a CRS.
+    if (!definition.empty() && definition.find("+type=crs") == std::string::npos) definition += " +type=crs";
+    return definition;
+}
+
 std::string vertical_datum_name(unsigned short code) {
     switch (code) {
         case 5773: return "EGM96 geoid";
@@ -83,17 +118,7 @@ std::shared_ptr<const geo::Crs> crs_from_keys(GTIF* gt, const std::string& path)
     } else if (model == ModelTypeGeographic && gcs && is_code(*gcs)) {
         definition = "EPSG:" + std::to_string(*gcs);
     } else if (model == ModelTypeProjected || model == ModelTypeGeographic) {
-        // User-defined keys: let libgeotiff assemble them into a PROJ string.
-        GTIFDefn* defn = GTIFAllocDefn();
-        if (GTIFGetDefn(gt, defn) && defn->DefnSet) {
-            if (char* proj4 = GTIFGetProj4Defn(defn)) {
-                definition = proj4;
-                GTIFFreeMemory(proj4);
-                // PROJ reads a bare "+proj=..." as a conversion; "+type=crs" makes it a CRS.
-                if (definition.find("+type=crs") == std::string::npos) definition += " +type=crs";
-            }
-        }
-        GTIFFreeDefn(defn);
+        definition = proj_string_from_user_defined_keys(gt, path);
         if (definition.empty()) throw input_error(path, "unknown coordinate reference system (user-defined GeoKeys libgeotiff cannot resolve)");
     } else if (!model) {
         throw input_error(path, "GeoTIFF without GTModelTypeGeoKey: unknown coordinate reference system");

@@ -66,6 +66,14 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "relief/svf/color: between source texels, cubic (Catmull-Rom: crisp where a zoom magnifies its "
                    "DEM level) or bilinear")
         ->capture_default_str();
+    cmd.add_option("--relief-contrast", a.relief_contrast,
+                   "relief: the shading's contrast in stops about open flat ground, 0.25..4 (1 = physical; 1.5 for "
+                   "print: a slope a stop brighter than the flat becomes 1.5 stops brighter, a shadow as much darker)")
+        ->capture_default_str();
+    cmd.add_option("--level-bias", a.level_bias,
+                   "Shade each zoom from the DEM level matching its pixels moved by B, -4..4: > 0 coarser (faster, "
+                   "softer), < 0 finer (slower, aliased); docs/tiles.md")
+        ->capture_default_str();
     cmd.add_option("--far-field", a.far_field,
                    "relief/svf/color in blocks: the sky's terrain beyond the halo, exact (the whole level swept per "
                    "block: slow) or marched over coarser levels: fast, balanced, fine, finest")
@@ -105,6 +113,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);
     s.resampling = tiles::parse_resampling(a.resampling);
+    s.relief_contrast = a.relief_contrast;
+    job.level_bias = a.level_bias;
     s.threads = a.threads;
     tiles::check_tile_job(job);
     return job;

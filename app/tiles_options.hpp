@@ -25,6 +25,8 @@ struct TilesArgs {
     int block_halo = 256;
     std::string far_field = "balanced";
     std::string resampling = "cubic";
+    double relief_contrast = 1.0;
+    int level_bias = 0;
     int threads = 0;
     // --max-error E: each zoom's --directions chosen for a relative radiance error E
     // (core/quality/radiance_quality.hpp); --directions given too conflicts.

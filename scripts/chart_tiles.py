@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """docs/tiles.md figures from scripts/tiles_figures.sh's work directory:
 tiles_gdaldem_vs_relief.png (a 2x2 block of z10 tiles over Grenoble, classic vs relief) and
-tiles_relief_vs_reference.png (relief, the ray-traced reference, their difference in sRGB codes)."""
+tiles_relief_vs_reference.png (relief, the ray-traced reference, their difference in sRGB codes) and
+tiles_relief_contrast.png (relief at --relief-contrast 1, 1.5 and 2)."""
 import math
 import sys
 from pathlib import Path
@@ -37,11 +38,34 @@ def grey(path):
     return g * alpha + paper * (1 - alpha)
 
 
-def block(folder):
-    fx, fy = tile_xy(LON, LAT, Z)
+def block(folder, lon=LON, lat=LAT, z=Z):
+    fx, fy = tile_xy(lon, lat, z)
     x0, y0 = int(fx - 0.5), int(fy - 0.5)
-    rows = [np.hstack([grey(folder / str(Z) / str(x) / f"{y}.png") for x in (x0, x0 + 1)]) for y in (y0, y0 + 1)]
+    rows = [np.hstack([grey(folder / str(z) / str(x) / f"{y}.png") for x in (x0, x0 + 1)]) for y in (y0, y0 + 1)]
     return np.vstack(rows), (x0, y0)
+
+
+def contrast_figure():
+    """Relief at three contrasts: Grenoble's z10 block and, if rendered, Anatolia at z12."""
+    places = [("grenoble", LON, LAT, Z, "Grenoble z10")]
+    if (work / "contrast_anatolia_1").exists():
+        places.append(("anatolia", 40.60, 39.42, 12, "Anatolia z12 (90 m DEM)"))
+    ks = ("1", "1.5", "2")
+    crop = 320  # the block's centre, drawn one tile pixel per figure pixel
+    dpi = 100
+    fig, axes = plt.subplots(len(places), 3, figsize=(3 * (crop + 24) / dpi, len(places) * (crop + 40) / dpi + 0.3),
+                             dpi=dpi, squeeze=False)
+    for row, (name, lon, lat, z, label) in enumerate(places):
+        for col, k in enumerate(ks):
+            img, _ = block(work / f"contrast_{name}_{k}", lon, lat, z)
+            o = (img.shape[0] - crop) // 2
+            ax = axes[row][col]
+            ax.imshow(img[o:o + crop, o:o + crop], cmap="gray", vmin=0, vmax=1, interpolation="nearest")
+            ax.set_title(f"{label}, K = {k}" + (" (default)" if k == "1" else ""), fontsize=9)
+            ax.set_xticks([]), ax.set_yticks([])
+    fig.suptitle("--relief-contrast K: stops about open flat ground times K (flat ground unchanged)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(docs / "tiles_relief_contrast.png")
 
 
 classic, (x0, y0) = block(work / "classic")
@@ -54,9 +78,11 @@ for ax, img, title in zip(axes, (classic, relief),
     ax.set_xticks([]), ax.set_yticks([])
 fig.suptitle(f"The same four z{Z} tiles ({x0}-{x0 + 1}/{y0}-{y0 + 1}) north of Grenoble, light from 315 deg at 45 deg",
              fontsize=11)
-fig.tight_layout()
+fig.tight_layout(rect=(0, 0, 1, 0.96))
 fig.savefig(docs / "tiles_gdaldem_vs_relief.png")
 
+if (work / "contrast_grenoble_1").exists():
+    contrast_figure()
 if not (work / "ref").exists():
     print("wrote", docs / "tiles_gdaldem_vs_relief.png")
     sys.exit(0)

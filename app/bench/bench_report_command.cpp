@@ -271,20 +271,27 @@ Study device_study(const std::string& dem, Size size) {
 }
 
 // bench tiles --knobs: relief's block size, halo and far field against the level shaded whole,
-// and 512- against 256-px tiles.
+// 512- against 256-px tiles, and the pyramid level of z7 and z8 (--level-bias) against level 0
+// averaged (z9 on is Grenoble's level 0).
 Study tile_knobs_study(const std::string& dem) {
     Study s;
     s.name = "tiles knobs on " + dem_name(dem);
-    s.expected_s = 35;
-    s.args = "tiles " + shell_quote(dem) + " --zoom 8-11 --knobs";
+    s.expected_s = 42;
+    s.args = "tiles " + shell_quote(dem) + " --zoom 7-11 --knobs";
     s.parse = [dem](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
         for (const CsvRecord& r : csv) {
-            const std::string knob = r.at("knob"), value = r.at("value");
-            const bool tile_size = knob == "tile_size";
+            const std::string value = r.at("value");
+            std::string knob = r.at("knob");
+            const bool tile_size = knob == "tile_size", level = knob.starts_with("level_bias_");
+            // level_bias_zZ: one panel per zoom (their errors are against different references).
+            const std::string where = level ? " (relief " + knob.substr(11) + ")" : " (relief z11)";
+            if (level) knob = "level_bias";
             rows.push_back({"tiles", knob, value, csv_field(r, "is_default") == 1, csv_field(r, "seconds"),
                             csv_field(r, "rms_codes"),
-                            tile_size ? "rms_srgb_codes_vs_256px_tiles" : "rms_srgb_codes_vs_whole_level",
-                            dem_name(dem) + " (relief z11)"});
+                            tile_size ? "rms_srgb_codes_vs_256px_tiles"
+                            : level   ? "rms_srgb_codes_vs_level0_averaged"
+                                      : "rms_srgb_codes_vs_whole_level",
+                            dem_name(dem) + where});
         }
     };
     return s;

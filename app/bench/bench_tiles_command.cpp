@@ -148,6 +148,8 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     double hillshade_rate = 0, hillshade_cpu_rate = 0;
     for (const auto& name : a.styles) {
         job.shading.style = tiles::parse_tile_style(name);
+        // --relief-contrast is relief's alone; the other styles of the run keep theirs.
+        job.shading.relief_contrast = job.shading.style == tiles::TileStyle::relief ? a.tiles.relief_contrast : 1.0;
         const fs::path out = root / name;
         tiles::XyzDirectory sink(out, tiles::describe_job(job), false, job.z0, job.z1);
         const Stopwatch watch;

@@ -10,6 +10,7 @@
 #include "app/bench/csv_number.hpp"
 #include "core/raster/png_writer.hpp"
 #include "core/raster/srgb.hpp"
+#include "core/terrain/height_pyramid.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_pixels.hpp"
 #include "core/tiles/tile_renderer.hpp"
@@ -39,6 +40,77 @@ void compare(const tiles::ShadeSource& got, const tiles::ShadeSource& ref, KnobR
     }
     row.rms_codes = n ? std::sqrt(sum2 / double(n)) : 0.0;
     row.max_codes = worst;
+}
+
+// Tiles of `zoom` cut from `source`, encoded as the export would (the encoding is timed, not kept).
+std::vector<tiles::TileImage> cut_tiles(const dem::Dem& dem, const tiles::TileJob& job, int zoom,
+                                        const tiles::ShadeSource& source) {
+    const tiles::TilePixelMap map(dem);
+    tiles::TileScratch scratch;
+    const raster::PngEncoding encoding;
+    tiles::TileJob at = job;
+    at.z0 = at.z1 = zoom;
+    std::vector<tiles::TileImage> out;
+    for (const tiles::TileId& t : tiles::plan_tiles(dem, at)) {
+        tiles::TileImage img;
+        tiles::render_tile(map, source, job.shading, tiles::tile_frame(t, job.tile_size), scratch, img);
+        if (img.covered) (void)raster::encode_png(img.size, img.size, img.channels, img.pixels.data(), encoding);
+        out.push_back(std::move(img));
+    }
+    return out;
+}
+
+void level_bias_rows(const dem::Dem& dem, const tiles::TileJob& job, int zoom, std::vector<KnobRow>& rows) {
+    const int pixel_zoom = zoom + tiles::tile_size_shift(job.tile_size);
+    tiles::TileJob unbiased = job;
+    unbiased.level_bias = 0;
+    const int matched = tiles::zoom_shading(dem, unbiased, pixel_zoom).level;
+    if (matched == 0) return;  // past the DEM's native zoom: no finer level to compare with
+    int max_level = 0;  // as zoom_shading bounds it
+    for (int b = 1; b <= 8; ++b) {
+        tiles::TileJob j = unbiased;
+        j.level_bias = b;
+        max_level = std::max(max_level, tiles::zoom_shading(dem, j, pixel_zoom).level);
+    }
+    const double scale = tiles::zoom_shading(dem, unbiased, pixel_zoom).vertical_scale;
+    tiles::TileShading whole = job.shading;
+    whole.block_texels = 0;
+    // The reference: level 0 shaded, then averaged 2x2 `matched` times.
+    tiles::ShadeSource reference = tiles::make_shade_source(dem, whole, 0, scale);
+    for (int l = 0; l < matched; ++l) {
+        reference.values = terrain::downsample_2x2(reference.values.data(), reference.width, reference.height, false,
+                                                   whole.threads);
+        reference.width = (reference.width + 1) / 2, reference.height = (reference.height + 1) / 2;
+        ++reference.level;
+    }
+    const std::vector<tiles::TileImage> want = cut_tiles(dem, job, zoom, reference);
+    std::printf("tile knobs: zoom %d matches level %d; --level-bias against level 0 averaged to it\n", zoom, matched);
+    for (int level = 0; level <= std::min(max_level, matched + 2); ++level) {
+        const int bias = level - matched;
+        Stopwatch t;
+        const tiles::ShadeSource source = tiles::make_shade_source(dem, whole, level, scale);
+        const std::vector<tiles::TileImage> got = cut_tiles(dem, job, zoom, source);
+        KnobRow row{"level_bias_z" + std::to_string(zoom), std::to_string(bias), bias == 0};
+        row.seconds = t.seconds();
+        double sum2 = 0, worst = 0;
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            const tiles::TileImage &g = got[i], &w = want[i];
+            if (g.pixels.size() != w.pixels.size() || g.channels != w.channels) continue;
+            const std::size_t ch = std::size_t(g.channels);
+            for (std::size_t p = 0; p + ch <= g.pixels.size(); p += ch) {
+                if (g.pixels[p + ch - 1] != 255 || w.pixels[p + ch - 1] != 255) continue;  // alpha
+                const double e = std::abs(int(g.pixels[p]) - int(w.pixels[p]));
+                sum2 += e * e, worst = std::max(worst, e), ++n;
+            }
+        }
+        row.rms_codes = n ? std::sqrt(sum2 / double(n)) : 0.0;
+        row.max_codes = worst;
+        rows.push_back(row);
+        std::printf("  %-13s %-9s %7.2f s  rms %.3f codes, max %.0f (level %d)\n", row.knob.c_str(),
+                    row.value.c_str(), row.seconds, row.rms_codes, row.max_codes, level);
+        std::fflush(stdout);
+    }
 }
 
 }  // namespace
@@ -135,6 +207,12 @@ void run_tile_knobs_study(const dem::Dem& dem, tiles::TileJob job, const std::st
         std::printf("  tile_size     256       %7.2f s, 512 %.2f s for the same ground; rms %.3f codes, max %.0f "
                     "between them\n", small_s, large_s, rms, worst);
     }
+
+    // Pyramid level per zoom: each zoom's tiles shaded from levels around the one its pixels
+    // match (--level-bias), against the finest level's relief averaged down to that level's
+    // texels (an area mean of the picture itself, not of the heights), all cut the same way;
+    // the zooms from z0 that have a finer level than their own.
+    for (int z = job.z0; z <= job.z1; ++z) level_bias_rows(dem, job, z, rows);
 
     write_atomically(csv_path, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);

@@ -64,7 +64,7 @@ std::vector<float> reference_relief(const dem::Dem& dem, const TileShading& s, i
 
     std::vector<float> out(lum.size());
     for (std::size_t k = 0; k < lum.size(); ++k)
-        out[k] = std::isnan(lum[k]) ? lum[k] : std::clamp(float(kReliefFlatGrey * lum[k] / flat_lum), 0.0f, 1.0f);
+        out[k] = std::isnan(lum[k]) ? lum[k] : relief_grey(lum[k] / flat_lum, s.relief_contrast);
     return out;
 }
 

@@ -286,7 +286,7 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
                 const auto radiance = render_frame(g, grey_materials(m, 1.0f), s, whole ? progress : nullptr, backend.get(), outer_sun);
                 values.resize(m);
                 for (std::size_t k = 0; k < m; ++k)
-                    values[k] = std::clamp(float(kReliefFlatGrey * render::luminance(radiance[k]) / flat), 0.0f, 1.0f);
+                    values[k] = relief_grey(render::luminance(radiance[k]) / flat, s.relief_contrast);
             } else {
                 // Land cover from the true heights and slopes; the light on the exaggerated form.
                 const render::NormalField true_normals = render::terrain_normals(tg, s.threads);

@@ -23,6 +23,8 @@
 // azimuth), built once per level. With --far-field exact, a block's sky instead sweeps its
 // receivers over every texel of the level (the whole-level horizons, at one sweep of the level
 // per block) and its sun shadows end at the halo.
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "core/dem/dem.hpp"
@@ -45,6 +47,16 @@ struct ShadeSource {
 // Display-linear grey of an open flat texel in `relief` (0.5 -> sRGB code 188): slopes facing
 // the sun go brighter, shade and shadow darker, with room on both sides.
 inline constexpr float kReliefFlatGrey = 0.5f;
+
+// The display-linear grey of a texel whose luminance is `ratio` times that of open flat ground
+// under the same light, with the shading's contrast in stops multiplied by `contrast`
+// (grey = flat grey x ratio^contrast): a slope one stop brighter than the flat becomes `contrast`
+// stops brighter, a shadow as many stops darker. A function of the texel alone, so tiles stay
+// seamless (unlike a stretch from a picture's statistics).
+inline float relief_grey(double ratio, double contrast) {
+    const double r = contrast == 1.0 ? ratio : std::pow(std::max(ratio, 0.0), contrast);
+    return std::clamp(float(kReliefFlatGrey * r), 0.0f, 1.0f);
+}
 
 // The source of `style` on DEM level `level` with heights times `vertical_scale`. The visibility
 // styles advance `progress` (may be null) per texel and horizon azimuth.

@@ -51,6 +51,11 @@ void check_tile_job(const TileJob& job) {
     if (s.directions < 4) throw InputError("--directions: at least 4");
     if (s.block_texels != 0 && s.block_texels < 64) throw InputError("--block-texels: 0 (never) or at least 64");
     if (s.block_halo_texels < 1) throw InputError("--block-halo: at least 1 texel");
+    if (job.level_bias < -4 || job.level_bias > 4) throw InputError("--level-bias: -4..4 levels");
+    if (!(s.relief_contrast >= 0.25 && s.relief_contrast <= 4))
+        throw InputError("--relief-contrast: a number from 0.25 to 4 (1 = the physical shading)");
+    if (s.relief_contrast != 1.0 && s.style != TileStyle::relief)
+        throw InputError("--relief-contrast: only --style relief has it");
 }
 
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
@@ -63,6 +68,9 @@ std::string describe_job(const TileJob& job) {
     for (const auto& [z, d] : job.directions_by_zoom)
         by_zoom += (by_zoom.empty() ? ",\"directions_by_zoom\":{\"" : ",\"") + std::to_string(z) + "\":" + std::to_string(d);
     if (!by_zoom.empty()) by_zoom += "}";
+    // Likewise only when not the default.
+    const std::string contrast = s.relief_contrast != 1.0 ? ",\"relief_contrast\":" + number(s.relief_contrast) : "";
+    const std::string bias = job.level_bias != 0 ? ",\"level_bias\":" + std::to_string(job.level_bias) : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -71,7 +79,7 @@ std::string describe_job(const TileJob& job) {
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
-           "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + by_zoom + "}\n";
+           "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + contrast + bias + by_zoom + "}\n";
 }
 
 TileShading shading_of_zoom(const TileJob& job, int z) {
@@ -88,7 +96,8 @@ ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom
     int max_level = 0;
     while (std::min(dem.width, dem.height) >> (max_level + 1) >= kMinLevelTexels) ++max_level;
     ZoomShading z;
-    z.level = pyramid_level_for(texel_m, pixel_size_m(pixel_zoom) * centre_cos, max_level);
+    z.level = std::clamp(pyramid_level_for(texel_m, pixel_size_m(pixel_zoom) * centre_cos, max_level) + job.level_bias,
+                         0, max_level);
     // Zooms finer than the DEM's own (shaded from level 0 however far they zoom in) magnify its
     // native zoom's tiles and show no new relief: they keep that zoom's exaggeration, so they
     // share its source (one visibility pass) and do not fade as the map zooms in. Being

@@ -29,6 +29,10 @@ struct TileJob {
     // Tile zoom -> horizon directions for that zoom's source (--max-error: coarse, flattened
     // levels need fewer); zooms not listed use shading.directions.
     std::map<int, int> directions_by_zoom;
+    // Each zoom is shaded from the DEM level whose texels match its pixels, moved by this many
+    // levels: > 0 coarser (less work, softer), < 0 finer (more work; finer than the pixels it
+    // aliases). Clamped to the DEM's levels.
+    int level_bias = 0;
     Shard shard;  // this process's part of the tile set (core/tiles/tile_shard.hpp); not in describe_job
 };
 

@@ -69,6 +69,9 @@ struct TileShading {
     // relief, svf, color in blocks: the sky's terrain beyond the halo.
     FarFieldMethod far_field = FarFieldMethod::balanced;
     Resampling resampling = Resampling::cubic;  // relief, svf, color
+    // relief: the shading's contrast in stops about open flat ground (relief_grey,
+    // shade_source.hpp); 1 = the physical picture, 1.5 for print.
+    double relief_contrast = 1.0;
     int threads = 0;
 };
 

@@ -458,6 +458,11 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
         {"--zoom 8 --style shiny", "--style"},
         {"--zoom 8 --far-field near", "--far-field"},
         {"--zoom 8 --resampling lanczos", "--resampling"},
+        {"--zoom 8 --relief-contrast 9", "--relief-contrast"},
+        {"--zoom 8 --relief-contrast 0", "--relief-contrast"},
+        {"--zoom 8 --style hillshade --relief-contrast 1.5", "only --style relief"},
+        {"--zoom 8 --level-bias 5", "--level-bias"},
+        {"--zoom 8 --level-bias x", "--level-bias"},
         {"--zoom 8 --z-factor 0", "--z-factor"},
         {"--zoom 8 --exaggeration much", "--exaggeration"},
         {"--zoom 8 --time 2025-13-01T00:00Z", "month 13"},
@@ -512,6 +517,10 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
     ASSERT_EQ(run(tiles_cmd(kGrenoble, "--zoom 8 --style hillshade", d / "job")).exit_code, 0);
     r = run(tiles_cmd(kGrenoble, "--zoom 8 --style multidirectional --resume", d / "job"));
     EXPECT_EQ(r.exit_code, 2) << r.err;
+    // ... and onto relief tiles of another contrast.
+    ASSERT_EQ(run(tiles_cmd(kGrenoble, "--zoom 8 --directions 8", d / "relief_job")).exit_code, 0);
+    r = run(tiles_cmd(kGrenoble, "--zoom 8 --directions 8 --relief-contrast 1.5 --resume", d / "relief_job"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
 }
 
 }  // namespace
@@ -532,6 +541,7 @@ TEST(TilesCli, BenchKnobsBoundBlockErrorsAndFindTileSizesIdentical) {
     std::getline(in, line);
     EXPECT_EQ(line, "knob,value,is_default,seconds,rms_codes,max_codes");
     std::map<std::string, int> rows, defaults;
+    std::map<std::string, std::map<int, double>> level_rms;  // level_bias_zZ -> bias -> rms codes
     while (std::getline(in, line)) {
         std::stringstream ss(line);
         std::string knob, value, is_default, seconds, rms, worst;
@@ -540,10 +550,25 @@ TEST(TilesCli, BenchKnobsBoundBlockErrorsAndFindTileSizesIdentical) {
         ++rows[knob];
         defaults[knob] += is_default == "1";
         EXPECT_GT(std::stod(seconds), 0.0) << line;
-        if (knob == "tile_size" || value == "whole")
+        if (knob.starts_with("level_bias_z"))
+            level_rms[knob][std::stoi(value)] = std::stod(rms);
+        else if (knob == "tile_size" || value == "whole")
             EXPECT_EQ(std::stod(rms), 0.0) << line;
         else
             EXPECT_LT(std::stod(rms), 2.0) << line;
+    }
+    // The pyramid level per zoom (here z7: level 2 matched, z8: level 1): each coarser level
+    // errs more against level 0's relief averaged to the matched level, and the matched level
+    // is within a few codes of it (the prefilter's residue, docs/accuracy.md).
+    ASSERT_EQ(level_rms.size(), 2u);
+    for (const auto& [knob, by_bias] : level_rms) {
+        EXPECT_EQ(defaults[knob], 1) << knob;
+        ASSERT_TRUE(by_bias.count(0) && by_bias.count(1) && by_bias.count(-1)) << knob;
+        for (const auto& [bias, rms] : by_bias)
+            if (bias > 0) {
+                EXPECT_GT(rms, by_bias.at(bias - 1)) << knob << " " << bias;
+            }
+        EXPECT_LT(by_bias.at(0), 20.0) << knob;
     }
     for (const std::string k : {"far_field", "block_halo", "block_texels", "tile_size"}) {
         EXPECT_GE(rows[k], 2) << k;

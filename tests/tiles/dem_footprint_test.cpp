@@ -88,6 +88,19 @@ TEST(ZoomExaggeration, OverZoomedZoomsKeepTheNativeZoomsExaggeration) {
     job.shading.exaggeration = 1.0;  // a constant replaces the rule at every zoom
     EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 12).vertical_scale, 2.0);
     EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 8).vertical_scale, 2.0);
+    // --level-bias moves the level, clamped to the DEM's levels, and leaves the exaggeration.
+    job.shading.exaggeration.reset();
+    job.level_bias = 1;
+    EXPECT_EQ(zoom_shading(dem, job, 9).level, 2);
+    EXPECT_EQ(zoom_shading(dem, job, 12).level, 1);
+    EXPECT_DOUBLE_EQ(zoom_shading(dem, job, 12).vertical_scale, 2 * zoom_exaggeration(10));
+    job.level_bias = -1;
+    EXPECT_EQ(zoom_shading(dem, job, 9).level, 0);
+    EXPECT_EQ(zoom_shading(dem, job, 12).level, 0);
+    job.level_bias = 4;
+    const int coarsest = zoom_shading(dem, job, 0).level;
+    job.level_bias = 0;
+    EXPECT_EQ(zoom_shading(dem, job, 0).level, coarsest);  // z0 is already at the coarsest level
 }
 
 }  // namespace

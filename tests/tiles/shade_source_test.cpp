@@ -90,6 +90,41 @@ TEST(ShadeSource, ReliefInBlocksWithTheFarFieldIsCloseToTheWholeLevel) {
     expect_blocked_equals_whole(TileStyle::relief, FarFieldMethod::balanced, {0.05f, 1.0, 0.005});
 }
 
+// --relief-contrast k multiplies every texel's distance from open flat ground in stops by k:
+// grey_k = flat grey x (grey_1 / flat grey)^k, texel by texel (so tiles stay seamless), and the
+// picture's spread of stops grows k-fold where nothing clips.
+TEST(ShadeSource, ReliefContrastStretchesEachTexelsStopsAboutTheFlat) {
+    EXPECT_FLOAT_EQ(relief_grey(1.0, 1.7), kReliefFlatGrey);
+    EXPECT_FLOAT_EQ(relief_grey(0.5, 2.0), kReliefFlatGrey * 0.25f);
+    EXPECT_FLOAT_EQ(relief_grey(1.2, 1.0), kReliefFlatGrey * 1.2f);
+    EXPECT_EQ(relief_grey(0.0, 1.5), 0.0f);
+    EXPECT_EQ(relief_grey(5.0, 1.5), 1.0f);  // clipped
+    const dem::Dem dem = hills();
+    TileShading s;
+    s.style = TileStyle::relief;
+    s.directions = 8;
+    s.threads = 2;
+    const ShadeSource one = make_shade_source(dem, s, 0, 1.0);
+    s.relief_contrast = 1.5;
+    const ShadeSource stretched = make_shade_source(dem, s, 0, 1.0);
+    ASSERT_EQ(one.values.size(), stretched.values.size());
+    double spread_one = 0, spread_stretched = 0;
+    std::size_t compared = 0;
+    for (std::size_t k = 0; k < one.values.size(); ++k) {
+        const float v = one.values[k];
+        if (!(v > 0.02f) || v >= 0.99f) continue;
+        const float want = relief_grey(v / kReliefFlatGrey, 1.5);
+        ASSERT_NEAR(stretched.values[k], want, 1e-5f) << k;
+        if (want < 0.99f) {
+            spread_one += std::abs(std::log2(v / kReliefFlatGrey));
+            spread_stretched += std::abs(std::log2(stretched.values[k] / kReliefFlatGrey));
+            ++compared;
+        }
+    }
+    ASSERT_GT(compared, one.values.size() / 2);
+    EXPECT_NEAR(spread_stretched / spread_one, 1.5, 1e-3);
+}
+
 // A north-south ridge 1500 m high west of flat ground, the sun 15 degrees up in the west: its
 // shadow runs ~85 texels east of the crest, past a 32-texel halo. Blocks see it through the far
 // field's sun march; with --far-field exact (sun shadows from the window alone) it is cut at

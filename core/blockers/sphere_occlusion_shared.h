@@ -109,4 +109,14 @@ TS_INLINE TS_REAL ts_sky_cover_union(TS_REAL product, TS_REAL bound_cover) {
     return bound_cover * (TS_REAL(1) - product);
 }
 
+// The share of a receiver's sky term that blockers covering `cover` of its cosine-weighted
+// hemisphere remove, when its terrain lets it see `open_sky` of that hemisphere
+// (core/render/open_sky_fraction.hpp) and the blockers stand in the open part (an aircraft
+// above a valley): cover / open_sky of the sky light the terrain leaves, under a sky of even
+// radiance, and all of it once they cover that much. The floor keeps a receiver whose sky is
+// nearly all hidden from dividing by ~0.
+TS_INLINE TS_REAL ts_open_sky_share(TS_REAL cover, TS_REAL open_sky) {
+    return min(TS_REAL(1), cover / max(open_sky, TS_REAL(0.05)));
+}
+
 #endif  // TS_SPHERE_OCCLUSION_SHARED_H

@@ -11,6 +11,7 @@
 #include "core/raster/cog_writer.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/material/material_sources.hpp"
+#include "core/render/open_sky_fraction.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/util/error.hpp"
@@ -165,6 +166,8 @@ SunState sun_at(const SunSite& site, light::UtcTime time) {
 SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time) { return sun_at(sun_site(dem), time); }
 
 SunState Scene::sun_at(light::UtcTime time) const { return sun_at_dem_centre(dem_, time); }
+
+std::vector<float> Scene::open_sky_fraction() { return render::open_sky_fraction(*renderer_); }
 
 void Scene::render(const SunState& sun, LinearImage& image) {
     const glm::dvec3 s = sun_direction(sun);

@@ -109,6 +109,10 @@ public:
     // The sky of the last frame (for its description).
     const light::Sky* last_sky() const { return sky_.get(); }
 
+    // The share of the cosine-weighted sky each texel sees (open_sky_fraction.hpp). It renders a
+    // frame of its own (a uniform sky, no sun): the renderer's sun visibility is then that frame's.
+    std::vector<float> open_sky_fraction();
+
     const ShadingState& state() const { return *state_; }
     const FrameRenderer& renderer() const { return *renderer_; }
     const RenderTarget& target() const { return *target_; }

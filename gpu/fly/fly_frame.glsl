@@ -28,7 +28,8 @@ layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]
 layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
 // The aircraft: 3 vertices per triangle, each position (xyz, model metres), normal, colour.
 layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[]; };
-// The sun's part of Radiance (what an aircraft's shadow takes away), packed the same way.
+// The sun's part of Radiance (what an aircraft's shadow takes away), packed the same way, and
+// in the fourth half the texel's open-sky fraction (core/render/open_sky_fraction.hpp).
 layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec2 terrain_sun[]; };
 // The aircraft's sphere hierarchy this frame, depth-first (core/blockers/sphere_hierarchy.hpp,
 // FlatSphereNode), two vec4 a node: its bound (eye-relative centre, radius; metres), then (the

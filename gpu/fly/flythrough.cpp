@@ -18,10 +18,11 @@
 namespace ts::gpu {
 namespace {
 
-std::uint32_t pack_rgb(glm::vec3 c, std::uint32_t& second) {
+// rgb as three halves; `extra` goes in the fourth.
+std::uint32_t pack_rgb(glm::vec3 c, std::uint32_t& second, float extra = 0.0f) {
     const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
     const glm::vec3 v = finite ? glm::max(c, glm::vec3(0.0f)) : glm::vec3(0.0f);
-    second = glm::packHalf2x16(glm::vec2(v.z, 0.0f));
+    second = glm::packHalf2x16(glm::vec2(v.z, extra));
     return glm::packHalf2x16(glm::vec2(v.x, v.y));
 }
 
@@ -68,6 +69,7 @@ double Flythrough::set_time(light::UtcTime time) {
     time_ = time;
     lit_ = true;
     sun_ = scene_->sun_at(time);
+    if (open_sky_.empty()) open_sky_ = scene_->open_sky_fraction();  // before the frame: it renders one
     scene_->render(sun_, radiance_);
     const light::Sky& sky = *scene_->last_sky();
     const std::size_t texels = radiance_.rgb.size();
@@ -75,7 +77,8 @@ double Flythrough::set_time(light::UtcTime time) {
     packed_sun_.resize(2 * texels);
     // The sun's part of each texel's radiance, albedo/pi E_sun max(0, n.s) times the sun's
     // visibility (FrameRenderer's diffuse sun term; the few specular and water texels' sun
-    // terms stay in the rest): what an aircraft's shadow takes away.
+    // terms stay in the rest): what an aircraft's shadow takes away; with the texel's open-sky
+    // fraction, which scales what it takes of the rest.
     const render::MaterialRaster& m = scene_->state().materials();
     const render::NormalField& nf = scene_->state().normals();
     const std::vector<float>& sun_vis = scene_->renderer().sun_visibility();
@@ -87,7 +90,7 @@ double Flythrough::set_time(light::UtcTime time) {
         const float w = v * std::max(0.0f, nf.x[t] * s.x + nf.y[t] * s.y + nf.z[t] * s.z);
         const glm::vec3 sun_part = glm::min(glm::vec3(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]) * e * w, c);
         packed_[2 * t] = pack_rgb(c, packed_[2 * t + 1]);
-        packed_sun_[2 * t] = pack_rgb(sun_part, packed_sun_[2 * t + 1]);
+        packed_sun_[2 * t] = pack_rgb(sun_part, packed_sun_[2 * t + 1], open_sky_[t]);
     }
     renderer_->set_radiance(packed_);
     renderer_->set_sun_radiance(packed_sun_);

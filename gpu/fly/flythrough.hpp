@@ -88,6 +88,9 @@ public:
     // frame's metric coordinates, heights above the datum), before any curvature drop.
     const std::vector<blockers::Sphere>& placed_aircraft_spheres() const { return placed_spheres_; }
     bool has_aircraft() const { return aircraft_triangles_ > 0; }
+    // Each texel's open-sky fraction (core/render/open_sky_fraction.hpp; after the first
+    // set_time): the aircraft's sky shadow takes ts_open_sky_share of a texel's sky light.
+    const std::vector<float>& open_sky_fraction() const { return open_sky_; }
     // The terrain's light at the aircraft's centre in the last prepared frame (open sky and the
     // whole sun before any).
     const render::PointTerrainLight& aircraft_terrain_light() const { return aircraft_light_; }
@@ -134,6 +137,9 @@ private:
     fly::CdlodSelection selection_;
     render::LinearImage radiance_;
     std::vector<std::uint32_t> packed_, packed_sun_;
+    // Each texel's open-sky fraction (core/render/open_sky_fraction.hpp), packed beside its sun
+    // radiance: the aircraft's sky shadow takes cover / open of the texel's sky light.
+    std::vector<float> open_sky_;
 };
 
 }  // namespace ts::gpu

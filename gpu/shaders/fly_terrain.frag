@@ -18,12 +18,14 @@ layout(location = 0) out vec4 out_color;
 
 vec3 unpack_rgb(uvec2 p) { return vec3(unpackHalf2x16(p.x), unpackHalf2x16(p.y).x); }
 vec3 texel_radiance(int i) { return unpack_rgb(radiance[i]); }
-vec3 texel_sun_radiance(int i) { return unpack_rgb(terrain_sun[i]); }
+// rgb: the texel's sun radiance; a: its open-sky fraction.
+vec4 texel_sun(int i) { return vec4(unpack_rgb(terrain_sun[i]), unpackHalf2x16(terrain_sun[i].y).y); }
 
 // The aircraft's shadows at this fragment: the radiance `l` (of which `l_sun` is the sun's part)
-// with the sun's disc fraction its spheres hide taken from the sun's part, and the fraction of
-// the cosine-weighted sky they hide from the rest. Only receivers in the bound's sun cone or
-// sky footprint loop over the spheres.
+// with the sun's disc fraction its spheres hide taken from the sun's part, and from the rest the
+// share of the sky they hide of what the terrain leaves open (ts_open_sky_share: in a valley
+// the aircraft hides more of a smaller sky). Only receivers in the bound's sun cone or sky
+// footprint loop over the spheres.
 vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     vec3 c = frame.aircraft_bound.xyz;
     float r = frame.aircraft_bound.w;
@@ -34,14 +36,15 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     bool sun = sun_cone_meets(v, r, s, alpha);
     float bound_sky = dot(v, v) < footprint * footprint ? ts_sphere_sky_cover(c, r, p, n) : 0.0;
     if (!sun && bound_sky <= 0.0) return l;
-    vec3 l_sun = mix(mix(texel_sun_radiance(texels.x), texel_sun_radiance(texels.y), f.x),
-                     mix(texel_sun_radiance(texels.z), texel_sun_radiance(texels.w), f.x), f.y);
+    vec4 sun_open = mix(mix(texel_sun(texels.x), texel_sun(texels.y), f.x),
+                        mix(texel_sun(texels.z), texel_sun(texels.w), f.x), f.y);
+    vec3 l_sun = sun_open.rgb;
     sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
     // Near the bound its spheres' covers combine one by one; farther the bound's cover times
     // the share its spheres keep from afar (one evaluation).
     bool sky_detail = bound_sky > frame.aircraft_sky.y;
     float sky_cover = bound_sky * frame.aircraft_sky.x;
-    if (!sun && !sky_detail) return l - max(l - l_sun, vec3(0.0)) * sky_cover;
+    if (!sun && !sky_detail) return l - max(l - l_sun, vec3(0.0)) * ts_open_sky_share(sky_cover, sun_open.a);
     float sun_visible = 1.0, sky_product = 1.0;
     int count = int(frame.aircraft_shadow.x);
     // The hierarchy walk: the sun cone prunes subtrees; the sky in detail needs every leaf
@@ -59,7 +62,7 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     }
     if (sky_detail) sky_cover = ts_sky_cover_union(sky_product, bound_sky);
     vec3 l_sky = max(l - l_sun, vec3(0.0));
-    return l - l_sun * (1.0 - sun_visible) - l_sky * sky_cover;
+    return l - l_sun * (1.0 - sun_visible) - l_sky * ts_open_sky_share(sky_cover, sun_open.a);
 }
 
 void main() {

@@ -15,6 +15,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/blockers/sphere_decomposition.hpp"
+#include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/blockers/sun_disc_occlusion.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/fly/fly_camera.hpp"
@@ -22,6 +23,8 @@
 #include "core/fly/flight_path.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/png_writer.hpp"
+#include "core/raster/srgb.hpp"
+#include "core/render/tone_map.hpp"
 #include "gpu/fly/flythrough.hpp"
 #include "tests/gpu/validated_context.hpp"
 
@@ -159,6 +162,23 @@ double aircraft_mean(Flythrough& flight, const glm::dvec3& at, const char* png) 
     return n ? sum / double(n) : 0;
 }
 
+// The lowest texel of the DEM's middle (every 5th row and column) whose point 15 m above it the
+// sun has left, as a grid index; -1 if none.
+int shaded_valley_floor(const Flythrough& flight) {
+    const terrain::HeightGrid& g = flight.scene().grid();
+    const light::SunDisc sun = flight.scene().last_sky()->sun();
+    const render::PointTerrainLighting probe(g);
+    int low = -1;
+    for (int r = g.height / 4; r < 3 * g.height / 4; r += 5)
+        for (int c = g.width / 4; c < 3 * g.width / 4; c += 5) {
+            const std::size_t i = std::size_t(r) * std::size_t(g.width) + std::size_t(c);
+            if (low >= 0 && g.z[i] >= g.z[std::size_t(low)]) continue;
+            if (probe.light({c, r}, g.z[i] + 15.0, light::SkySh{}, sun.direction, sun.angular_radius_rad).sun_fraction == 0)
+                low = int(i);
+        }
+    return low;
+}
+
 TEST_F(FlyRenderTest, AnAircraftLowInAValleyIsDarkerThanInTheOpenSky) {
     const dem::Dem dem = dem::read_dem(std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif");
     FlySettings settings;
@@ -168,21 +188,11 @@ TEST_F(FlyRenderTest, AnAircraftLowInAValleyIsDarkerThanInTheOpenSky) {
     Flythrough flight(dem, settings, *context_);
     flight.set_time(light::parse_utc_time("2024-12-21T14:45:00Z"));
     flight.set_aircraft(plate(), 1.0, 0.0);
-    // A valley floor of the DEM's middle the sun has left (the lowest such texel, 15 m up) and
-    // the highest point of the whole DEM.
+    // A valley floor of the DEM's middle the sun has left and the highest point of the whole DEM.
     const terrain::HeightGrid& g = flight.scene().grid();
-    const light::SunDisc sun = flight.scene().last_sky()->sun();
-    const render::PointTerrainLighting probe(g);
-    int low = -1;
+    const int low = shaded_valley_floor(flight);
     float top = -1e9f;
     for (float z : g.z) top = std::max(top, z);
-    for (int r = g.height / 4; r < 3 * g.height / 4; r += 5)
-        for (int c = g.width / 4; c < 3 * g.width / 4; c += 5) {
-            const std::size_t i = std::size_t(r) * std::size_t(g.width) + std::size_t(c);
-            if (low >= 0 && g.z[i] >= g.z[std::size_t(low)]) continue;
-            if (probe.light({c, r}, g.z[i] + 15.0, light::SkySh{}, sun.direction, sun.angular_radius_rad).sun_fraction == 0)
-                low = int(i);
-        }
     ASSERT_GE(low, 0) << "no shaded valley at this time";
     const glm::dvec2 m = flight.frame().to_metric(low % g.width, low / g.width);
     const glm::dvec3 valley(m.x, m.y, flight.ground_height_m({m.x, m.y, 0}) + 15.0);
@@ -330,6 +340,108 @@ TEST_F(FlyRenderTest, TheCessnaCastsItsSunShadowWhereTheSunPredictsIt) {
         EXPECT_EQ(brighter, 0);
         EXPECT_EQ(black, 0);
     }
+}
+
+// Exposed linear radiance behind an 8-bit display code (the inverse of display_shared.h's
+// filmic curve and sRGB encoding, by bisection).
+double exposed_of_code(int code) {
+    double lo = 0.0, hi = 64.0;
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (255.0 * raster::srgb_oetf(render::filmic(float(mid))) < code ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// The Cessna 12 m above a V valley's floor under an overcast sky: its sky shadow there takes
+// ts_open_sky_share of the floor's sky light, its cover over the floor's open-sky fraction V,
+// not its bare cover (which would leave a valley's shadow as light as a plain's though the
+// floor sees less sky). The cover is the shader's union of the spheres' caps, recomputed here;
+// the drop is read back through the display curve on the floor's pixels under the aircraft.
+TEST_F(FlyRenderTest, TheAircraftsSkyShadowInAValleyTakesItsCoverOverTheOpenSky) {
+    // A V valley running north-south, walls at 40 degrees, 1/1200-degree texels at 45 N.
+    dem::Dem dem;
+    dem.width = 161, dem.height = 121;
+    dem.z.resize(std::size_t(dem.width) * std::size_t(dem.height));
+    dem.void_mask.assign(dem.z.size(), 0);
+    const double dx = 6371008.8 * 3.14159265358979 / 180.0 / 1200.0 * std::cos(45.0 * 3.14159265358979 / 180.0);
+    for (int r = 0; r < dem.height; ++r)
+        for (int c = 0; c < dem.width; ++c)
+            dem.z[dem.index(c, r)] = float(200.0 + std::tan(40.0 * 3.14159265358979 / 180.0) * std::abs(c - 80) * dx);
+    geo::GeoTransform t;
+    t.x0 = 6.0, t.dx_col = 1.0 / 1200, t.y0 = 45.05, t.dy_row = -1.0 / 1200;
+    dem.georef = geo::Georef(dem.width, dem.height, t, geo::Crs::wgs84(), true);
+    const mesh::TriangleMesh cessna = mesh::import_mesh(std::string(TS_SHARED_DATA) + "/meshes/c172p.ac");
+    blockers::DecompositionOptions d;
+    d.count = 64;
+    const blockers::SphereDecomposition spheres = blockers::decompose_into_spheres(cessna, d);
+    FlySettings settings;
+    settings.width = 320;
+    settings.height = 180;
+    settings.directions = 16;
+    settings.sky = "overcast";  // the sky alone lights the floor
+    Flythrough flight(dem, settings, *context_);
+    flight.set_time(light::parse_utc_time("2024-12-21T12:00:00Z"));
+    flight.set_aircraft(cessna, 1.0, -90.0, spheres.spheres);
+    const terrain::HeightGrid& g = flight.scene().grid();
+    const int low = (dem.height / 2) * dem.width + 80;  // the floor, half way along
+    const glm::dvec2 m = flight.frame().to_metric(low % g.width, low / g.width);
+    const glm::dvec3 floor(m.x, m.y, flight.ground_height_m({m.x, m.y, 0}));
+    const double open_sky = flight.open_sky_fraction()[std::size_t(low)];
+
+    fly::CameraPose aircraft;
+    aircraft.eye = floor + glm::dvec3(0, 0, 12);
+    fly::CameraPose camera;
+    camera.eye = floor + glm::dvec3(0, -70, 45);
+    fly::direction_angles(floor - camera.eye, camera.heading_deg, camera.pitch_deg);
+    FlyFrameUniforms u;
+    FlyFrameStats stats;
+    std::vector<std::uint8_t> with, without;
+    std::vector<float> depth_with, depth_without;
+    flight.prepare(camera, u, stats, &aircraft);
+    flight.renderer().render_to_memory(u, flight.patches(), with, &depth_with);
+    const std::vector<blockers::Sphere> placed = flight.placed_aircraft_spheres();
+    const glm::dvec3 bound_centre = glm::dvec3(u.aircraft_bound) + camera.eye;
+    const double bound_radius = u.aircraft_bound.w;
+    flight.prepare(camera, u, stats, nullptr);
+    flight.renderer().render_to_memory(u, flight.patches(), without, &depth_without);
+    if (const char* dir = std::getenv("TS_TEST_PNG_DIR"))
+        raster::write_png(std::string(dir) + "/fly_cessna_valley_sky_shadow.png", "sky shadow", settings.width,
+                          settings.height, 4, with.data());
+    std::vector<bool> is_terrain;
+    const std::vector<glm::dvec3> points =
+        terrain_points(u, camera.eye, depth_without, settings.width, settings.height, is_terrain);
+
+    // The floor's pixels within 3 m of the point under the aircraft and not hidden by it.
+    double sum_with = 0, sum_without = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!is_terrain[i] || depth_with[i] != depth_without[i]) continue;
+        if (glm::length(glm::dvec2(points[i] - floor)) > 3.0) continue;
+        sum_with += exposed_of_code(with[4 * i + 1]);
+        sum_without += exposed_of_code(without[4 * i + 1]);
+        ++n;
+    }
+    ASSERT_GT(n, 10) << "the floor under the aircraft is not in view";
+    const double drop = 1.0 - sum_with / sum_without;
+    // The cover at the floor (normal up): the spheres' caps combined inside the bound's.
+    const glm::dvec3 up(0, 0, 1);
+    const double bound_cover = blockers::shared::ts_sphere_sky_cover(bound_centre, bound_radius, floor, up);
+    double product = 1.0;
+    for (const blockers::Sphere& s : placed)
+        product = blockers::shared::ts_sky_cover_step(product, blockers::shared::ts_sphere_sky_cover(s.center, s.radius, floor, up),
+                                                      bound_cover);
+    const double cover = blockers::shared::ts_sky_cover_union(product, bound_cover);
+    const double want = blockers::shared::ts_open_sky_share(cover, open_sky);
+    std::printf("valley floor %.0f m, open-sky fraction %.3f: sphere cover %.4f, predicted drop %.4f (the bare cover "
+                "would give %.4f), measured %.4f over %d px\n",
+                floor.z, open_sky, cover, want, cover, drop, n);
+    EXPECT_LT(open_sky, 0.9) << "not a valley";
+    EXPECT_GT(cover, 0.02);
+    // Within a quarter of the prediction (haze, the drawn normal's tilt, 8-bit codes), and
+    // clearly past the bare cover.
+    EXPECT_NEAR(drop, want, 0.25 * want);
+    EXPECT_GT(drop, cover + 0.5 * (want - cover));
 }
 
 }  // namespace

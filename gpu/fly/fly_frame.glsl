@@ -33,8 +33,9 @@ layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[];
 layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec2 terrain_sun[]; };
 // The aircraft's sphere hierarchy this frame, depth-first (core/blockers/sphere_hierarchy.hpp,
 // FlatSphereNode), two vec4 a node: its bound (eye-relative centre, radius; metres), then (the
-// index past its subtree, 1 for a leaf). A walk goes on to i + 1 from a node it accepts and to
-// the skip index from one it refuses.
+// index past its subtree, 1 for a leaf, the share of its bound's sky cover its leaves keep from
+// afar). A walk goes on to i + 1 from a node it accepts and to the skip index from one it
+// refuses.
 layout(std430, set = 0, binding = 7) readonly buffer Spheres { vec4 sphere_nodes[]; };
 
 // Whether the cone of directions within `sun_radius` of the sun seen from a receiver meets a

@@ -6,6 +6,7 @@
 #include <glm/packing.hpp>
 
 #include "core/blockers/placed_spheres.hpp"
+#include "core/blockers/projected_cover_share.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/light/sky.hpp"
@@ -156,17 +157,11 @@ fly::CameraPose Flythrough::default_pose() const {
 void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double forward_yaw_deg,
                               std::span<const blockers::Sphere> spheres) {
     aircraft_nodes_ = blockers::flatten_sphere_hierarchy(blockers::build_sphere_hierarchy(spheres));
-    // Far from the bound (d >> r) a sphere's cover against the bound's is (r_b / r)^2 whatever
-    // the direction: the union's share of the bound's cover tends to this.
+    // Per node, the share of its bound's disc its leaves cover seen from below (the terrain is
+    // under the aircraft): far from a node its sky cover is the bound's times this.
     aircraft_far_sky_share_ = 0.0;
-    if (!aircraft_nodes_.empty()) {
-        double product = 1.0;
-        const double r = aircraft_nodes_.front().bound.radius;
-        for (const blockers::FlatSphereNode& n : aircraft_nodes_)
-            if (n.sphere >= 0)
-                product = blockers::shared::ts_sky_cover_step(product, (n.bound.radius / r) * (n.bound.radius / r), 1.0);
-        aircraft_far_sky_share_ = blockers::shared::ts_sky_cover_union(product, 1.0);
-    }
+    aircraft_node_far_share_ = blockers::projected_cover_share(aircraft_nodes_);
+    if (!aircraft_nodes_.empty()) aircraft_far_sky_share_ = aircraft_node_far_share_.front();
     placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
@@ -205,11 +200,13 @@ void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const f
     // holds the spheres below it.
     const double scale = glm::length(model_to_grid[0]);
     sphere_upload_.clear();
-    for (const blockers::FlatSphereNode& n : aircraft_nodes_) {
+    for (std::size_t j = 0; j < aircraft_nodes_.size(); ++j) {
+        const blockers::FlatSphereNode& n = aircraft_nodes_[j];
         const blockers::Sphere p{aircraft.eye + model_to_grid * n.bound.center, n.bound.radius * scale};
         if (n.sphere >= 0) placed_spheres_.push_back(p);
         sphere_upload_.push_back(glm::vec4(glm::vec3(p.center - camera.eye), float(p.radius)));
-        sphere_upload_.push_back(glm::vec4(float(n.skip), n.sphere >= 0 ? 1.0f : 0.0f, 0.0f, 0.0f));
+        sphere_upload_.push_back(
+            glm::vec4(float(n.skip), n.sphere >= 0 ? 1.0f : 0.0f, aircraft_node_far_share_[j], 0.0f));
     }
     renderer_->set_aircraft_spheres(sphere_upload_);
     const double bound_radius = aircraft_nodes_.front().bound.radius * scale;

@@ -121,6 +121,9 @@ private:
     std::size_t aircraft_triangles_ = 0;
     // The spheres' hierarchy in depth-first order (model frame; [0] holds them all).
     std::vector<blockers::FlatSphereNode> aircraft_nodes_;
+    // Per node, the share of its bound's sky cover its leaves keep from afar (the root's is
+    // aircraft_far_sky_share_): the sky walk stops at a node whose cap is small.
+    std::vector<float> aircraft_node_far_share_;
     double aircraft_far_sky_share_ = 0.0;
     std::vector<blockers::Sphere> placed_spheres_;
     std::vector<glm::vec4> sphere_upload_;

@@ -40,25 +40,36 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
                         mix(texel_sun(texels.z), texel_sun(texels.w), f.x), f.y);
     vec3 l_sun = sun_open.rgb;
     sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
-    // Near the bound its spheres' covers combine one by one; farther the bound's cover times
-    // the share its spheres keep from afar (one evaluation).
-    bool sky_detail = bound_sky > frame.aircraft_sky.y;
+    // Near the bound its parts' covers combine one by one; farther the bound's cover times the
+    // share its spheres keep from afar (one evaluation). The same rule down the hierarchy: a
+    // node whose cover is at most the detail threshold counts as its cover times its own far
+    // share, and its subtree is not opened for the sky.
+    float detail = frame.aircraft_sky.y;
+    bool sky_detail = bound_sky > detail;
     float sky_cover = bound_sky * frame.aircraft_sky.x;
     if (!sun && !sky_detail) return l - max(l - l_sun, vec3(0.0)) * ts_open_sky_share(sky_cover, sun_open.a);
     float sun_visible = 1.0, sky_product = 1.0;
     int count = int(frame.aircraft_shadow.x);
-    // The hierarchy walk: the sun cone prunes subtrees; the sky in detail needs every leaf
-    // (their caps combine inside the bound's), so then the walk visits them all.
+    // The hierarchy walk: the sun cone prunes subtrees; the sky opens the nodes whose caps are
+    // large from here. `sky_done` is the index past the last subtree the sky has counted.
+    int sky_done = sky_detail ? 0 : count;
     for (int i = 0; i < count;) {
         vec4 b = sphere_nodes[2 * i];
-        vec2 link = sphere_nodes[2 * i + 1].xy;
+        vec3 link = sphere_nodes[2 * i + 1].xyz;
+        bool leaf = link.y > 0.0;
         bool in_sun = sun && sun_visible > 0.0 && sun_cone_meets(b.xyz - p, b.w, s, alpha);
-        if (link.y > 0.0) {
-            if (in_sun) sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
-            if (sky_detail)
-                sky_product = ts_sky_cover_step(sky_product, ts_sphere_sky_cover(b.xyz, b.w, p, n), bound_sky);
+        if (leaf && in_sun) sun_visible *= 1.0 - ts_sphere_sun_cover(b.xyz, b.w, p, s, alpha);
+        bool open_sky = false;
+        if (i >= sky_done) {
+            float c = ts_sphere_sky_cover(b.xyz, b.w, p, n);
+            if (leaf || c <= detail) {
+                sky_product = ts_sky_cover_step(sky_product, leaf ? c : c * link.z, bound_sky);
+                sky_done = int(link.x);
+            } else {
+                open_sky = true;
+            }
         }
-        i = in_sun || sky_detail ? i + 1 : int(link.x);
+        i = in_sun || open_sky ? i + 1 : int(link.x);
     }
     if (sky_detail) sky_cover = ts_sky_cover_union(sky_product, bound_sky);
     vec3 l_sky = max(l - l_sun, vec3(0.0));

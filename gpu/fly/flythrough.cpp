@@ -7,12 +7,14 @@
 
 #include "core/blockers/placed_spheres.hpp"
 #include "core/blockers/projected_cover_share.hpp"
+#include "core/blockers/self_sky_shadow.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/light/sky.hpp"
 #include "core/mesh/placement.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/util/angles.hpp"
+#include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -165,13 +167,24 @@ void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double 
     placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
-    v.reserve(m.positions.size() * 3);
-    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    v.resize(m.positions.size() * 3);
+    // Each vertex's sky self-shadow, for the normal's side (in the normal's w) and the other
+    // (in the colour's w): a function of the mesh alone (self_sky_shadow.hpp), so once here.
+    const bool self_sky = settings_.aircraft_shadows && !aircraft_nodes_.empty();
+    parallel_for(int(m.positions.size()), thread_count(0), [&](int k, int) {
+        const std::size_t i = std::size_t(k);
         const glm::vec4 c = m.materials[m.material[i / 3]].base_color;
-        v.push_back(glm::vec4(m.positions[i], 1.0f));
-        v.push_back(glm::vec4(m.normals[i], 0.0f));
-        v.push_back(glm::vec4(glm::vec3(c), 1.0f));
-    }
+        const glm::dvec3 p(m.positions[i]), n(m.normals[i]);
+        const double front = self_sky ? blockers::self_sky_share(aircraft_nodes_, aircraft_node_far_share_, p, n,
+                                                                 settings_.aircraft_sky_detail)
+                                      : 1.0;
+        const double back = self_sky ? blockers::self_sky_share(aircraft_nodes_, aircraft_node_far_share_, p, -n,
+                                                                settings_.aircraft_sky_detail)
+                                     : 1.0;
+        v[3 * i] = glm::vec4(m.positions[i], 1.0f);
+        v[3 * i + 1] = glm::vec4(m.normals[i], float(front));
+        v[3 * i + 2] = glm::vec4(glm::vec3(c), float(back));
+    });
     renderer_->set_aircraft(v);
     aircraft_scale_ = scale;
     aircraft_triangles_ = m.triangle_count();

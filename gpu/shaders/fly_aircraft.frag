@@ -4,7 +4,8 @@
 // ts_zh_rotate, core/sh/sh_shared.h, the one SH definition of C++ and GLSL) and of the sun times
 // the terrain's visible fraction of its disc there and the fraction its own spheres leave (the
 // spheres that do not hold the fragment: a surface point lies inside the sphere bounding it;
-// core/blockers/sphere_occlusion_shared.h, as core/blockers/self_shadow.hpp on the CPU).
+// core/blockers/sphere_occlusion_shared.h, as core/blockers/self_shadow.hpp on the CPU), the
+// sky's part times the share of the sky those spheres leave (per vertex, interpolated).
 #extension GL_GOOGLE_include_directive : require
 #define TS_GLSL 1
 #include "core/sh/sh_shared.h"
@@ -14,6 +15,9 @@
 layout(location = 0) in vec3 v_normal;
 layout(location = 1) in vec3 v_color;
 layout(location = 2) in vec3 v_rel;
+// The sky share the aircraft's own spheres leave, per vertex (core/blockers/self_sky_shadow.hpp,
+// computed once per aircraft): the normal's side, the other side.
+layout(location = 3) in vec2 v_self_sky;
 layout(location = 0) out vec4 out_color;
 
 // The sun's disc fraction the aircraft's own spheres leave at `p` (unit normal `n`, the side
@@ -58,6 +62,7 @@ void main() {
     float cos_s = max(dot(n, frame.sun_direction.xyz), 0.0);
     float self_sun = cos_s > 0.0 && frame.aircraft_shadow.w > 0.0 ? self_shadow_sun(v_rel, n) : 1.0;
     vec3 e_sun = frame.sun_radiance.rgb * sun_solid_angle * cos_s * frame.aircraft_light.x * self_sun;
-    vec3 l = v_color / 3.14159265 * (max(e_sky, vec3(0.0)) + e_sun);
+    float self_sky = frame.aircraft_shadow.w > 0.0 ? (gl_FrontFacing ? v_self_sky.x : v_self_sky.y) : 1.0;
+    vec3 l = v_color / 3.14159265 * (max(e_sky, vec3(0.0)) * self_sky + e_sun);
     out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
 }

@@ -11,6 +11,7 @@ layout(push_constant) uniform Placement { mat4 model_to_eye_relative; } placemen
 layout(location = 0) out vec3 v_normal;  // ENU
 layout(location = 1) out vec3 v_color;
 layout(location = 2) out vec3 v_rel;     // eye-relative metres before the curvature drop (the spheres' frame)
+layout(location = 3) out vec2 v_self_sky;  // the sky share its own spheres leave: normal's side, other side
 
 void main() {
     vec4 p = aircraft[3 * gl_VertexIndex];
@@ -21,4 +22,5 @@ void main() {
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_normal = normalize(mat3(placement.model_to_eye_relative) * n);
     v_color = aircraft[3 * gl_VertexIndex + 2].rgb;
+    v_self_sky = vec2(aircraft[3 * gl_VertexIndex + 1].w, aircraft[3 * gl_VertexIndex + 2].w);
 }

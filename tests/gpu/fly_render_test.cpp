@@ -122,13 +122,20 @@ TEST_F(FlyRenderTest, AShortFlightOverGrenobleHasTerrainSkyAndNoCracks) {
     EXPECT_GE(levels_drawn, 2);  // LOD levels meet in the frames: their seams are checked
 }
 
-// A flat white plate, 40 m square, facing up: its light is the sky it sees and the sun.
-mesh::TriangleMesh plate() {
+// A flat white plate, 40 m square, facing up, in `cells` x `cells` squares of two triangles:
+// its light is the sky it sees and the sun.
+mesh::TriangleMesh plate(int cells = 1) {
     mesh::TriangleMesh m;
-    const float a = 20.0f;
-    m.positions = {{-a, -a, 0}, {a, -a, 0}, {a, a, 0}, {-a, -a, 0}, {a, a, 0}, {-a, a, 0}};
-    m.normals.assign(6, glm::vec3(0, 0, 1));
-    m.material = {0, 0};
+    const float a = 20.0f, step = 2.0f * a / float(cells);
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            const float x0 = -a + step * float(i), y0 = -a + step * float(j), x1 = x0 + step, y1 = y0 + step;
+            for (const glm::vec3& q : {glm::vec3(x0, y0, 0), glm::vec3(x1, y0, 0), glm::vec3(x1, y1, 0),
+                                       glm::vec3(x0, y0, 0), glm::vec3(x1, y1, 0), glm::vec3(x0, y1, 0)})
+                m.positions.push_back(q);
+            m.material.push_back(0), m.material.push_back(0);
+        }
+    m.normals.assign(m.positions.size(), glm::vec3(0, 0, 1));
     m.materials = {mesh::MeshMaterial{"white", glm::vec4(0.25f, 0.25f, 0.25f, 1.0f), ""}};
     return m;
 }
@@ -485,6 +492,73 @@ TEST_F(FlyRenderTest, TheAircraftsSkyShadowInAValleyTakesItsCoverOverTheOpenSky)
     // the nodes the walk opens, the far ones by their share projected from below; +32% here.
     EXPECT_GT(plain.drop, plain.exact_cover);
     EXPECT_LT(plain.drop, 1.45 * plain.exact_cover);
+}
+
+// The aircraft's sky self-shadow on a closed form: the white plate (the aircraft) 300 m over
+// the plain under an overcast sky, with one blocker sphere of radius 5 m 10 m above its centre
+// (spheres need not bound the mesh), the plate in 1 m squares (the self-shadow is per vertex).
+// Seen from above and to the south, the plate's pixels
+// within 0.5 m of its centre keep 1 - sin^2(30 deg) = 0.75 of the light they have without the
+// aircraft's shadows (the sky alone lights them); pixels 15 m out keep more.
+TEST_F(FlyRenderTest, TheAircraftsOwnSpheresHideItsSky) {
+    const dem::Dem dem = valley_dem(0.0);
+    const std::vector<blockers::Sphere> sphere = {{{0.0, 0.0, 10.0}, 5.0}};
+    std::vector<double> centre_ratio, edge_ratio;
+    std::vector<std::vector<std::uint8_t>> frames;
+    std::vector<std::vector<float>> depths;
+    FlyFrameUniforms u;
+    glm::dvec3 eye;
+    for (const bool shadows : {true, false}) {
+        FlySettings settings;
+        settings.width = 320;
+        settings.height = 180;
+        settings.directions = 8;
+        settings.sky = "overcast";
+        settings.aircraft_shadows = shadows;
+        Flythrough flight(dem, settings, *context_);
+        flight.set_time(light::parse_utc_time("2024-12-21T12:00:00Z"));
+        flight.set_aircraft(plate(40), 1.0, 0.0, sphere);
+        const glm::dvec2 m = flight.frame().to_metric(80, 60);
+        fly::CameraPose aircraft;
+        aircraft.eye = glm::dvec3(m.x, m.y, flight.ground_height_m({m.x, m.y, 0}) + 300.0);
+        fly::CameraPose camera;
+        camera.eye = aircraft.eye + glm::dvec3(0, -20, 40);
+        fly::direction_angles(aircraft.eye - camera.eye, camera.heading_deg, camera.pitch_deg);
+        FlyFrameStats stats;
+        std::vector<std::uint8_t> rgba;
+        std::vector<float> depth;
+        flight.prepare(camera, u, stats, &aircraft);
+        flight.renderer().render_to_memory(u, flight.patches(), rgba, &depth);
+        frames.push_back(rgba);
+        depths.push_back(depth);
+        eye = camera.eye;
+        if (const char* dir = std::getenv("TS_TEST_PNG_DIR"))
+            raster::write_png(std::string(dir) + "/fly_plate_sky_self_shadow_" + std::to_string(int(shadows)) + ".png",
+                              "plate", settings.width, settings.height, 4, rgba.data());
+    }
+    // The plate's pixels (the same depth in both frames, 300 m over the ground) back in the
+    // grid frame, relative to the plate's centre.
+    std::vector<bool> hit;
+    const std::vector<glm::dvec3> points = terrain_points(u, eye, depths[1], 320, 180, hit);
+    const glm::dvec3 centre = eye + glm::dvec3(0, 20, -40);
+    double with_c = 0, without_c = 0, with_e = 0, without_e = 0;
+    int n_c = 0, n_e = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!hit[i] || depths[0][i] != depths[1][i] || std::abs(points[i].z - centre.z) > 0.5) continue;
+        const double r = glm::length(glm::dvec2(points[i] - centre));
+        const double a = exposed_of_code(frames[0][4 * i + 1]), b = exposed_of_code(frames[1][4 * i + 1]);
+        if (r < 0.5) with_c += a, without_c += b, ++n_c;
+        if (r > 14.0 && r < 16.0) with_e += a, without_e += b, ++n_e;
+    }
+    ASSERT_GT(n_c, 3) << "the plate's centre is not in view";
+    ASSERT_GT(n_e, 10);
+    const double centre_kept = with_c / without_c, edge_kept = with_e / without_e;
+    // 15 m out the sphere's centre is 18 m away at 34 deg from the normal: sin^2 = (5/18)^2.
+    const double edge_want = 1.0 - (5.0 / 18.03) * (5.0 / 18.03) * (10.0 / 18.03);
+    std::printf("plate centre keeps %.3f of its light (want 0.750) over %d px; 15 m out %.3f (want %.3f) over %d px\n",
+                centre_kept, n_c, edge_kept, edge_want, n_e);
+    EXPECT_NEAR(centre_kept, 0.75, 0.02);
+    EXPECT_NEAR(edge_kept, edge_want, 0.02);
 }
 
 }  // namespace

@@ -79,7 +79,8 @@ std::string describe_job(const TileJob& job) {
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
-           "\"" + ",\"sky\":" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + contrast + bias + by_zoom + "}\n";
+           "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
+           by_zoom + "}\n";
 }
 
 TileShading shading_of_zoom(const TileJob& job, int z) {

@@ -27,6 +27,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -304,6 +305,12 @@ TEST(TilesCli, MbtilesSchemaMetadataAndTmsRows) {
     for (const char* key : {"name", "format", "bounds", "center", "minzoom", "maxzoom", "attribution"})
         EXPECT_TRUE(meta.count(key)) << key;
     EXPECT_EQ(meta["format"], "png");
+    // The job the tiles were made with (what --resume compares), as JSON a reader can parse.
+    ASSERT_TRUE(meta.count("terrashade_job"));
+    const auto job = nlohmann::json::parse(meta["terrashade_job"], nullptr, false);
+    ASSERT_FALSE(job.is_discarded()) << meta["terrashade_job"];
+    EXPECT_EQ(job.value("style", ""), "hillshade");
+    EXPECT_TRUE(job.contains("sky"));
     EXPECT_EQ(meta["minzoom"], "8");
     EXPECT_EQ(meta["maxzoom"], "10");
     double w = 0, s = 0, e = 0, n = 0;

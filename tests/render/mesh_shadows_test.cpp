@@ -20,6 +20,7 @@
 #include "core/visibility/blocker_footprint.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/visibility_backend.hpp"
+#include "tests/render/grey_materials.hpp"
 #include "tests/render/frame_stack.hpp"
 #include "tests/render/uniform_sky.hpp"
 
@@ -36,15 +37,7 @@ struct Flat {
     Flat(int w_, int h_, double spacing, float height) : w(w_), h(h_), z(std::size_t(w_) * h_, height) {
         grid = terrain::HeightGrid::uniform(w, h, z, spacing, spacing);
     }
-    MaterialRaster grey() const {
-        MaterialRaster m = rule_materials(grid, terrain_normals(grid));
-        std::fill(m.albedo_r.begin(), m.albedo_r.end(), 0.3f);
-        std::fill(m.albedo_g.begin(), m.albedo_g.end(), 0.3f);
-        std::fill(m.albedo_b.begin(), m.albedo_b.end(), 0.3f);
-        std::fill(m.ks.begin(), m.ks.end(), 0.0f);
-        std::fill(m.water.begin(), m.water.end(), 0);
-        return m;
-    }
+    MaterialRaster grey() const { return testing::grey_materials(grid, 0.3f); }
 };
 
 RendererOptions options_with(const blockers::SphereBlockers* b) {

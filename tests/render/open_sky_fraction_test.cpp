@@ -15,19 +15,10 @@
 #include "core/render/open_sky_fraction.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "tests/render/frame_stack.hpp"
+#include "tests/render/grey_materials.hpp"
 
 namespace ts::render {
 namespace {
-
-MaterialRaster grey(const terrain::HeightGrid& grid, const NormalField& normals) {
-    MaterialRaster m = rule_materials(grid, normals);
-    std::fill(m.albedo_r.begin(), m.albedo_r.end(), 0.3f);
-    std::fill(m.albedo_g.begin(), m.albedo_g.end(), 0.3f);
-    std::fill(m.albedo_b.begin(), m.albedo_b.end(), 0.3f);
-    std::fill(m.ks.begin(), m.ks.end(), 0.0f);
-    std::fill(m.water.begin(), m.water.end(), 0);
-    return m;
-}
 
 // The open-sky fraction at the centre texel of a V valley along the rows, walls at beta.
 double valley_floor(double beta_deg) {
@@ -40,9 +31,7 @@ double valley_floor(double beta_deg) {
     RendererOptions o;
     o.directions = 32;
     o.curvature = false;
-    NormalField n = terrain_normals(grid);
-    MaterialRaster m = grey(grid, n);
-    testing::FrameStack stack(grid, std::move(m), std::move(n), {}, o);
+    testing::FrameStack stack(grid, testing::grey_materials(grid, 0.3f), terrain_normals(grid), {}, o);
     const std::vector<float> v = open_sky_fraction(*stack.frame);
     EXPECT_EQ(v.size(), std::size_t(w) * h);
     for (const float x : v) {

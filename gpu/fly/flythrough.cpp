@@ -161,9 +161,7 @@ void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double 
     aircraft_nodes_ = blockers::flatten_sphere_hierarchy(blockers::build_sphere_hierarchy(spheres));
     // Per node, the share of its bound's disc its leaves cover seen from below (the terrain is
     // under the aircraft): far from a node its sky cover is the bound's times this.
-    aircraft_far_sky_share_ = 0.0;
     aircraft_node_far_share_ = blockers::projected_cover_share(aircraft_nodes_);
-    if (!aircraft_nodes_.empty()) aircraft_far_sky_share_ = aircraft_node_far_share_.front();
     placed_spheres_.clear();
     aircraft_yaw_deg_ = forward_yaw_deg;
     std::vector<glm::vec4> v;
@@ -226,7 +224,7 @@ void Flythrough::place_aircraft_spheres(const glm::dmat3& model_to_grid, const f
     u.aircraft_bound = sphere_upload_.front();
     const double footprint = bound_radius / std::max(blockers::min_cap_sine(settings_.aircraft_min_solid_angle_sr), 1e-6);
     u.aircraft_shadow = glm::vec4(float(aircraft_nodes_.size()), float(footprint), float(sun_radius_rad_), 1.0f);
-    u.aircraft_sky = glm::vec4(float(aircraft_far_sky_share_), float(settings_.aircraft_sky_detail), 0.0f, 0.0f);
+    u.aircraft_sky = glm::vec4(aircraft_node_far_share_.front(), float(settings_.aircraft_sky_detail), 0.0f, 0.0f);
 }
 
 void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, FlyFrameStats& stats,

@@ -121,10 +121,9 @@ private:
     std::size_t aircraft_triangles_ = 0;
     // The spheres' hierarchy in depth-first order (model frame; [0] holds them all).
     std::vector<blockers::FlatSphereNode> aircraft_nodes_;
-    // Per node, the share of its bound's sky cover its leaves keep from afar (the root's is
-    // aircraft_far_sky_share_): the sky walk stops at a node whose cap is small.
+    // Per node, the share of its bound's sky cover its leaves keep from afar: the sky walk stops
+    // at a node whose cap is small (the root's share goes in the frame's uniforms).
     std::vector<float> aircraft_node_far_share_;
-    double aircraft_far_sky_share_ = 0.0;
     std::vector<blockers::Sphere> placed_spheres_;
     std::vector<glm::vec4> sphere_upload_;
     void place_aircraft_spheres(const glm::dmat3& model_to_grid, const fly::CameraPose& aircraft,

@@ -13,6 +13,7 @@
 #include "app/bench/bench_blockers.hpp"
 #include "core/blockers/receiver_blockers.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
+#include "core/blockers/sphere_log_sh_kernel.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/render/scene_blockers.hpp"
@@ -45,26 +46,22 @@ void restore(const std::vector<float>& base, std::vector<float>& log_sh, const v
 long long add_flat(const terrain::HeightGrid& g, const render::NormalField& normals, const blockers::SphereBlockers& b,
                    const visibility::TexelRect& rect, double curvature, int threads, std::vector<float>& log_sh) {
     const blockers::PlacedSpheres& m = b.meshes[0];
+    const blockers::SphereLanes lanes(m.spheres);  // in the anchor frame, as the receivers
     const std::size_t texels = std::size_t(g.width) * g.height;
     std::atomic<long long> pairs{0};
     parallel_rows(rect.row1 - rect.row0, threads, (long long)(rect.col1 - rect.col0) * (long long)m.spheres.size() * 50,
                   [&](int b0, int e0) {
-                      std::vector<blockers::Sphere> rel;
                       long long p = 0;
                       for (int r = rect.row0 + b0; r < rect.row0 + e0; ++r)
                           for (int c = rect.col0; c < rect.col1; ++c) {
                               const glm::dvec3 q = visibility::receiver_in_anchor_frame(g, c, r, m, curvature);
                               const std::size_t t = std::size_t(r) * g.width + c;
-                              const glm::dvec3 n(normals.x[t], normals.y[t], normals.z[t]);
-                              rel.clear();
-                              for (const blockers::Sphere& s : m.spheres) rel.push_back({s.center - q, s.radius});
-                              const sh::ShVec add = blockers::accumulate_blockers(rel, glm::dvec3(0.0), n,
-                                                                                  b.options.log_eps, b.options.attenuation);
-                              for (int i = 0; i < 16; ++i) {
-                                  float& to = log_sh[std::size_t(i) * texels + t];
-                                  to = float(double(to) + add[std::size_t(i)]);
-                              }
-                              p += (long long)rel.size();
+                              const glm::vec3 n(normals.x[t], normals.y[t], normals.z[t]);
+                              float add[16] = {};
+                              blockers::accumulate_sphere_lanes(lanes, glm::vec3(q), n, float(b.options.log_eps),
+                                                                b.options.attenuation, add);
+                              for (int i = 0; i < 16; ++i) log_sh[std::size_t(i) * texels + t] += add[i];
+                              p += (long long)lanes.size();
                           }
                       pairs += p;
                   });

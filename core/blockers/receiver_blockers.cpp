@@ -16,10 +16,10 @@ bool significant(const Sphere& s, double min_sine) {
     return d2 <= s.radius * s.radius || s.radius / std::sqrt(d2) > min_sine;
 }
 
-}  // namespace
-
-void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
-                          double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out) {
+// The walk of collect_sky_blockers into either kind of output (both have push_back(Sphere)).
+template <class Out>
+void collect_into(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal, double min_sine,
+                  const RatioAttenuation& options, Out& out) {
     const std::vector<SphereNode>& nodes = mesh.hierarchy.nodes;
     if (nodes.empty()) return;
     auto rel = [&](const Sphere& s) { return Sphere{s.center - receiver, s.radius}; };
@@ -76,6 +76,18 @@ void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver,
         if (right) stack[top++] = n.right;
         if (left) stack[top++] = n.left;
     }
+}
+
+}  // namespace
+
+void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
+                          double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out) {
+    collect_into(mesh, receiver, normal, min_sine, options, out);
+}
+
+void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
+                          double min_sine, const RatioAttenuation& options, SphereLanes& out) {
+    collect_into(mesh, receiver, normal, min_sine, options, out);
 }
 
 double sun_visible_past(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& sun,

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/blockers/placed_spheres.hpp"
+#include "core/blockers/sphere_log_sh_kernel.hpp"
 
 namespace ts::blockers {
 
@@ -20,6 +21,9 @@ namespace ts::blockers {
 // `normal` are dropped, whole subtrees at once.
 void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
                           double min_sine, const RatioAttenuation& options, std::vector<Sphere>& out);
+// The same into the accumulation kernel's lanes (sphere_log_sh_kernel.hpp).
+void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& normal,
+                          double min_sine, const RatioAttenuation& options, SphereLanes& out);
 
 // Fraction of the sun's disc (unit direction `sun`) that the mesh's spheres leave visible from
 // the receiver: the product over spheres of (1 - covered fraction). Exact for one sphere; where

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/blockers/receiver_blockers.hpp"
+#include "core/blockers/sphere_log_sh_kernel.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/blocker_footprint.hpp"
@@ -75,7 +76,7 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
     std::atomic<long long> visited{0}, changed{0}, pairs{0};
     const int rows = all.row1 - all.row0;
     parallel_rows(rows, threads, (long long)(all.col1 - all.col0) * 64 * 100, [&](int b, int e) {
-        std::vector<blockers::Sphere> seen;
+        blockers::SphereLanes seen;
         long long v = 0, ch = 0, pr = 0;
         for (int r = all.row0 + b; r < all.row0 + e; ++r)
             for (int c = all.col0; c < all.col1; ++c) {
@@ -92,14 +93,13 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
                 }
                 v += inside_any;
                 if (seen.empty()) continue;
-                const sh::ShVec add =
-                    blockers::accumulate_blockers(seen, glm::dvec3(0.0), n, opt.log_eps, opt.attenuation);
+                // The spheres are relative to the receiver: it is the origin.
+                float add[16] = {};
+                blockers::accumulate_sphere_lanes(seen, glm::vec3(0.0f), glm::vec3(n), float(opt.log_eps),
+                                                  opt.attenuation, add);
                 const std::size_t t = std::size_t(r - window.row0) * std::size_t(window.width) +
                                       std::size_t(c - window.col0);
-                for (int i = 0; i < 16; ++i) {
-                    float& to = log_sh[std::size_t(i) * texels + t];
-                    to = float(double(to) + add[std::size_t(i)]);
-                }
+                for (int i = 0; i < 16; ++i) log_sh[std::size_t(i) * texels + t] += add[i];
                 ++ch;
                 pr += (long long)seen.size();
             }

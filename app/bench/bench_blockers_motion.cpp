@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <memory>
 #include <vector>
 
 #include "app/bench/bench_blockers.hpp"
@@ -26,6 +28,10 @@
 #include "core/visibility/blocker_reference.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/earth_curvature.hpp"
+#ifdef TERRASHADE_HAS_GPU
+#include "gpu/context.hpp"
+#include "gpu/visibility/gpu_blocker_log_sh.hpp"
+#endif
 
 namespace ts::app {
 namespace {
@@ -67,6 +73,52 @@ long long add_flat(const terrain::HeightGrid& g, const render::NormalField& norm
                   });
     return pairs;
 }
+
+#ifdef TERRASHADE_HAS_GPU
+// The flat loop of one frame on the best Vulkan device (blocker_log_sh.comp: every sphere at
+// every footprint texel), timed from upload to download, and its sky visibility against the
+// CPU flat loop's of the same frame. Prints why when there is no device.
+void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField& normals,
+                        const blockers::SphereBlockers& b, const visibility::TexelRect& rect, double curvature,
+                        const std::vector<float>& cpu_log_sh) {
+    std::unique_ptr<gpu::Context> context;
+    try {
+        context = std::make_unique<gpu::Context>();
+    } catch (const std::exception& e) {
+        std::printf("%-26s not run: %s\n", "flat on Vulkan", e.what());
+        return;
+    }
+    const blockers::PlacedSpheres& m = b.meshes[0];
+    const std::size_t n = std::size_t(rect.texels());
+    std::vector<glm::vec3> q, nn;
+    q.reserve(n), nn.reserve(n);
+    for (int r = rect.row0; r < rect.row1; ++r)
+        for (int c = rect.col0; c < rect.col1; ++c) {
+            q.emplace_back(visibility::receiver_in_anchor_frame(g, c, r, m, curvature));
+            const std::size_t t = std::size_t(r) * g.width + c;
+            nn.emplace_back(normals.x[t], normals.y[t], normals.z[t]);
+        }
+    std::vector<float> log_sh(16 * n, 0.0f);
+    const gpu::visibility::GpuBlockerLogSh kernel(*context);
+    const double ms = kernel.add(q, nn, m.spheres, float(b.options.log_eps), b.options.attenuation, log_sh);
+    const double pairs = double(n) * double(m.spheres.size());
+    const sh::ShVec lobe = visibility::zenith_cosine_lobe();
+    const std::size_t texels = std::size_t(g.width) * g.height;
+    double worst = 0.0;
+    std::size_t k = 0;
+    for (int r = rect.row0; r < rect.row1; ++r)
+        for (int c = rect.col0; c < rect.col1; ++c, ++k) {
+            const std::size_t t = std::size_t(r) * g.width + c;
+            const double a = visibility::sky_visibility_of_log_sh(log_sh.data() + k, n, sh::ExpMethod::scaling_squaring,
+                                                                  lobe);
+            const double want = visibility::sky_visibility_of_log_sh(cpu_log_sh.data() + t, texels,
+                                                                     sh::ExpMethod::scaling_squaring, lobe);
+            worst = std::max(worst, std::abs(a - want));
+        }
+    std::printf("%-26s %10.1f %10s %14.0f %14.3g   (%s, one frame; sky visibility max %.2g off the CPU's)\n",
+                "flat on Vulkan", ms, "-", pairs, pairs / (1e-3 * ms), context->device_info().name.c_str(), worst);
+}
+#endif
 
 }  // namespace
 
@@ -159,6 +211,9 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
     std::printf("%-26s %10s %10s %14s %14s\n", "per frame", "sky_ms", "sun_ms", "pairs", "pairs_per_s");
     line("hierarchy (threshold+cull)", tree);
     line("flat (every sphere)", flat);
+#ifdef TERRASHADE_HAS_GPU
+    run_flat_on_vulkan(grid, normals, place_at(o.motion_frames - 1), last_rect, curvature, last_log_sh[1]);
+#endif
     std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f\n", tree.texels / n,
                 flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0);
     std::printf("culling error: sky visibility rms %.3g, max %.3g over %lld texels (hierarchy against flat, last "

@@ -72,6 +72,12 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
                  "Sum the spheres' log-SH unweighted (default: scaled so the kept caps claim at most the hemisphere)");
     cmd.add_flag("--no-hemisphere-cull", a.no_hemisphere_cull,
                  "Keep spheres wholly below a texel's tangent plane (default: dropped)");
+    cmd.add_option("--sphere-culling", a.sphere_culling,
+                   "How a texel picks the spheres that darken its sky: hierarchy (the sphere hierarchy with "
+                   "--blocker-min-solid-angle as a level of detail) or none (every sphere of a mesh whose bounding "
+                   "sphere passes it)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"hierarchy", "none"}));
     cmd.add_flag("--no-mesh-terrain-shadow", a.no_mesh_terrain_shadow,
                  "Perspective views: light the drawn meshes under the open sky (default: the terrain's horizons from "
                  "each vertex darken them and hide the sun)");
@@ -128,6 +134,8 @@ blockers::SphereBlockerOptions blocker_options(const MeshArgs& a) {
     o.min_solid_angle_sr = a.min_solid_angle_sr;
     o.attenuation.solid_angle_ratio = !a.no_ratio_attenuation;
     o.attenuation.cull_lower_hemisphere = !a.no_hemisphere_cull;
+    o.sky_culling = a.sphere_culling == "hierarchy" ? blockers::SphereBlockerOptions::SkyCulling::hierarchy
+                                                    : blockers::SphereBlockerOptions::SkyCulling::none;
     return o;
 }
 

@@ -24,6 +24,7 @@ struct MeshArgs {
     double min_solid_angle_sr = blockers::SphereBlockerOptions{}.min_solid_angle_sr;
     bool no_ratio_attenuation = false;
     bool no_hemisphere_cull = false;
+    std::string sphere_culling = "none";  // SphereBlockerOptions::sky_culling
     bool no_mesh_terrain_shadow = false;
     bool no_mesh_self_shadow = false;
     std::string cache_dir;

@@ -18,6 +18,7 @@ struct BenchBlockersOptions {
     int sky_strata = 24;
     int sun_samples = 64;
     int threads = 2;
+    std::string sphere_culling = "none";  // of the accuracy part (the motion part runs both)
     std::string csv;
     // The moving aircraft: spheres over a 1000 x 1000 DEM, frames along a straight path.
     std::string motion_dem = "../shared/data/dem/srtm3_N39E040_1000px.tif";

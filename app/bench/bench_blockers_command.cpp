@@ -132,6 +132,8 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         d.count = c, d.threads = o.threads;
         Set s{blockers::decompose_into_spheres(mesh, d), {}};
         s.b.meshes.push_back(blockers::place_spheres(s.d.spheres, place, anchor, ground, o.mesh));
+        if (o.sphere_culling == "hierarchy")
+            s.b.options.sky_culling = blockers::SphereBlockerOptions::SkyCulling::hierarchy;
         const double min_sine = blockers::min_cap_sine(s.b.options.min_solid_angle_sr);
         sky_rect = bounding(sky_rect, visibility::sky_footprint(grid, s.b.meshes[0], min_sine));
         const visibility::BlockerSunShadow shadow(grid, s.b, curvature, o.threads);
@@ -253,6 +255,10 @@ void add_bench_blockers_command(CLI::App& bench) {
     cmd->add_option("--sky-strata", o->sky_strata, "Reference sky rays per texel: strata^2")->capture_default_str();
     cmd->add_option("--sun-samples", o->sun_samples, "Reference rays per texel over the sun's disc")->capture_default_str();
     cmd->add_option("--threads", o->threads, "Worker threads")->capture_default_str();
+    cmd->add_option("--sphere-culling", o->sphere_culling,
+                    "Accuracy part: hierarchy or none (as render --sphere-culling; the moving aircraft runs both)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"hierarchy", "none"}));
     cmd->add_option("--csv", o->csv, "Also write the accuracy rows as CSV");
     cmd->add_option("--motion-dem", o->motion_dem, "DEM of the moving-aircraft run")->capture_default_str();
     cmd->add_option("--motion-spheres", o->motion_spheres, "Spheres of the moving aircraft")->capture_default_str();

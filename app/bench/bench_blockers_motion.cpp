@@ -2,26 +2,25 @@
 // Per frame the sky log-SH of the texels in the old footprint is restored and the new
 // footprint's recomputed, and the sun shadow applied: through the sphere hierarchy (threshold
 // and tangent-plane culling of whole subtrees, blocker_log_sh.hpp), and as a flat loop that
-// tests every sphere at every footprint texel (the same footprint, no hierarchy, every sphere
-// above the plane kept: what a brute-force kernel over texels x spheres does).
+// takes every sphere at every footprint texel where the mesh's bounding sphere passes the
+// threshold (`--sphere-culling none`: no hierarchy, each sphere above the plane kept, what a
+// brute-force kernel over texels x spheres does); the flat loop also on the Vulkan device.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <memory>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "app/bench/bench_blockers.hpp"
-#include "core/blockers/receiver_blockers.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
-#include "core/blockers/sphere_log_sh_kernel.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/render/scene_blockers.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
-#include "core/util/parallel_for.hpp"
 #include "core/util/stopwatch.hpp"
 #include "core/visibility/blocker_footprint.hpp"
 #include "core/visibility/blocker_log_sh.hpp"
@@ -48,36 +47,11 @@ void restore(const std::vector<float>& base, std::vector<float>& log_sh, const v
         }
 }
 
-// Every sphere above the texel's tangent plane, at every texel of the footprint: no hierarchy.
-long long add_flat(const terrain::HeightGrid& g, const render::NormalField& normals, const blockers::SphereBlockers& b,
-                   const visibility::TexelRect& rect, double curvature, int threads, std::vector<float>& log_sh) {
-    const blockers::PlacedSpheres& m = b.meshes[0];
-    const blockers::SphereLanes lanes(m.spheres);  // in the anchor frame, as the receivers
-    const std::size_t texels = std::size_t(g.width) * g.height;
-    std::atomic<long long> pairs{0};
-    parallel_rows(rect.row1 - rect.row0, threads, (long long)(rect.col1 - rect.col0) * (long long)m.spheres.size() * 50,
-                  [&](int b0, int e0) {
-                      long long p = 0;
-                      for (int r = rect.row0 + b0; r < rect.row0 + e0; ++r)
-                          for (int c = rect.col0; c < rect.col1; ++c) {
-                              const glm::dvec3 q = visibility::receiver_in_anchor_frame(g, c, r, m, curvature);
-                              const std::size_t t = std::size_t(r) * g.width + c;
-                              const glm::vec3 n(normals.x[t], normals.y[t], normals.z[t]);
-                              float add[16] = {};
-                              blockers::accumulate_sphere_lanes(lanes, glm::vec3(q), n, float(b.options.log_eps),
-                                                                b.options.attenuation, add);
-                              for (int i = 0; i < 16; ++i) log_sh[std::size_t(i) * texels + t] += add[i];
-                              p += (long long)lanes.size();
-                          }
-                      pairs += p;
-                  });
-    return pairs;
-}
-
 #ifdef TERRASHADE_HAS_GPU
 // The flat loop of one frame on the best Vulkan device (blocker_log_sh.comp: every sphere at
-// every footprint texel), timed from upload to download, and its sky visibility against the
-// CPU flat loop's of the same frame. Prints why when there is no device.
+// every footprint texel where the mesh's bounding sphere passes the threshold, as the CPU's
+// `none` culling selects them), timed from upload to download, and its sky visibility against
+// the CPU's of the same frame. Prints why when there is no device.
 void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField& normals,
                         const blockers::SphereBlockers& b, const visibility::TexelRect& rect, double curvature,
                         const std::vector<float>& cpu_log_sh) {
@@ -89,15 +63,19 @@ void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField&
         return;
     }
     const blockers::PlacedSpheres& m = b.meshes[0];
-    const std::size_t n = std::size_t(rect.texels());
+    const blockers::Sphere& root = m.hierarchy.nodes[0].bound;
+    const double min_sine = blockers::min_cap_sine(b.options.min_solid_angle_sr);
     std::vector<glm::vec3> q, nn;
-    q.reserve(n), nn.reserve(n);
+    std::vector<std::size_t> at;  // grid texel of each receiver
     for (int r = rect.row0; r < rect.row1; ++r)
         for (int c = rect.col0; c < rect.col1; ++c) {
-            q.emplace_back(visibility::receiver_in_anchor_frame(g, c, r, m, curvature));
+            const glm::dvec3 p = visibility::receiver_in_anchor_frame(g, c, r, m, curvature);
+            const double d = glm::length(root.center - p);
+            if (d > root.radius && root.radius / d <= min_sine) continue;
             const std::size_t t = std::size_t(r) * g.width + c;
-            nn.emplace_back(normals.x[t], normals.y[t], normals.z[t]);
+            q.emplace_back(p), nn.emplace_back(normals.x[t], normals.y[t], normals.z[t]), at.push_back(t);
         }
+    const std::size_t n = q.size();
     std::vector<float> log_sh(16 * n, 0.0f);
     const gpu::visibility::GpuBlockerLogSh kernel(*context);
     const double ms = kernel.add(q, nn, m.spheres, float(b.options.log_eps), b.options.attenuation, log_sh);
@@ -105,16 +83,12 @@ void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField&
     const sh::ShVec lobe = visibility::zenith_cosine_lobe();
     const std::size_t texels = std::size_t(g.width) * g.height;
     double worst = 0.0;
-    std::size_t k = 0;
-    for (int r = rect.row0; r < rect.row1; ++r)
-        for (int c = rect.col0; c < rect.col1; ++c, ++k) {
-            const std::size_t t = std::size_t(r) * g.width + c;
-            const double a = visibility::sky_visibility_of_log_sh(log_sh.data() + k, n, sh::ExpMethod::scaling_squaring,
-                                                                  lobe);
-            const double want = visibility::sky_visibility_of_log_sh(cpu_log_sh.data() + t, texels,
-                                                                     sh::ExpMethod::scaling_squaring, lobe);
-            worst = std::max(worst, std::abs(a - want));
-        }
+    for (std::size_t k = 0; k < n; ++k) {
+        const double a = visibility::sky_visibility_of_log_sh(log_sh.data() + k, n, sh::ExpMethod::scaling_squaring, lobe);
+        const double want = visibility::sky_visibility_of_log_sh(cpu_log_sh.data() + at[k], texels,
+                                                                 sh::ExpMethod::scaling_squaring, lobe);
+        worst = std::max(worst, std::abs(a - want));
+    }
     std::printf("%-26s %10.1f %10s %14.0f %14.3g   (%s, one frame; sky visibility max %.2g off the CPU's)\n",
                 "flat on Vulkan", ms, "-", pairs, pairs / (1e-3 * ms), context->device_info().name.c_str(), worst);
 }
@@ -172,13 +146,12 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
             const visibility::TexelRect rect = visibility::sky_footprint(grid, b.meshes[0], min_sine);
             const Stopwatch t;
             restore(base, log_sh, old_rect, grid.width, texels);
-            if (use_tree) {
-                const visibility::BlockerStageStats st = visibility::add_blocker_log_sh(
-                    grid, {0, 0, grid.width, grid.height}, b, curvature, o.threads, log_sh.data());
-                tot.pairs += st.sphere_texel_pairs;
-            } else {
-                tot.pairs += add_flat(grid, normals, b, rect, curvature, o.threads, log_sh);
-            }
+            blockers::SphereBlockers culled = b;
+            culled.options.sky_culling = use_tree ? blockers::SphereBlockerOptions::SkyCulling::hierarchy
+                                                  : blockers::SphereBlockerOptions::SkyCulling::none;
+            const visibility::BlockerStageStats st = visibility::add_blocker_log_sh(
+                grid, {0, 0, grid.width, grid.height}, culled, curvature, o.threads, log_sh.data());
+            tot.pairs += st.sphere_texel_pairs;
             tot.sky_s += t.seconds();
             tot.texels += rect.texels();
             const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);

@@ -22,12 +22,21 @@
 namespace ts::blockers {
 
 struct SphereBlockerOptions {
-    // Sphere solid-angle threshold (steradians), applied down the sphere hierarchy as a level
-    // of detail (receiver_blockers.hpp): a sphere, or the finest hierarchy node whose spheres
-    // are each below it, counts while it subtends more than this. 0.01 sr hides at most
-    // 0.01 / pi = 0.3% of a texel's cosine-weighted sky per dropped part, and bounds the sky
-    // footprint to a disc of radius r / sin(theta_min) around the bounding sphere.
+    // Sphere solid-angle threshold (steradians): a mesh darkens a texel's sky only while its
+    // bounding sphere subtends more than this there, which bounds the sky footprint to a disc of
+    // radius r / sin(theta_min) around it. With sky_culling = hierarchy it is also applied down
+    // the sphere hierarchy as a level of detail (receiver_blockers.hpp): a sphere, or the finest
+    // hierarchy node whose spheres are each below it, counts while it subtends more than this;
+    // 0.01 sr hides at most 0.01 / pi = 0.3% of a texel's cosine-weighted sky per dropped part.
     double min_solid_angle_sr = 0.01;
+    // How a texel of the sky footprint picks the spheres it sums: `hierarchy` walks the sphere
+    // hierarchy with the threshold above as a level of detail, dropping small parts beside large
+    // ones and whole subtrees below the tangent plane (receiver_blockers.hpp); `none` keeps every
+    // sphere of every mesh whose bounding sphere passes the threshold there (the tangent-plane
+    // cull of `attenuation` still applies per sphere, inside the accumulation kernel).
+    // Measured in docs/blockers.md ("A moving aircraft, throughput").
+    enum class SkyCulling { hierarchy, none };
+    SkyCulling sky_culling = SkyCulling::none;
     RatioAttenuation attenuation;  // culling below the tangent plane and the solid-angle ratio
     // Log-visibility inside a sphere's cap. Not the terrain's floor (log 0.1): an order-4 SH
     // cap is smeared wide and shallow, where exp(f) ~ 1 + f, so a floor L darkens a small cap

@@ -54,7 +54,7 @@ void accumulate_groups(const float* __restrict px, const float* __restrict py, c
             for (float& c : zh) c = keep ? c : 0.0f;
             float f[16];
             sh::shared_float::ts_zh_rotate(zh, dir, f);
-            s.solid_angle[j] += keep ? kTwoPi * (1.0f - cb) : 0.0f;
+            s.solid_angle[j] += keep ? kTwoPi * sh::shared_float::ts_one_minus_cos(cb, sb) : 0.0f;
 #pragma GCC unroll 16
             for (std::size_t i = 0; i < 16; ++i) s.f[i][j] += f[i];
         }

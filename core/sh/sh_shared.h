@@ -148,9 +148,15 @@ TS_INLINE TS_REAL ts_sphere_theta_b(TS_REAL r, TS_REAL d) {
 // of its half-angle theta_b:
 //   log_eps * [ sqrt(pi)(1 - cos tb), sqrt(3pi)/2 sin^2 tb, sqrt(5pi)/2 cos tb sin^2 tb,
 //               sqrt(7pi)/16 (3 + 5 cos 2tb) sin^2 tb ].   theta_b = pi gives the whole sphere.
+// 1 - cos tb from the cap's cosine and sine, without the cancellation of 1 - cb for small caps
+// (in float a cap of sine 0.01 kept only three digits of it): sin^2 / (1 + cos) while cos > 0.
+TS_INLINE TS_REAL ts_one_minus_cos(TS_REAL cb, TS_REAL sb) {
+    return cb > 0.0 ? sb * sb / (1.0 + cb) : 1.0 - cb;
+}
+
 TS_INLINE void ts_cap_log_zh(TS_REAL cb, TS_REAL sb, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
     TS_REAL s2 = sb * sb;
-    c[0] = log_eps * 1.7724538509055159 * (1.0 - cb);
+    c[0] = log_eps * 1.7724538509055159 * ts_one_minus_cos(cb, sb);
     c[1] = log_eps * 1.5349900619197328 * s2;
     c[2] = log_eps * 1.9816636488030055 * cb * s2;
     c[3] = log_eps * 0.29309200623967196 * (3.0 + 5.0 * (2.0 * cb * cb - 1.0)) * s2;

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/blockers/receiver_blockers.hpp"
@@ -54,6 +56,15 @@ RectNormals normals_of(const terrain::HeightGrid& g, const TexelRect& rect, int 
     return out;
 }
 
+// Whether a mesh's bounding sphere subtends more than the threshold from receiver q (or holds it).
+bool bounding_sphere_counts(const blockers::PlacedSpheres& m, const glm::dvec3& q, double min_sine) {
+    if (m.hierarchy.nodes.empty()) return false;
+    const blockers::Sphere& root = m.hierarchy.nodes[0].bound;
+    const glm::dvec3 v = root.center - q;
+    const double d2 = glm::dot(v, v);
+    return d2 <= root.radius * root.radius || root.radius / std::sqrt(d2) > min_sine;
+}
+
 }  // namespace
 
 BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const ReceiverWindow& window,
@@ -72,6 +83,16 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
     }
     if (all.empty()) return stats;
     const RectNormals normals = normals_of(grid, all, threads);
+    // Without culling: each mesh's spheres as lanes in its anchor frame, where the receiver is
+    // placed (one mesh, the usual case, is accumulated straight from them; several are taken
+    // relative to the receiver into one set, so the ratio attenuation sees them together).
+    const bool cull = opt.sky_culling == blockers::SphereBlockerOptions::SkyCulling::hierarchy;
+    std::vector<blockers::SphereLanes> mesh_lanes;
+    if (!cull)
+        for (const blockers::PlacedSpheres& m : blockers.meshes) mesh_lanes.emplace_back(m.spheres);
+    auto root_counts = [&](const blockers::PlacedSpheres& m, const glm::dvec3& q) {
+        return bounding_sphere_counts(m, q, min_sine);
+    };
     const std::size_t texels = std::size_t(window.width) * std::size_t(window.height);
     std::atomic<long long> visited{0}, changed{0}, pairs{0};
     const int rows = all.row1 - all.row0;
@@ -84,29 +105,79 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
                 const glm::dvec3 n = normals.at(c, r);
                 seen.clear();
                 bool inside_any = false;
+                // Without culling: the first mesh that counts here (accumulated from its own
+                // lanes when it is the only one), and how many count.
+                const blockers::PlacedSpheres* first = nullptr;
+                std::size_t first_k = 0;
+                glm::dvec3 first_q(0.0);
+                int counted = 0;
+                auto push_relative = [&](const blockers::PlacedSpheres& m, const glm::dvec3& q) {
+                    for (const blockers::Sphere& s : m.spheres) seen.push_back({s.center - q, s.radius});
+                };
                 for (std::size_t k = 0; k < rects.size(); ++k) {
                     if (!rects[k].contains(c, r)) continue;
                     inside_any = true;
                     const blockers::PlacedSpheres& m = blockers.meshes[k];
-                    blockers::collect_sky_blockers(m, receiver_in_anchor_frame(grid, c, r, m, curvature), n,
-                                                   min_sine, opt.attenuation, seen);
+                    const glm::dvec3 q = receiver_in_anchor_frame(grid, c, r, m, curvature);
+                    if (cull) {
+                        blockers::collect_sky_blockers(m, q, n, min_sine, opt.attenuation, seen);
+                        continue;
+                    }
+                    if (!root_counts(m, q)) continue;
+                    if (++counted == 1) {
+                        first = &m, first_k = k, first_q = q;
+                        continue;
+                    }
+                    if (counted == 2) push_relative(*first, first_q);
+                    push_relative(m, q);
                 }
                 v += inside_any;
-                if (seen.empty()) continue;
-                // The spheres are relative to the receiver: it is the origin.
+                if (seen.empty() && counted != 1) continue;
                 float add[16] = {};
-                blockers::accumulate_sphere_lanes(seen, glm::vec3(0.0f), glm::vec3(n), float(opt.log_eps),
-                                                  opt.attenuation, add);
+                if (counted == 1)  // the mesh's own lanes, the receiver in its frame
+                    blockers::accumulate_sphere_lanes(mesh_lanes[first_k], glm::vec3(first_q), glm::vec3(n),
+                                                      float(opt.log_eps), opt.attenuation, add);
+                else  // spheres relative to the receiver: it is the origin
+                    blockers::accumulate_sphere_lanes(seen, glm::vec3(0.0f), glm::vec3(n), float(opt.log_eps),
+                                                      opt.attenuation, add);
                 const std::size_t t = std::size_t(r - window.row0) * std::size_t(window.width) +
                                       std::size_t(c - window.col0);
                 for (int i = 0; i < 16; ++i) log_sh[std::size_t(i) * texels + t] += add[i];
                 ++ch;
-                pr += (long long)seen.size();
+                pr += (long long)(counted == 1 ? mesh_lanes[first_k].size() : seen.size());
             }
         visited += v, changed += ch, pairs += pr;
     });
     stats.texels_visited = visited, stats.texels_changed = changed, stats.sphere_texel_pairs = pairs;
     return stats;
+}
+
+bool device_can_add_blockers(const blockers::SphereBlockers& blockers) {
+    return blockers.meshes.size() == 1 &&
+           blockers.options.sky_culling == blockers::SphereBlockerOptions::SkyCulling::none;
+}
+
+FlatBlockerReceivers flat_blocker_receivers(const terrain::HeightGrid& grid, const ReceiverWindow& window,
+                                            const blockers::SphereBlockers& blockers, double curvature, int threads) {
+    FlatBlockerReceivers out;
+    if (!device_can_add_blockers(blockers)) return out;
+    const blockers::PlacedSpheres& m = blockers.meshes[0];
+    const double min_sine = blockers::min_cap_sine(blockers.options.min_solid_angle_sr);
+    const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
+    const TexelRect rect = intersect(sky_footprint(grid, m, min_sine), win);
+    if (rect.empty()) return out;
+    const RectNormals normals = normals_of(grid, rect, threads);
+    for (int r = rect.row0; r < rect.row1; ++r)
+        for (int c = rect.col0; c < rect.col1; ++c) {
+            if (grid.is_hole(c, r)) continue;
+            ++out.texels_visited;
+            const glm::dvec3 q = receiver_in_anchor_frame(grid, c, r, m, curvature);
+            if (!bounding_sphere_counts(m, q, min_sine)) continue;
+            out.texels.push_back(std::size_t(r - window.row0) * std::size_t(window.width) + std::size_t(c - window.col0));
+            out.positions.emplace_back(q);
+            out.normals.emplace_back(normals.at(c, r));
+        }
+    return out;
 }
 
 }  // namespace ts::visibility

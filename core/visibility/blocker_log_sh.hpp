@@ -7,6 +7,9 @@
 //   V_log(texel) = V_log^HF(texel) + sum_b w_b * rot(log-ZH(theta_b), dir_b).
 // Called once, from the visibility seam (complete_on_cpu), so every consumer gets it.
 #include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/blockers/placed_spheres.hpp"
 #include "core/terrain/height_grid.hpp"
@@ -26,5 +29,22 @@ struct BlockerStageStats {
 BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const ReceiverWindow& window,
                                      const blockers::SphereBlockers& blockers, double curvature,
                                      int threads, float* log_sh);
+
+// For a device that accumulates the spheres itself (gpu/visibility's blocker_log_sh.comp: every
+// sphere at every receiver, the accumulation kernel's formulas): the receivers add_blocker_log_sh
+// would visit without culling. Applies to one mesh with sky_culling = none (several meshes are
+// attenuated together in one frame per texel, which the device does not do).
+bool device_can_add_blockers(const blockers::SphereBlockers& blockers);
+
+struct FlatBlockerReceivers {
+    std::vector<std::size_t> texels;      // window-relative index (row * width + col)
+    std::vector<glm::vec3> positions;     // in the mesh's anchor frame, as the spheres
+    std::vector<glm::vec3> normals;       // unit, as add_blocker_log_sh takes them
+    long long texels_visited = 0;         // texels in the footprint (BlockerStageStats)
+};
+// Every non-void texel of the window's part of the mesh's sky footprint where its bounding
+// sphere passes the threshold. Requires device_can_add_blockers.
+FlatBlockerReceivers flat_blocker_receivers(const terrain::HeightGrid& grid, const ReceiverWindow& window,
+                                            const blockers::SphereBlockers& blockers, double curvature, int threads);
 
 }  // namespace ts::visibility

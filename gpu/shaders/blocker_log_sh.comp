@@ -50,7 +50,7 @@ void main() {
         float f[16];
         ts_zh_rotate(zh, dir, f);
         for (int i = 0; i < 16; ++i) sum[i] += f[i];
-        solid_angle += kTwoPi * (1.0 - cb);
+        solid_angle += kTwoPi * ts_one_minus_cos(cb, sb);
     }
     float scale = p.solid_angle_ratio != 0u && solid_angle > kTwoPi ? kTwoPi / solid_angle : 1.0;
     for (int i = 0; i < 16; ++i) log_sh[uint(i) * p.receivers + t] += scale * sum[i];

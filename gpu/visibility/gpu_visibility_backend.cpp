@@ -1,9 +1,16 @@
 #include "gpu/visibility/gpu_visibility_backend.hpp"
 
+#include <algorithm>
+#include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
-#include "gpu/visibility/gpu_visibility.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/visibility/blocker_log_sh.hpp"
+#include "core/visibility/earth_curvature.hpp"
+#include "gpu/visibility/gpu_blocker_log_sh.hpp"
+#include "gpu/visibility/gpu_visibility.hpp"
 
 namespace ts::gpu::visibility {
 namespace {
@@ -42,12 +49,53 @@ public:
         if (go.sky) label += ", svf, sky_visible";
         result.stages.push_back(
             {label, name(), t0.seconds()});
-        vis::complete_on_cpu(grid, request, result);  // mesh blockers too, on the CPU
+        const bool blockers_here = request.log_sh && request.blockers && !request.blockers->empty() &&
+                                   vis::device_can_add_blockers(*request.blockers);
+        if (!blockers_here) {
+            vis::complete_on_cpu(grid, request, result);  // mesh blockers too, on the CPU
+            return result;
+        }
+        vis::VisibilityRequest rest = request;
+        rest.blockers = nullptr, rest.keep_terrain_log_sh = false;
+        vis::complete_on_cpu(grid, rest, result);
+        add_blockers(grid, request, result);
         return result;
     }
 
 private:
+    // The mesh's sphere log-SH on the device (blocker_log_sh.comp), into result.log_sh, as
+    // complete_on_cpu adds it on the CPU without culling: the footprint's receivers gathered,
+    // accumulated, scattered back.
+    void add_blockers(const terrain::HeightGrid& grid, const vis::VisibilityRequest& request,
+                      vis::VisibilityResult& result) const {
+        const Stopwatch t;
+        if (request.keep_terrain_log_sh) {
+            result.terrain_log_sh.resize(result.log_sh.size());
+            std::copy(result.log_sh.begin(), result.log_sh.end(), result.terrain_log_sh.begin());
+        }
+        const vis::ReceiverWindow& w = request.horizon.window;
+        const vis::ReceiverWindow resolved{w.col0, w.row0, result.horizons.width, result.horizons.height};
+        const blockers::SphereBlockers& b = *request.blockers;
+        const vis::FlatBlockerReceivers rec = vis::flat_blocker_receivers(
+            grid, resolved, b, vis::curvature_factor(request.horizon.curvature), request.horizon.threads);
+        const std::size_t n = rec.texels.size(), texels = result.log_sh.size() / 16;
+        std::vector<float> log_sh(16 * n);
+        for (std::size_t i = 0; i < 16; ++i)
+            for (std::size_t k = 0; k < n; ++k) log_sh[i * n + k] = result.log_sh[i * texels + rec.texels[k]];
+        if (!blocker_kernel_) blocker_kernel_ = std::make_unique<GpuBlockerLogSh>(context_);
+        blocker_kernel_->add(rec.positions, rec.normals, b.meshes[0].spheres, float(b.options.log_eps),
+                             b.options.attenuation, log_sh);
+        for (std::size_t i = 0; i < 16; ++i)
+            for (std::size_t k = 0; k < n; ++k) result.log_sh[i * texels + rec.texels[k]] = log_sh[i * n + k];
+        result.stages.push_back({"sphere blockers (" + std::to_string(b.sphere_count()) + " spheres, " +
+                                     std::to_string(n) + " texels, " +
+                                     std::to_string((long long)n * (long long)b.sphere_count()) +
+                                     " sphere-texel pairs)",
+                                 name(), t.seconds()});
+    }
+
     const Context& context_;
+    mutable std::unique_ptr<GpuBlockerLogSh> blocker_kernel_;
     GpuVisibilityOptions options_;
     std::unique_ptr<vis::VisibilityBackend> cpu_;
 };

@@ -26,8 +26,8 @@ struct LaneSums {
 // added up once at the end.
 TS_KERNEL_CLONES
 void accumulate_groups(const float* __restrict px, const float* __restrict py, const float* __restrict pz,
-                       const float* __restrict pr, std::size_t count, std::size_t padded, glm::vec3 q, glm::vec3 n, float log_eps,
-                       bool cull, LaneSums& s) {
+                       const float* __restrict pr, std::size_t count, std::size_t padded, glm::vec3 q, glm::vec3 n,
+                       float log_eps, bool cull, LaneSums& s) {
     for (std::size_t i = 0; i < 16; ++i)
         for (std::size_t j = 0; j < kLanes; ++j) s.f[i][j] = 0.0f;
     for (std::size_t j = 0; j < kLanes; ++j) s.solid_angle[j] = 0.0f;
@@ -84,8 +84,7 @@ void accumulate_sphere_lanes(const SphereLanes& spheres, const glm::vec3& receiv
     if (spheres.empty()) return;
     LaneSums s;
     accumulate_groups(spheres.x(), spheres.y(), spheres.z(), spheres.radius(), spheres.size(), spheres.padded(),
-                      receiver, normal,
-                      log_eps, options.cull_lower_hemisphere, s);
+                      receiver, normal, log_eps, options.cull_lower_hemisphere, s);
     float total = 0.0f;
     for (std::size_t j = 0; j < kLanes; ++j) total += s.solid_angle[j];
     const float scale = options.solid_angle_ratio && total > kTwoPi ? kTwoPi / total : 1.0f;

@@ -12,15 +12,12 @@
 #include <memory>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
 #include "app/bench/bench_blockers.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/render/scene_blockers.hpp"
 #include "core/terrain/dem_height_grid.hpp"
-#include "core/terrain/terrain_normals.hpp"
 #include "core/util/stopwatch.hpp"
 #include "core/visibility/blocker_footprint.hpp"
 #include "core/visibility/blocker_log_sh.hpp"
@@ -52,9 +49,8 @@ void restore(const std::vector<float>& base, std::vector<float>& log_sh, const v
 // every footprint texel where the mesh's bounding sphere passes the threshold, as the CPU's
 // `none` culling selects them), timed from upload to download, and its sky visibility against
 // the CPU's of the same frame. Prints why when there is no device.
-void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField& normals,
-                        const blockers::SphereBlockers& b, const visibility::TexelRect& rect, double curvature,
-                        const std::vector<float>& cpu_log_sh) {
+void run_flat_on_vulkan(const terrain::HeightGrid& g, const blockers::SphereBlockers& b, double curvature,
+                        int threads, const std::vector<float>& cpu_log_sh) {
     std::unique_ptr<gpu::Context> context;
     try {
         context = std::make_unique<gpu::Context>();
@@ -63,29 +59,21 @@ void run_flat_on_vulkan(const terrain::HeightGrid& g, const render::NormalField&
         return;
     }
     const blockers::PlacedSpheres& m = b.meshes[0];
-    const blockers::Sphere& root = m.hierarchy.nodes[0].bound;
-    const double min_sine = blockers::min_cap_sine(b.options.min_solid_angle_sr);
-    std::vector<glm::vec3> q, nn;
-    std::vector<std::size_t> at;  // grid texel of each receiver
-    for (int r = rect.row0; r < rect.row1; ++r)
-        for (int c = rect.col0; c < rect.col1; ++c) {
-            const glm::dvec3 p = visibility::receiver_in_anchor_frame(g, c, r, m, curvature);
-            const double d = glm::length(root.center - p);
-            if (d > root.radius && root.radius / d <= min_sine) continue;
-            const std::size_t t = std::size_t(r) * g.width + c;
-            q.emplace_back(p), nn.emplace_back(normals.x[t], normals.y[t], normals.z[t]), at.push_back(t);
-        }
-    const std::size_t n = q.size();
+    // The receivers the Vulkan visibility backend gathers (the whole grid is the window, so
+    // their indices are grid texels).
+    const visibility::FlatBlockerReceivers rec =
+        visibility::flat_blocker_receivers(g, {0, 0, g.width, g.height}, b, curvature, threads);
+    const std::size_t n = rec.texels.size();
     std::vector<float> log_sh(16 * n, 0.0f);
     const gpu::visibility::GpuBlockerLogSh kernel(*context);
-    const double ms = kernel.add(q, nn, m.spheres, float(b.options.log_eps), b.options.attenuation, log_sh);
+    const double ms = kernel.add(rec.positions, rec.normals, m.spheres, float(b.options.log_eps), b.options.attenuation, log_sh);
     const double pairs = double(n) * double(m.spheres.size());
     const sh::ShVec lobe = visibility::zenith_cosine_lobe();
     const std::size_t texels = std::size_t(g.width) * g.height;
     double worst = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         const double a = visibility::sky_visibility_of_log_sh(log_sh.data() + k, n, sh::ExpMethod::scaling_squaring, lobe);
-        const double want = visibility::sky_visibility_of_log_sh(cpu_log_sh.data() + at[k], texels,
+        const double want = visibility::sky_visibility_of_log_sh(cpu_log_sh.data() + rec.texels[k], texels,
                                                                  sh::ExpMethod::scaling_squaring, lobe);
         worst = std::max(worst, std::abs(a - want));
     }
@@ -104,7 +92,6 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
     d.count = o.motion_spheres, d.threads = o.threads;
     const blockers::SphereDecomposition dec = blockers::decompose_into_spheres(mesh, d);
     const double curvature = visibility::curvature_factor(true);
-    const render::NormalField normals = render::terrain_normals(grid, o.threads);
     const std::size_t texels = std::size_t(grid.width) * grid.height;
     // The terrain's log-SH stands in as zeros: the bench measures the blockers' share.
     const std::vector<float> base(16 * texels, 0.0f);
@@ -185,7 +172,7 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
     line("hierarchy (threshold+cull)", tree);
     line("flat (every sphere)", flat);
 #ifdef TERRASHADE_HAS_GPU
-    run_flat_on_vulkan(grid, normals, place_at(o.motion_frames - 1), last_rect, curvature, last_log_sh[1]);
+    run_flat_on_vulkan(grid, place_at(o.motion_frames - 1), curvature, o.threads, last_log_sh[1]);
 #endif
     std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f\n", tree.texels / n,
                 flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0);

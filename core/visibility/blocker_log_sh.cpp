@@ -90,9 +90,6 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
     std::vector<blockers::SphereLanes> mesh_lanes;
     if (!cull)
         for (const blockers::PlacedSpheres& m : blockers.meshes) mesh_lanes.emplace_back(m.spheres);
-    auto root_counts = [&](const blockers::PlacedSpheres& m, const glm::dvec3& q) {
-        return bounding_sphere_counts(m, q, min_sine);
-    };
     const std::size_t texels = std::size_t(window.width) * std::size_t(window.height);
     std::atomic<long long> visited{0}, changed{0}, pairs{0};
     const int rows = all.row1 - all.row0;
@@ -123,7 +120,7 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
                         blockers::collect_sky_blockers(m, q, n, min_sine, opt.attenuation, seen);
                         continue;
                     }
-                    if (!root_counts(m, q)) continue;
+                    if (!bounding_sphere_counts(m, q, min_sine)) continue;
                     if (++counted == 1) {
                         first = &m, first_k = k, first_q = q;
                         continue;

@@ -140,19 +140,26 @@ blockers::SphereBlockerOptions blocker_options(const MeshArgs& a) {
 }
 
 std::vector<render::SceneMesh> load_scene_meshes(const std::vector<MeshSpec>& specs, const dem::Dem& dem,
-                                                 const MeshArgs& a) {
+                                                 const MeshArgs& a, bool spheres_later) {
     for (const MeshSpec& s : specs) render::mesh_anchor(dem.georef, s.placement, s.file);  // off the DEM: exit 2 now
     const std::filesystem::path cache =
         a.cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.cache_dir);
     std::vector<render::SceneMesh> meshes;
     for (const MeshSpec& s : specs) {
         const mesh::TriangleMesh m = mesh::import_mesh(s.file, {});
-        blockers::DecompositionOptions d;
-        d.count = s.spheres;
-        const blockers::SphereDecomposition spheres = blockers::decompose_cached(m, d, cache);
-        std::printf("mesh %s: %zu triangles, %zu spheres (%s), scale %g\n", s.file.c_str(), m.triangle_count(),
-                    spheres.spheres.size(), spheres.cached ? "cached" : "decomposed now", s.placement.scale);
-        meshes.push_back({s.file, s.placement, spheres.spheres, std::make_shared<const mesh::TriangleMesh>(m)});
+        std::vector<blockers::Sphere> spheres;
+        if (spheres_later) {
+            std::printf("mesh %s: %zu triangles, scale %g (its spheres: --max-error chooses how many)\n", s.file.c_str(),
+                        m.triangle_count(), s.placement.scale);
+        } else {
+            blockers::DecompositionOptions d;
+            d.count = s.spheres;
+            const blockers::SphereDecomposition sd = blockers::decompose_cached(m, d, cache);
+            std::printf("mesh %s: %zu triangles, %zu spheres (%s), scale %g\n", s.file.c_str(), m.triangle_count(),
+                        sd.spheres.size(), sd.cached ? "cached" : "decomposed now", s.placement.scale);
+            spheres = sd.spheres;
+        }
+        meshes.push_back({s.file, s.placement, std::move(spheres), std::make_shared<const mesh::TriangleMesh>(m)});
     }
     return meshes;
 }

@@ -44,8 +44,9 @@ std::vector<MeshSpec> parse_mesh_specs(const MeshArgs& args);
 blockers::SphereBlockerOptions blocker_options(const MeshArgs& args);
 
 // Checks each placement lies on the DEM, then imports each mesh and takes its spheres from the
-// cache (decomposing once on a miss). Prints one line per mesh.
+// cache (decomposing once on a miss); with spheres_later, none yet (--max-error chooses their
+// count). Prints one line per mesh.
 std::vector<render::SceneMesh> load_scene_meshes(const std::vector<MeshSpec>& specs, const dem::Dem& dem,
-                                                 const MeshArgs& args);
+                                                 const MeshArgs& args, bool spheres_later = false);
 
 }  // namespace ts::app

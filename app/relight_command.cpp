@@ -169,12 +169,12 @@ void run_relight(const RelightArgs& a) {
     attach_meshes(render_args, dem, options);
     if (render_args.max_error) {
         // Every frame of the series (all shards choose alike): the prediction is the worst sun's.
-        std::vector<double> elevations;
+        std::vector<render::SunState> suns;
         const render::SunSite sun_place = render::sun_site(dem);
         for (const auto& t : times)
-            if (const double el = render::sun_at(sun_place, t).elevation_deg; !a.skip_night || el >= kNightElevationDeg)
-                elevations.push_back(el);
-        apply_max_error(render_args, dem, elevations, options);
+            if (const render::SunState s = render::sun_at(sun_place, t); !a.skip_night || s.elevation_deg >= kNightElevationDeg)
+                suns.push_back(s);
+        apply_max_error(render_args, dem, suns, options);
     }
     const int directions = options.renderer.directions;
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",

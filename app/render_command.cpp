@@ -53,7 +53,7 @@ void run_render(const RenderCommandArgs& a) {
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
     const render::SunState sun = time ? render::sun_at_dem_centre(dem, *time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
-    apply_max_error(a.render, dem, {sun.elevation_deg}, options);
+    apply_max_error(a.render, dem, {sun}, options);
     const int directions = options.renderer.directions;
     check_job_memory("render of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions),

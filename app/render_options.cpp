@@ -7,6 +7,8 @@
 #include <string_view>
 
 #include "core/geo/crs.hpp"
+#include "app/mesh_max_error.hpp"
+#include "core/quality/blocker_quality.hpp"
 #include "core/quality/radiance_quality.hpp"
 #include "core/quality/visibility_quality.hpp"
 #include "core/visibility/visibility_grid.hpp"
@@ -113,6 +115,8 @@ render::SceneOptions scene_options(const RenderArgs& a) {
             throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
         if (!a.quality_flags_given.empty())
             throw InputError("--max-error chooses " + a.quality_flags_given.front() + " itself; drop one of them");
+        if (!a.meshes.spheres.empty())
+            throw InputError("--max-error chooses --spheres itself; drop one of them");
     }
     render::SceneOptions o;
     o.sky = light::parse_sky_options(a.sky);
@@ -185,22 +189,42 @@ void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOp
 }
 
 void attach_meshes(const RenderArgs& a, const dem::Dem& dem, render::SceneOptions& o) {
-    o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes);
+    o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes, a.max_error.has_value());
 }
 
-void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector<double>& sun_elevations_deg,
+void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector<render::SunState>& suns,
                      render::SceneOptions& o) {
     if (!a.max_error) return;
     const visibility::VisibilityGrid grid(dem);
     quality::RadianceScene scene;
     scene.roughness = quality::mean_tan_slope(grid.view());
-    scene.sun_elevations_deg = sun_elevations_deg;
-    const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene);
+    for (const render::SunState& s : suns) scene.sun_elevations_deg.push_back(s.elevation_deg);
+    if (o.meshes.empty()) {
+        const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene);
+        o.renderer.directions = c.directions;
+        o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
+        std::printf("%s\n", c.reason.c_str());
+        std::fflush(stdout);
+        return;
+    }
+    // The terrain's setting and the spheres together: the cheapest setting that leaves the
+    // meshes a budget some sphere count meets, then the fewest spheres under it.
+    MeshErrorModel meshes(dem, grid.view(), o.meshes, suns, a.meshes);
+    const auto fits = [&meshes](double budget) {
+        return quality::choose_sphere_count(budget, [&meshes](int n) { return meshes.error(n); }).met;
+    };
+    const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene, fits);
     o.renderer.directions = c.directions;
     o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
-    std::printf("%s\n", c.reason.c_str());
-    if (!o.meshes.empty())
-        std::printf("--max-error: the meshes' spheres stay as given (--spheres): their error is not in the model\n");
+    const double budget = *a.max_error - c.predicted_error;
+    const quality::SphereCountChoice n =
+        quality::choose_sphere_count(budget, [&meshes](int k) { return meshes.error(k); });
+    for (std::size_t m = 0; m < o.meshes.size(); ++m) o.meshes[m].model_spheres = meshes.spheres(m, n.spheres).spheres;
+    std::printf("%s\n%s\n", c.reason.c_str(),
+                mesh_choice_line(n, meshes.terms(n.spheres), meshes.picture_area_m2(), o.meshes.size(), budget).c_str());
+    if (o.view != render::ViewKind::map)
+        std::printf("--max-error: the meshes' share is predicted for the map of the DEM; a perspective view frames "
+                    "the shadows differently\n");
     std::fflush(stdout);
 }
 

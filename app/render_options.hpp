@@ -63,11 +63,12 @@ inline const std::vector<std::string> kImageExtensions = {".png", ".tif", ".tiff
 // After the DEM is read: the meshes of --mesh placed on it, imported, their spheres from the
 // cache, into options.meshes (InputError for a mesh off the DEM or a bad mesh file).
 void attach_meshes(const RenderArgs& args, const dem::Dem& dem, render::SceneOptions& options);
-// --max-error: once the DEM and the suns are known (their elevations, degrees), the cheapest
-// directions and sun shadows predicted under E for this terrain, set in `options`; prints the
-// chosen line. Does nothing without --max-error. (E <= 0 and explicit --directions or
-// --sun-shadows are refused earlier, by scene_options.)
-void apply_max_error(const RenderArgs& args, const dem::Dem& dem, const std::vector<double>& sun_elevations_deg,
+// --max-error: once the DEM, the meshes and the suns are known, the cheapest directions and sun
+// shadows predicted under E for this terrain and, with meshes, the fewest spheres that keep the
+// terrain's prediction plus the meshes' under E (app/mesh_max_error.hpp), set in `options`;
+// prints the chosen lines. Does nothing without --max-error. (E <= 0 and explicit --directions,
+// --sun-shadows or --spheres are refused earlier, by scene_options.)
+void apply_max_error(const RenderArgs& args, const dem::Dem& dem, const std::vector<render::SunState>& suns,
                      render::SceneOptions& options);
 // --verbose: each visibility stage and where it ran (the mesh blockers' on the CPU).
 void print_stages(const RenderArgs& args, const render::Scene& scene);

@@ -128,6 +128,16 @@ void run_tiles(const TilesCommandArgs& a) {
                 std::string(tiles::tile_style_name(job.shading.style)).c_str());
     std::printf("time: %.3f s (shading %.3f s, tiles %.3f s: %.0f tiles/s)\n", total, stats.source_seconds,
                 stats.tile_seconds, stats.tile_seconds > 0 ? made / stats.tile_seconds : 0.0);
+    // --max-error: what each level shaded in blocks chose per block.
+    for (const auto& [level, by_d] : stats.blocks_by_directions) {
+        int blocks = 0;
+        for (const auto& [d, n] : by_d) blocks += n;
+        if (job.shading.max_error <= 0 || blocks < 2) continue;
+        std::string parts;
+        for (const auto& [d, n] : by_d) parts += (parts.empty() ? "" : ", ") + std::to_string(n) + " at " + std::to_string(d);
+        std::printf("--max-error: level %d in %d blocks, directions from each block's roughness: %s\n", level, blocks,
+                    parts.c_str());
+    }
     std::printf("wrote %s\n", a.out.c_str());
     if (!a.debug_heights.empty()) write_debug_heights(dem, job, a.debug_heights, a.out);
 }

@@ -122,6 +122,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
 
 void choose_tile_directions(const TilesArgs& a, const dem::Dem& dem, tiles::TileJob& job) {
     if (!a.max_error) return;
+    job.shading.max_error = *a.max_error;  // and per block, for levels shaded in blocks
     std::map<int, double> level_roughness;  // mean tan slope of each level at vertical scale 1
     struct Group {
         int z0, z1;

@@ -48,7 +48,8 @@ double predicted_radiance_error(const RadianceSetting& s, double roughness, doub
     return at(s.rows.back());
 }
 
-RadianceChoice choose_radiance(double max_error, const RadianceScene& scene) {
+RadianceChoice choose_radiance(double max_error, const RadianceScene& scene,
+                               const std::function<bool(double budget)>& rest_fits) {
     if (!(max_error > 0))
         throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
     std::vector<double> suns = scene.sun_elevations_deg;
@@ -69,7 +70,7 @@ RadianceChoice choose_radiance(double max_error, const RadianceScene& scene) {
     for (const RadianceSetting& s : settings) {
         if (s.exact_sun && !scene.exact_sun_available) continue;
         double el = 0;
-        if (worst(s, el) <= max_error) {
+        if (const double e = worst(s, el); e <= max_error && (!rest_fits || rest_fits(max_error - e))) {
             chosen = &s;
             c.met = true;
             break;
@@ -90,6 +91,55 @@ RadianceChoice choose_radiance(double max_error, const RadianceScene& scene) {
                   c.met ? "; the cheapest setting under the bound"
                         : "; no setting is predicted under it: the finest");
     c.reason = line;
+    return c;
+}
+
+double relative_cost(const RadianceSetting& s) { return 60.0 + 2.2 * s.directions + (s.exact_sun ? 12.0 : 0.0); }
+
+RegionChoice choose_radiance_per_region(double max_error, const std::vector<double>& roughness,
+                                        const std::vector<double>& weight, double sun_elevation_deg,
+                                        bool exact_sun_available) {
+    if (!(max_error > 0))
+        throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+    const auto& settings = radiance_settings();
+    std::vector<int> usable;  // in order of cost
+    for (int i = 0; i < int(settings.size()); ++i)
+        if (exact_sun_available || !settings[std::size_t(i)].exact_sun) usable.push_back(i);
+    const std::size_t n = roughness.size();
+    double total_w = 0;
+    for (double w : weight) total_w += w;
+    RegionChoice c;
+    c.setting.assign(n, usable.front());
+    if (n == 0 || !(total_w > 0)) return c;
+    const auto square = [&](std::size_t r, int k) {
+        const double e = predicted_radiance_error(settings[std::size_t(k)], roughness[r], sun_elevation_deg);
+        return e * e;
+    };
+    double sum = 0;  // sum of w e^2
+    for (std::size_t r = 0; r < n; ++r) sum += weight[r] * square(r, c.setting[r]);
+    const double target = max_error * max_error * total_w;
+    while (sum > target) {
+        // The upgrade (a region, a costlier setting) with the largest fall of w e^2 per cost.
+        double best = 0, best_gain = 0;
+        std::size_t best_r = n;
+        int best_k = -1;
+        for (std::size_t r = 0; r < n; ++r) {
+            const double now = square(r, c.setting[r]), now_cost = relative_cost(settings[std::size_t(c.setting[r])]);
+            for (int k : usable) {
+                const double cost = relative_cost(settings[std::size_t(k)]) - now_cost;
+                const double gain = weight[r] * (now - square(r, k));
+                if (cost <= 0 || gain <= 0) continue;
+                if (gain / cost > best) best = gain / cost, best_gain = gain, best_r = r, best_k = k;
+            }
+        }
+        if (best_r == n) {
+            c.met = false;
+            break;
+        }
+        c.setting[best_r] = best_k;
+        sum -= best_gain;
+    }
+    c.predicted_error = std::sqrt(std::max(0.0, sum) / total_w);
     return c;
 }
 

@@ -11,6 +11,7 @@
 // scripts/fit_radiance_quality.py into radiance_error_table.inc, and linear in the sun's
 // elevation between fitted elevations (held at the ends). Flat ground gets the cheapest setting
 // the sun allows.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,7 +61,29 @@ struct RadianceChoice {
 };
 
 // The cheapest setting predicted under `max_error` for this scene; the finest one (met = false)
-// when none is. Throws ts::InputError for max_error <= 0.
-RadianceChoice choose_radiance(double max_error, const RadianceScene& scene);
+// when none is. With `rest_fits` (the meshes: blocker_quality.hpp), a setting must also leave a
+// budget, max_error minus its prediction, that rest_fits accepts. Throws ts::InputError for
+// max_error <= 0.
+RadianceChoice choose_radiance(double max_error, const RadianceScene& scene,
+                               const std::function<bool(double budget)>& rest_fits = {});
+
+// The relative cost of a setting (ms for 80 x 80 texels, state and frame): the bench's times are
+// roughly 60 + 2.2 D, the exact sun pass about 12 more (docs/accuracy.md).
+double relative_cost(const RadianceSetting& s);
+
+// One setting per region of a picture (the blocks of a tile level), so that flat regions get
+// less work: regions of these roughnesses and area weights (any positive scale), each starting at
+// the cheapest setting, upgraded greedily where the predicted mean square error falls most per
+// unit of cost, until the picture's predicted RMS error, sqrt(sum w e^2 / sum w), is at most
+// max_error (or every region is at the finest: met = false). Returns indices into
+// radiance_settings(); the sweep settings only unless exact_sun_available.
+struct RegionChoice {
+    std::vector<int> setting;  // per region
+    double predicted_error = 0;
+    bool met = true;
+};
+RegionChoice choose_radiance_per_region(double max_error, const std::vector<double>& roughness,
+                                        const std::vector<double>& weight, double sun_elevation_deg,
+                                        bool exact_sun_available);
 
 }  // namespace ts::quality

@@ -8,6 +8,8 @@
 #include <memory>
 
 #include "core/material/material.hpp"
+#include "core/quality/radiance_quality.hpp"
+#include "core/quality/visibility_quality.hpp"
 #include "core/raster/srgb.hpp"
 #include "core/render/frame_renderer.hpp"
 #include "core/render/shading_state.hpp"
@@ -235,7 +237,25 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
     }
     std::vector<float> wz, wtrue;
     std::vector<std::uint8_t> wvoids, wtrue_voids;
-    for (const Rect& core : blocks) {
+    // --max-error: each block's directions from its own roughness (its core, heights as
+    // shaded), the picture's predicted RMS under the bound at the least cost.
+    std::vector<int> block_directions(blocks.size(), s.directions);
+    if (s.max_error > 0 && !whole && s.style != TileStyle::svf) {
+        std::vector<double> roughness, weight;
+        for (const Rect& b : blocks) {
+            roughness.push_back(quality::mean_tan_slope(grid, b.col0, b.row0, b.width, b.height));
+            weight.push_back(double(b.width) * double(b.height));
+        }
+        const quality::RegionChoice rc =
+            quality::choose_radiance_per_region(s.max_error, roughness, weight, s.sun_elevation_deg, false);
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+            block_directions[b] = quality::radiance_settings()[std::size_t(rc.setting[b])].directions;
+    }
+    for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
+        const Rect& core = blocks[bi];
+        TileShading bs = s;
+        bs.directions = block_directions[bi];
+        ++out.blocks_by_directions[bs.directions];
         // The window each block is shaded on: its core grown by the halo (sun shadows, normals
         // at the edge, the near field of the sky), clamped to the level. Without a far field
         // svf sweeps its core's horizons over the whole level: no halo.
@@ -283,14 +303,14 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
             }
             const std::size_t m = std::size_t(w.width) * std::size_t(w.height);
             if (s.style == TileStyle::relief) {
-                const auto radiance = render_frame(g, grey_materials(m, 1.0f), s, whole ? progress : nullptr, backend.get(), outer_sun);
+                const auto radiance = render_frame(g, grey_materials(m, 1.0f), bs, whole ? progress : nullptr, backend.get(), outer_sun);
                 values.resize(m);
                 for (std::size_t k = 0; k < m; ++k)
                     values[k] = relief_grey(render::luminance(radiance[k]) / flat, s.relief_contrast);
             } else {
                 // Land cover from the true heights and slopes; the light on the exaggerated form.
                 const render::NormalField true_normals = render::terrain_normals(tg, s.threads);
-                const auto radiance = render_frame(g, render::rule_materials(tg, true_normals), s,
+                const auto radiance = render_frame(g, render::rule_materials(tg, true_normals), bs,
                                                    whole ? progress : nullptr, backend.get(), outer_sun);
                 const float scale = float(kColorExposure / flat);
                 values.resize(3 * m);

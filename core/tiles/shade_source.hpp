@@ -25,6 +25,7 @@
 // per block) and its sun shadows end at the halo.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "core/dem/dem.hpp"
@@ -42,6 +43,7 @@ struct ShadeSource {
     int channels = 1;            // 1, or 3 (color)
     double vertical_scale = 1;   // z-factor x exaggeration the values were computed with
     std::vector<float> values;   // row-major, `channels` floats per texel
+    std::map<int, int> blocks_by_directions;  // horizon directions -> blocks shaded with them
 };
 
 // Display-linear grey of an open flat texel in `relief` (0.5 -> sRGB code 188): slopes facing

@@ -71,6 +71,7 @@ std::string describe_job(const TileJob& job) {
     // Likewise only when not the default.
     const std::string contrast = s.relief_contrast != 1.0 ? ",\"relief_contrast\":" + number(s.relief_contrast) : "";
     const std::string bias = job.level_bias != 0 ? ",\"level_bias\":" + std::to_string(job.level_bias) : "";
+    const std::string max_error = s.max_error > 0 ? ",\"block_max_error\":" + number(s.max_error) : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -80,7 +81,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + "}\n";
+           by_zoom + max_error + "}\n";
 }
 
 TileShading shading_of_zoom(const TileJob& job, int z) {
@@ -163,6 +164,7 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
             const Stopwatch watch;
             sources[key] = std::make_shared<const ShadeSource>(make_shade_source(dem, shading, zs.level, zs.vertical_scale));
             stats.source_seconds += watch.seconds();
+            for (const auto& [d, n] : sources[key]->blocks_by_directions) stats.blocks_by_directions[zs.level][d] += n;
         }
         const ShadeSource& source = *sources[key];
         const Stopwatch watch;

@@ -43,6 +43,9 @@ struct TileExportStats {
     std::size_t empty = 0;     // no data under them: not written
     double source_seconds = 0; // shading the DEM levels
     double tile_seconds = 0;   // cutting, encoding and storing tiles
+    // Per DEM level shaded: horizon directions -> blocks shaded with them (--max-error picks a
+    // block's from its roughness when the level is shaded in blocks).
+    std::map<int, std::map<int, int>> blocks_by_directions;
 };
 
 // Checks the job before any work (ts::InputError): zooms in 0..24 with z0 <= z1, a tile size

@@ -59,6 +59,10 @@ struct TileShading {
     std::optional<double> exaggeration;
     light::SkyOptions sky;     // relief, color
     int directions = 16;       // horizon azimuths of the visibility (relief, svf, color)
+    // --max-error (relief, color; > 0): a level shaded in blocks takes each block's directions
+    // from the block's own roughness (quality::choose_radiance), so flat blocks get fewer; a
+    // level in one block keeps `directions` (the zoom's choice). 0: every block `directions`.
+    double max_error = 0;
     // Levels wider or taller than this many texels are shaded in blocks of it (relief, svf,
     // color), so memory follows the block, not the DEM (shade_source.hpp). 0 = never.
     int block_texels = 2048;

@@ -39,6 +39,39 @@ TEST(MaxErrorCli, RenderPrintsWhatItChoseAndUsesIt) {
     EXPECT_TRUE(std::filesystem::exists(dir / "r.png"));
 }
 
+// With a mesh: the spheres are chosen with the terrain's setting, fewer for a looser bound.
+int chosen_spheres(const std::string& out) {
+    const std::string key = "--max-error: ";
+    const auto at = out.find(key);
+    if (at == std::string::npos || out.find(" spheres for the mesh (predicted ", at) == std::string::npos) return -1;
+    return std::stoi(out.substr(at + key.size()));
+}
+
+TEST(MaxErrorCli, RenderWithAMeshChoosesItsSpheresToo) {
+    const auto dir = temp_dir("max_error_mesh");
+    const std::string cessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+    int spheres[2] = {0, 0};
+    const char* bounds[2] = {"0.08", "0.06"};
+    for (int k = 0; k < 2; ++k) {
+        const Result r = run(ts_cmd("render " + quote(kDem) + kCrop + " --mesh " + quote(cessna) +
+                                    " --at 5.75,45.2,300agl --scale 30 --sphere-cache-dir " + quote((dir / "cache").string()) +
+                                    " --sun-azimuth 135 --sun-elevation 30 --max-error " + bounds[k] + " --out " +
+                                    quote((dir / "m.png").string())));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_TRUE(has_choice_line(r.out, bounds[k])) << r.out;
+        EXPECT_NE(r.out.find("(its spheres: --max-error chooses how many)"), std::string::npos) << r.out;
+        spheres[k] = chosen_spheres(r.out);
+        EXPECT_GE(spheres[k], 8) << r.out;
+    }
+    EXPECT_LT(spheres[0], spheres[1]) << "a tighter bound takes more spheres";
+    const Result both = run(ts_cmd("render " + quote(kDem) + " --mesh " + quote(cessna) +
+                                   " --at 5.75,45.2,300agl --spheres 32 --sun-azimuth 135 --sun-elevation 30 "
+                                   "--max-error 0.05 --out " + quote((dir / "x.png").string())));
+    EXPECT_EQ(both.exit_code, 2) << both.err;
+    EXPECT_NE(both.err.find("--max-error chooses --spheres itself"), std::string::npos) << both.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
 TEST(MaxErrorCli, RelightChoosesForItsLowestSun) {
     const auto dir = temp_dir("max_error_relight");
     const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop +
@@ -56,6 +89,15 @@ TEST(MaxErrorCli, TilesPrintOneLinePerGroupOfZooms) {
     EXPECT_TRUE(has_choice_line(r.out, "0.06")) << r.out;
     EXPECT_NE(r.out.find("zoom"), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("sun shadows exact"), std::string::npos) << "tiles shade their sun with the sweep\n" << r.out;
+}
+
+TEST(MaxErrorCli, TilesInBlocksChooseEachBlocksDirections) {
+    const auto dir = temp_dir("max_error_tile_blocks");
+    const Result r = run(ts_cmd("tiles " + quote(kDem) + kCrop + " --zoom 11 --sun-elevation 5 --block-texels 64 "
+                                "--block-halo 16 --max-error 0.07 --out " + quote((dir / "tiles").string())));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("--max-error: level 0 in "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(" blocks, directions from each block's roughness: "), std::string::npos) << r.out;
 }
 
 TEST(MaxErrorCli, BadBoundsAndConflictingFlagsAreRefusedBeforeAnyWork) {

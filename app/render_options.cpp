@@ -4,10 +4,12 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <string_view>
 
-#include "core/geo/crs.hpp"
 #include "app/mesh_max_error.hpp"
+#include "core/geo/crs.hpp"
 #include "core/quality/blocker_quality.hpp"
 #include "core/quality/radiance_quality.hpp"
 #include "core/quality/visibility_quality.hpp"
@@ -199,32 +201,30 @@ void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector
     quality::RadianceScene scene;
     scene.roughness = quality::mean_tan_slope(grid.view());
     for (const render::SunState& s : suns) scene.sun_elevations_deg.push_back(s.elevation_deg);
-    if (o.meshes.empty()) {
-        const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene);
-        o.renderer.directions = c.directions;
-        o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
-        std::printf("%s\n", c.reason.c_str());
-        std::fflush(stdout);
-        return;
-    }
-    // The terrain's setting and the spheres together: the cheapest setting that leaves the
-    // meshes a budget some sphere count meets, then the fewest spheres under it.
-    MeshErrorModel meshes(dem, grid.view(), o.meshes, suns, a.meshes);
-    const auto fits = [&meshes](double budget) {
-        return quality::choose_sphere_count(budget, [&meshes](int n) { return meshes.error(n); }).met;
+    // With meshes, the terrain's setting and the spheres together: the cheapest setting that
+    // leaves the meshes a budget some sphere count meets, then the fewest spheres under it.
+    std::optional<MeshErrorModel> meshes;
+    std::function<bool(double)> meshes_fit;
+    const auto count_for = [&meshes](double budget) {
+        return quality::choose_sphere_count(budget, [&meshes](int n) { return meshes->error(n); });
     };
-    const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene, fits);
+    if (!o.meshes.empty()) {
+        meshes.emplace(dem, grid.view(), o.meshes, suns, a.meshes);
+        meshes_fit = [&count_for](double budget) { return count_for(budget).met; };
+    }
+    const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene, meshes_fit);
     o.renderer.directions = c.directions;
     o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
-    const double budget = *a.max_error - c.predicted_error;
-    const quality::SphereCountChoice n =
-        quality::choose_sphere_count(budget, [&meshes](int k) { return meshes.error(k); });
-    for (std::size_t m = 0; m < o.meshes.size(); ++m) o.meshes[m].model_spheres = meshes.spheres(m, n.spheres).spheres;
-    std::printf("%s\n%s\n", c.reason.c_str(),
-                mesh_choice_line(n, meshes.terms(n.spheres), meshes.picture_area_m2(), o.meshes.size(), budget).c_str());
-    if (o.view != render::ViewKind::map)
-        std::printf("--max-error: the meshes' share is predicted for the map of the DEM; a perspective view frames "
-                    "the shadows differently\n");
+    std::printf("%s\n", c.reason.c_str());
+    if (meshes) {
+        const double budget = *a.max_error - c.predicted_error;
+        const quality::SphereCountChoice n = count_for(budget);
+        for (std::size_t m = 0; m < o.meshes.size(); ++m) o.meshes[m].model_spheres = meshes->spheres(m, n.spheres).spheres;
+        std::printf("%s\n", mesh_choice_line(n, meshes->terms(n.spheres), meshes->picture_area_m2(), o.meshes.size(), budget).c_str());
+        if (o.view != render::ViewKind::map)
+            std::printf("--max-error: the meshes' share is predicted for the map of the DEM; a perspective view frames "
+                        "the shadows differently\n");
+    }
     std::fflush(stdout);
 }
 

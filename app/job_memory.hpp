@@ -6,7 +6,9 @@
 // Per texel, measured as peak resident memory over the 1201x1201 SRTM3 tile N00E010 (the
 // figures in docs/user-guide.md, "Memory"): the visibility pass keeps ~4 bytes per azimuth plus
 // ~90 bytes (heights, metric grid, sweep scratch, svf), +110 with the SH products; a render or
-// relight keeps ~4 per azimuth plus ~270 (log-SH, transfer vectors, materials, frame buffers).
+// relight keeps ~4 per azimuth plus ~270 (log-SH, transfer vectors, materials, frame buffers),
+// and with meshes 64 more: the terrain's own log-SH, kept for the sky bound and the moves (the
+// bound's entries, ~52 bytes per texel a mesh changes, follow the footprints and are left out).
 // A margin of 25% covers allocator overhead and the writers' frames.
 //
 // TERRASHADE_MEMORY_LIMIT (e.g. 4GB, 512MB, or bytes) caps what terrashade plans to use, for
@@ -17,7 +19,7 @@
 namespace ts::app {
 
 std::uint64_t visibility_peak_bytes(std::uint64_t texels, int directions, bool sh_products);
-std::uint64_t render_peak_bytes(std::uint64_t texels, int directions);
+std::uint64_t render_peak_bytes(std::uint64_t texels, int directions, bool meshes = false);
 
 // Throws ts::InputError "<what> needs about X, Y available: <reduce>" when `bytes` exceed the
 // available memory (ts::available_memory(), capped by TERRASHADE_MEMORY_LIMIT).

@@ -178,7 +178,7 @@ void run_relight(const RelightArgs& a) {
     }
     const int directions = options.renderer.directions;
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
-                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions),
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions, !options.meshes.empty()),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     // The output directory only once the inputs are known good: a refused DEM leaves nothing.
     std::error_code ec;

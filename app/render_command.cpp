@@ -56,7 +56,7 @@ void run_render(const RenderCommandArgs& a) {
     apply_max_error(a.render, dem, {sun}, options);
     const int directions = options.renderer.directions;
     check_job_memory("render of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
-                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions),
+                     render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions, !options.meshes.empty()),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);

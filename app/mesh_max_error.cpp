@@ -9,6 +9,7 @@
 #include "core/geo/azimuth.hpp"
 #include "core/render/scene_blockers.hpp"
 #include "core/terrain/terrain_normals.hpp"
+#include "core/util/angles.hpp"
 #include "core/visibility/blocker_footprint.hpp"
 
 namespace ts::app {
@@ -23,7 +24,7 @@ constexpr std::size_t kMaxModelledSuns = 24;
 MeshErrorModel::MeshErrorModel(const dem::Dem& dem, const terrain::HeightGrid& grid,
                                const std::vector<render::SceneMesh>& meshes, const std::vector<render::SunState>& suns,
                                const MeshArgs& args)
-    : dem_(dem), grid_(grid), meshes_(meshes), args_(args) {
+    : grid_(grid), meshes_(meshes), args_(args) {
     const render::NormalField n = render::terrain_normals(grid);
     std::vector<std::size_t> valid;
     for (int r = 0; r < grid.height; ++r)
@@ -36,12 +37,17 @@ MeshErrorModel::MeshErrorModel(const dem::Dem& dem, const terrain::HeightGrid& g
     const std::size_t step = std::max<std::size_t>(1, (suns.size() + kMaxModelledSuns - 1) / kMaxModelledSuns);
     for (std::size_t i = 0; i < suns.size(); i += step) {
         quality::BlockerSun s;
-        s.direction = geo::enu_direction(geo::azimuth_cw_from_north_to_phi(suns[i].azimuth_deg),
-                                         suns[i].elevation_deg * 3.14159265358979323846 / 180.0);
+        s.direction =
+            geo::enu_direction(geo::azimuth_cw_from_north_to_phi(suns[i].azimuth_deg), radians(suns[i].elevation_deg));
         double sum = 0;
         for (std::size_t k : valid) sum += std::max(0.0, n.x[k] * s.direction.x + n.y[k] * s.direction.y + n.z[k] * s.direction.z);
         s.mean_lit_cosine = valid.empty() ? 0.0 : sum / double(valid.size());
         suns_.push_back(s);
+    }
+    for (const render::SceneMesh& mesh : meshes) {
+        anchors_.push_back(render::mesh_anchor(dem.georef, mesh.placement, mesh.name));
+        const double ground = render::ground_height(grid, anchors_.back());
+        grounds_.push_back(std::isnan(ground) ? 0.0 : ground);
     }
 }
 
@@ -57,10 +63,8 @@ quality::MeshErrorTerms MeshErrorModel::terms(int count) {
         d.count = count;
         const blockers::SphereDecomposition& sd =
             spheres_.emplace(std::pair{m, count}, blockers::decompose_cached(*mesh.triangles, d, cache)).first->second;
-        const glm::dvec2 anchor = render::mesh_anchor(dem_.georef, mesh.placement, mesh.name);
-        const double ground = render::ground_height(grid_, anchor);
-        const blockers::PlacedSpheres placed =
-            blockers::place_spheres(sd.spheres, mesh.placement, anchor, std::isnan(ground) ? 0.0 : ground, mesh.name);
+        const glm::dvec2 anchor = anchors_[m];
+        const blockers::PlacedSpheres placed = blockers::place_spheres(sd.spheres, mesh.placement, anchor, grounds_[m], mesh.name);
         const visibility::TexelRect rect = visibility::sky_footprint(grid_, placed, min_sine);
         const std::size_t row = std::size_t(std::clamp(int(std::lround(anchor.y)), 0, grid_.height - 1));
         const double texel_m2 = grid_.dx_m[row] * grid_.dy_m[row];

@@ -4,6 +4,8 @@
 // DEM and these suns, computed on demand and kept, so the terrain's setting and the sphere count
 // are chosen together (quality::choose_radiance's rest_fits).
 #include <map>
+
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
@@ -29,11 +31,12 @@ public:
     double picture_area_m2() const { return picture_area_m2_; }
 
 private:
-    const dem::Dem& dem_;
     const terrain::HeightGrid& grid_;
     const std::vector<render::SceneMesh>& meshes_;
     const MeshArgs& args_;
     std::vector<quality::BlockerSun> suns_;
+    std::vector<glm::dvec2> anchors_;  // per mesh: texel-centre coordinates of its placement
+    std::vector<double> grounds_;      // per mesh: the terrain's height there (0 over a void)
     double picture_area_m2_ = 0;
     std::map<int, quality::MeshErrorTerms> terms_;
     std::map<std::pair<std::size_t, int>, blockers::SphereDecomposition> spheres_;

@@ -23,7 +23,6 @@
 // terrain's prediction plus every mesh's.
 #include <functional>
 #include <span>
-#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>

@@ -25,6 +25,11 @@ std::vector<RadianceSetting> group_rows() {
     return out;
 }
 
+void check_max_error(double max_error) {
+    if (!(max_error > 0))
+        throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+}
+
 }  // namespace
 
 const std::vector<RadianceSetting>& radiance_settings() {
@@ -50,8 +55,7 @@ double predicted_radiance_error(const RadianceSetting& s, double roughness, doub
 
 RadianceChoice choose_radiance(double max_error, const RadianceScene& scene,
                                const std::function<bool(double budget)>& rest_fits) {
-    if (!(max_error > 0))
-        throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+    check_max_error(max_error);
     std::vector<double> suns = scene.sun_elevations_deg;
     if (suns.empty()) suns.push_back(lowest_fitted_elevation());
     // The worst sun of the scene for a setting, and its predicted error.
@@ -99,8 +103,7 @@ double relative_cost(const RadianceSetting& s) { return 60.0 + 2.2 * s.direction
 RegionChoice choose_radiance_per_region(double max_error, const std::vector<double>& roughness,
                                         const std::vector<double>& weight, double sun_elevation_deg,
                                         bool exact_sun_available) {
-    if (!(max_error > 0))
-        throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+    check_max_error(max_error);
     const auto& settings = radiance_settings();
     std::vector<int> usable;  // in order of cost
     for (int i = 0; i < int(settings.size()); ++i)

@@ -22,44 +22,78 @@
 
 // ---------------------------------------------------------------------------------------
 // The 16 real orthonormal SH basis functions at a unit direction d = (x, y, z).
-// y_lm = K_lm P_l^|m|(z) * {sqrt2 cos(m phi), 1, sqrt2 sin(|m| phi)} written as polynomials.
-TS_INLINE void ts_sh_eval(TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, y, 16)) {
+// y_lm = K_lm P_l^|m|(z) * {sqrt2 cos(m phi), 1, sqrt2 sin(|m| phi)} written as polynomials:
+// y_i = norm_i * poly_i(d), with the constants (ts_sh_norms) apart from the polynomials
+// (ts_sh_poly) so that a sum over many directions can scale once at its end.
+TS_INLINE void ts_sh_norms(TS_OUT_ARRAY(TS_REAL, k, 16)) {
+    k[0] = 0.28209479177387814;
+    k[1] = 0.4886025119029199;
+    k[2] = 0.4886025119029199;
+    k[3] = 0.4886025119029199;
+    k[4] = 1.0925484305920792;
+    k[5] = 1.0925484305920792;
+    k[6] = 0.31539156525252005;
+    k[7] = 1.0925484305920792;
+    k[8] = 0.5462742152960396;
+    k[9] = 0.5900435899266435;
+    k[10] = 2.890611442640554;
+    k[11] = 0.4570457994644658;
+    k[12] = 0.3731763325901154;
+    k[13] = 0.4570457994644658;
+    k[14] = 1.445305721320277;
+    k[15] = 0.5900435899266435;
+}
+
+TS_INLINE void ts_sh_poly(TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, p, 16)) {
     TS_REAL x = d.x;
     TS_REAL yy = d.y;
     TS_REAL z = d.z;
-    y[0] = 0.28209479177387814;
-    y[1] = 0.4886025119029199 * yy;
-    y[2] = 0.4886025119029199 * z;
-    y[3] = 0.4886025119029199 * x;
-    y[4] = 1.0925484305920792 * x * yy;
-    y[5] = 1.0925484305920792 * yy * z;
-    y[6] = 0.31539156525252005 * (3.0 * z * z - 1.0);
-    y[7] = 1.0925484305920792 * x * z;
-    y[8] = 0.5462742152960396 * (x * x - yy * yy);
-    y[9] = 0.5900435899266435 * yy * (3.0 * x * x - yy * yy);
-    y[10] = 2.890611442640554 * x * yy * z;
-    y[11] = 0.4570457994644658 * yy * (5.0 * z * z - 1.0);
-    y[12] = 0.3731763325901154 * z * (5.0 * z * z - 3.0);
-    y[13] = 0.4570457994644658 * x * (5.0 * z * z - 1.0);
-    y[14] = 1.445305721320277 * z * (x * x - yy * yy);
-    y[15] = 0.5900435899266435 * x * (x * x - 3.0 * yy * yy);
+    p[0] = 1.0;
+    p[1] = yy;
+    p[2] = z;
+    p[3] = x;
+    p[4] = x * yy;
+    p[5] = yy * z;
+    p[6] = 3.0 * z * z - 1.0;
+    p[7] = x * z;
+    p[8] = x * x - yy * yy;
+    p[9] = yy * (3.0 * x * x - yy * yy);
+    p[10] = x * yy * z;
+    p[11] = yy * (5.0 * z * z - 1.0);
+    p[12] = z * (5.0 * z * z - 3.0);
+    p[13] = x * (5.0 * z * z - 1.0);
+    p[14] = z * (x * x - yy * yy);
+    p[15] = x * (x * x - 3.0 * yy * yy);
+}
+
+TS_INLINE void ts_sh_eval(TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, y, 16)) {
+    TS_REAL k[16];
+    ts_sh_norms(k);
+    ts_sh_poly(d, y);
+    for (int i = 0; i < 16; ++i) y[i] = k[i] * y[i];
 }
 
 // ---------------------------------------------------------------------------------------
 // ZH rotation [Sloan, Luna, Snyder 2005]: a function symmetric about the z axis with ZH
 // coefficients zh[l], turned so that its axis points along the unit direction d:
 //   f_lm = sqrt(4 pi / (2l+1)) * zh[l] * y_lm(d).
+// The factors sqrt(4 pi / (2l+1)), l = 0..3.
+TS_INLINE void ts_zh_rotate_norms(TS_OUT_ARRAY(TS_REAL, s, 4)) {
+    s[0] = 3.5449077018110318;
+    s[1] = 2.046653415892977;
+    s[2] = 1.5853309190424043;
+    s[3] = 1.3398491713813576;
+}
+
 TS_INLINE void ts_zh_rotate(TS_IN_ARRAY(TS_REAL, zh, 4), TS_VEC3 d, TS_OUT_ARRAY(TS_REAL, f, 16)) {
     TS_REAL y[16];
     ts_sh_eval(d, y);
-    TS_REAL s0 = 3.5449077018110318 * zh[0];
-    TS_REAL s1 = 2.046653415892977 * zh[1];
-    TS_REAL s2 = 1.5853309190424043 * zh[2];
-    TS_REAL s3 = 1.3398491713813576 * zh[3];
-    f[0] = s0 * y[0];
-    for (int i = 1; i < 4; ++i) f[i] = s1 * y[i];
-    for (int i = 4; i < 9; ++i) f[i] = s2 * y[i];
-    for (int i = 9; i < 16; ++i) f[i] = s3 * y[i];
+    TS_REAL s[4];
+    ts_zh_rotate_norms(s);
+    f[0] = s[0] * zh[0] * y[0];
+    for (int i = 1; i < 4; ++i) f[i] = s[1] * zh[1] * y[i];
+    for (int i = 4; i < 9; ++i) f[i] = s[2] * zh[2] * y[i];
+    for (int i = 9; i < 16; ++i) f[i] = s[3] * zh[3] * y[i];
 }
 
 // ---------------------------------------------------------------------------------------
@@ -154,12 +188,34 @@ TS_INLINE TS_REAL ts_one_minus_cos(TS_REAL cb, TS_REAL sb) {
     return cb > 0.0 ? sb * sb / (1.0 + cb) : 1.0 - cb;
 }
 
-TS_INLINE void ts_cap_log_zh(TS_REAL cb, TS_REAL sb, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+// Those coefficients with 1 - cos tb given (ts_cap_log_zh_omc; ts_sphere_cap_rd has it without
+// a second division), as c_l = log_eps * norm_l * shape_l: the constants (ts_cap_zh_norms) apart from the shape of the
+// cap (ts_cap_zh_shape), so that a sum over many caps can scale once at its end.
+TS_INLINE void ts_cap_zh_norms(TS_OUT_ARRAY(TS_REAL, k, 4)) {
+    k[0] = 1.7724538509055159;
+    k[1] = 1.5349900619197328;
+    k[2] = 1.9816636488030055;
+    k[3] = 0.29309200623967196;
+}
+
+TS_INLINE void ts_cap_zh_shape(TS_REAL cb, TS_REAL sb, TS_REAL omc, TS_OUT_ARRAY(TS_REAL, c, 4)) {
     TS_REAL s2 = sb * sb;
-    c[0] = log_eps * 1.7724538509055159 * ts_one_minus_cos(cb, sb);
-    c[1] = log_eps * 1.5349900619197328 * s2;
-    c[2] = log_eps * 1.9816636488030055 * cb * s2;
-    c[3] = log_eps * 0.29309200623967196 * (3.0 + 5.0 * (2.0 * cb * cb - 1.0)) * s2;
+    c[0] = omc;
+    c[1] = s2;
+    c[2] = cb * s2;
+    c[3] = (3.0 + 5.0 * (2.0 * cb * cb - 1.0)) * s2;
+}
+
+TS_INLINE void ts_cap_log_zh_omc(TS_REAL cb, TS_REAL sb, TS_REAL omc, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    TS_REAL k[4];
+    ts_cap_zh_norms(k);
+    ts_cap_zh_shape(cb, sb, omc, c);
+    for (int l = 0; l < 4; ++l) c[l] = log_eps * k[l] * c[l];
+}
+
+// From the cosine and sine alone.
+TS_INLINE void ts_cap_log_zh(TS_REAL cb, TS_REAL sb, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
+    ts_cap_log_zh_omc(cb, sb, ts_one_minus_cos(cb, sb), log_eps, c);
 }
 
 // The same from the half-angle itself.
@@ -167,18 +223,32 @@ TS_INLINE void ts_sphere_log_zh(TS_REAL theta_b, TS_REAL log_eps, TS_OUT_ARRAY(T
     ts_cap_log_zh(cos(theta_b), sin(theta_b), log_eps, c);
 }
 
+// The cap a sphere of radius r subtends from a receiver at distance d from its centre, with one
+// division: cap = [1/d, cos tb, sin tb, 1 - cos tb]. With t = sqrt((d - r)(d + r)) (d - r is
+// exact in floating point near grazing, where the textbook sqrt(1 - (r/d)^2) would amplify the
+// rounding of r/d by tan tb) and k = 1/(d (d + t)):
+//   1/d = (d + t) k,  cos tb = t/d,  sin tb = r/d,  1 - cos tb = (d - t)/d = r^2 k,
+// the last without the cancellation of 1 - cos for small caps. Inside or on the sphere (d <= r)
+// the cap is the whole sphere: [0, -1, 0, 2]. Selects, no branch, so that CPU kernels vectorise
+// it across spheres.
+TS_INLINE void ts_sphere_cap_rd(TS_REAL r, TS_REAL d, TS_OUT_ARRAY(TS_REAL, cap, 4)) {
+    bool inside = d <= r;
+    TS_REAL t = sqrt(inside ? 0.0 : (d - r) * (d + r));
+    TS_REAL k = inside ? 0.0 : 1.0 / (d * (d + t));
+    cap[0] = (d + t) * k;
+    cap[1] = inside ? -1.0 : t * cap[0];
+    cap[2] = r * cap[0];
+    cap[3] = inside ? 2.0 : r * r * k;
+}
+
 // The same straight from the sphere's radius r and the distance d to its centre, without an
-// inverse sine: sin tb = r/d, cos tb = sqrt(1 - (r/d)^2). GPU asin is loose (the Vulkan spec
+// inverse sine (ts_sphere_cap_rd). GPU asin is loose (the Vulkan spec
 // allows thousands of ulp; llvmpipe is 4e-4 rad off near 1), so shaders use this form.
 // A receiver inside or on the sphere (d <= r) sees the whole sphere blocked (tb = pi).
 TS_INLINE void ts_sphere_log_zh_rd(TS_REAL r, TS_REAL d, TS_REAL log_eps, TS_OUT_ARRAY(TS_REAL, c, 4)) {
-    if (d <= r) {
-        ts_cap_log_zh(-1.0, 0.0, log_eps, c);
-        return;
-    }
-    // cos tb = sqrt((d - r)(d + r)) / d: d - r is exact in floating point near grazing, where
-    // the textbook sqrt(1 - (r/d)^2) would amplify the rounding of r/d by tan tb.
-    ts_cap_log_zh(sqrt((d - r) * (d + r)) / d, r / d, log_eps, c);
+    TS_REAL cap[4];
+    ts_sphere_cap_rd(r, d, cap);
+    ts_cap_log_zh_omc(cap[1], cap[2], cap[3], log_eps, c);
 }
 
 // Log-SH vector of a sphere blocker: log-ZH of its cap rotated to the unit direction dir from

@@ -55,7 +55,9 @@ quality::MeshErrorTerms MeshErrorModel::terms(int count) {
     if (auto it = terms_.find(count); it != terms_.end()) return it->second;
     const std::filesystem::path cache =
         args_.cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(args_.cache_dir);
-    const double min_sine = blockers::min_cap_sine(blocker_options(args_).min_solid_angle_sr);
+    const blockers::SphereBlockerOptions options = blocker_options(args_);
+    const double min_sine = blockers::min_cap_sine(options.min_solid_angle_sr);
+    const bool sun_by_triangles = options.sun_caster == blockers::SphereBlockerOptions::SunCaster::triangles;
     quality::MeshErrorTerms sum;
     for (std::size_t m = 0; m < meshes_.size(); ++m) {
         const render::SceneMesh& mesh = meshes_[m];
@@ -69,7 +71,8 @@ quality::MeshErrorTerms MeshErrorModel::terms(int count) {
         const std::size_t row = std::size_t(std::clamp(int(std::lround(anchor.y)), 0, grid_.height - 1));
         const double texel_m2 = grid_.dx_m[row] * grid_.dy_m[row];
         const quality::MeshErrorTerms e = quality::predicted_mesh_error(
-            *mesh.triangles, sd.spheres, mesh.placement, suns_, {picture_area_m2_, texel_m2}, double(rect.texels()) * texel_m2);
+            *mesh.triangles, sd.spheres, mesh.placement, suns_, {picture_area_m2_, texel_m2}, double(rect.texels()) * texel_m2,
+            sun_by_triangles);
         sum.sun += e.sun, sum.sky += e.sky;
     }
     terms_[count] = sum;
@@ -86,11 +89,11 @@ std::string mesh_choice_line(const quality::SphereCountChoice& c, const quality:
                              double picture_area_m2, std::size_t meshes, double budget) {
     char line[512];
     std::snprintf(line, sizeof line,
-                  "--max-error: %d spheres for %s (predicted %.3g of relative radiance error: sun outline %.3g + sky "
+                  "--max-error: %d spheres for %s (predicted %.3g of relative radiance error: sun shadow %.3g + sky "
                   "%.3g over a %.3g km2 picture, against a budget of %.3g left by the terrain%s)",
                   c.spheres, meshes == 1 ? "the mesh" : "each mesh", c.predicted_error, t.sun, t.sky,
                   picture_area_m2 * 1e-6, budget,
-                  c.met ? "; the fewest spheres under it" : "; no count is predicted under it: the most");
+                  c.met ? "; the fewest spheres under it" : "; no count is predicted under it: the count of the least");
     return line;
 }
 

@@ -78,6 +78,15 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
                    "sphere passes it)")
         ->capture_default_str()
         ->check(CLI::IsMember({"hierarchy", "none"}));
+    cmd.add_option("--mesh-sun-shadow", a.mesh_sun_shadow,
+                   "What casts a mesh's sun shadow on the terrain: triangles (rays through its own triangles over "
+                   "the sun's disc, where its spheres shadow) or spheres (their analytic cover of the disc)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"triangles", "spheres"}));
+    cmd.add_option("--mesh-sun-rays", a.mesh_sun_rays,
+                   "Rays per texel over the sun's disc with --mesh-sun-shadow triangles (the penumbra's steps)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
     cmd.add_flag("--no-mesh-terrain-shadow", a.no_mesh_terrain_shadow,
                  "Perspective views: light the drawn meshes under the open sky (default: the terrain's horizons from "
                  "each vertex darken them and hide the sun)");
@@ -136,6 +145,9 @@ blockers::SphereBlockerOptions blocker_options(const MeshArgs& a) {
     o.attenuation.cull_lower_hemisphere = !a.no_hemisphere_cull;
     o.sky_culling = a.sphere_culling == "hierarchy" ? blockers::SphereBlockerOptions::SkyCulling::hierarchy
                                                     : blockers::SphereBlockerOptions::SkyCulling::none;
+    o.sun_caster = a.mesh_sun_shadow == "spheres" ? blockers::SphereBlockerOptions::SunCaster::spheres
+                                                  : blockers::SphereBlockerOptions::SunCaster::triangles;
+    o.sun_rays = a.mesh_sun_rays;
     return o;
 }
 

@@ -25,6 +25,8 @@ struct MeshArgs {
     bool no_ratio_attenuation = false;
     bool no_hemisphere_cull = false;
     std::string sphere_culling = "none";  // SphereBlockerOptions::sky_culling
+    std::string mesh_sun_shadow = "triangles";  // SphereBlockerOptions::sun_caster
+    int mesh_sun_rays = blockers::SphereBlockerOptions{}.sun_rays;
     bool no_mesh_terrain_shadow = false;
     bool no_mesh_self_shadow = false;
     std::string cache_dir;

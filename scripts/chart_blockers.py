@@ -5,7 +5,8 @@ Input: the CSV of `terrashade bench blockers --csv FILE` (scripts/bench_blockers
 Output: OUT_DIR/blockers_accuracy.png, three panels against the sphere count:
   left:   error of the sky-visibility change the mesh makes (spheres - triangles): RMSE over the
           sky footprint and over the texels either changes by > 0.01, and the largest;
-  middle: the sun shadow's IoU with the triangles' shadow, and the RMSE of the visible disc;
+  middle: the sun shadow's IoU with the triangles' shadow, and the RMSE of the visible disc,
+          cast by the spheres and (the default) by the triangles where the spheres shadow;
   right:  time of the sky accumulation and of one frame's sun shadow.
 Usage: chart_blockers.py CSV OUT_DIR
 """
@@ -34,13 +35,16 @@ def main():
     a1.set_yscale("log")
     a1.set_ylabel("sky visibility change: spheres - triangles")
     a1.set_title("Sky (cosine-weighted, terrain horizons + mesh)", fontsize=9)
-    a2.plot(n, col("sun_iou"), "o-", label="shadow IoU (less than half the disc)")
-    a2.plot(n, col("sun_rmse"), "s--", label="RMSE of the visible disc")
+    a2.plot(n, col("sun_iou"), "o-", label="IoU, cast by the spheres")
+    a2.plot(n, col("sun_rmse"), "s--", label="RMSE of the visible disc, spheres")
+    a2.plot(n, col("triangles_sun_iou"), "o-", label="IoU, cast by the triangles (default)")
+    a2.plot(n, col("triangles_sun_rmse"), "s--", label="RMSE of the visible disc, triangles")
     a2.axhline(0.9, color="grey", lw=0.8, ls=":", label="goal IoU 0.9 at 64")
-    a2.set_ylim(0, 1)
-    a2.set_title("Sun shadow on the terrain", fontsize=9)
+    a2.set_ylim(0, 1.05)
+    a2.set_title("Sun shadow on the terrain (shadow: less than half the disc)", fontsize=9)
     a3.plot(n, [1e3 * x for x in col("sky_s")], "o-", label="sky accumulation (footprint)")
-    a3.plot(n, [1e3 * x for x in col("sun_s")], "s-", label="sun shadow, one frame")
+    a3.plot(n, [1e3 * x for x in col("sun_s")], "s-", label="sun shadow by the spheres, one frame")
+    a3.plot(n, [1e3 * x for x in col("triangles_sun_s")], "^-", label="sun shadow by the triangles, one frame")
     a3.set_yscale("log")
     a3.set_ylabel("ms, 2 threads")
     a3.set_title("Time", fontsize=9)
@@ -50,7 +54,7 @@ def main():
         a.set_xticklabels([str(x) for x in n])
         a.set_xlabel("spheres")
         a.grid(alpha=0.3)
-        a.legend(fontsize=7)
+        a.legend(fontsize=7, loc="center right" if a is a2 else "best")
     fig.suptitle("Cessna 172 (x200, 600 m above the ground) over the Anatolia crop: spheres vs its 2,535 triangles",
                  fontsize=10)
     fig.tight_layout()

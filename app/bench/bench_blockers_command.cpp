@@ -45,8 +45,9 @@ struct Row {
     long long shaded_texels = 0;  // where ours or the triangles change the sky by more than 0.01
     double shaded_rmse = 0, ref_dark_max = 0;
     double sky_s = 0;
-    double sun_iou = 0, sun_rmse = 0, sun_s = 0;
+    double sun_iou = 0, sun_rmse = 0, sun_s = 0;  // cast by the spheres (--mesh-sun-shadow spheres)
     long long sun_ref_texels = 0, sun_ours_texels = 0;
+    double tri_iou = 0, tri_rmse = 0, tri_s = 0;  // cast by the triangles where the spheres shadow (the default)
     // The same sky figures without the renderer's bound (render::blocked_sky_term), and the
     // largest brightening the mesh makes there (the bound makes it 0).
     double raw_sky_rmse = 0, raw_shaded_rmse = 0, raw_sky_max = 0, raw_brightening = 0;
@@ -62,7 +63,8 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ostringstream t;
     t << "spheres,excess_volume_ratio,decompose_s,sky_texels,sky_rmse,sky_max_error,sky_bias,ref_sky_shadow_mean,"
          "shaded_texels,shaded_rmse,ref_sky_shadow_max,sphere_texel_pairs,sky_s,sun_iou,sun_rmse,sun_ref_texels,sun_ours_texels,sun_s,"
-         "unbounded_sky_rmse,unbounded_shaded_rmse,unbounded_sky_max_error,unbounded_max_brightening\n";
+         "unbounded_sky_rmse,unbounded_shaded_rmse,unbounded_sky_max_error,unbounded_max_brightening,"
+         "triangles_sun_iou,triangles_sun_rmse,triangles_sun_s\n";
     for (const Row& r : rows)
         t << r.count << ',' << csv_number(r.excess) << ',' << csv_number(r.decompose_s) << ',' << r.sky_texels << ','
           << csv_number(r.sky_rmse) << ',' << csv_number(r.sky_max) << ',' << csv_number(r.sky_bias) << ','
@@ -71,7 +73,7 @@ void write_csv(const std::string& path, const std::vector<Row>& rows) {
           << csv_number(r.sun_iou) << ',' << csv_number(r.sun_rmse) << ',' << r.sun_ref_texels << ','
           << r.sun_ours_texels << ',' << csv_number(r.sun_s) << ',' << csv_number(r.raw_sky_rmse) << ','
           << csv_number(r.raw_shaded_rmse) << ',' << csv_number(r.raw_sky_max) << ',' << csv_number(r.raw_brightening)
-          << '\n';
+          << ',' << csv_number(r.tri_iou) << ',' << csv_number(r.tri_rmse) << ',' << csv_number(r.tri_s) << '\n';
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out << t.str();
@@ -141,6 +143,7 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         sets.push_back(std::move(s));
     }
     const visibility::PlacedTriangles tris = visibility::place_triangles(mesh, place, anchor, ground);
+    const std::shared_ptr<const blockers::TriangleBvh> model_triangles = blockers::model_triangle_bvh(mesh);
     visibility::ReferenceOptions ro;
     ro.sky_strata = o.sky_strata, ro.sun_samples = o.sun_samples, ro.threads = o.threads;
     const Stopwatch tr;
@@ -158,9 +161,10 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
     const sh::ExpMethod exp = sh::ExpMethod::scaling_squaring;  // the renderer's default
     const int sky_w = sky_rect.col1 - sky_rect.col0, sun_w = sun_rect.col1 - sun_rect.col0;
     std::vector<Row> rows;
-    std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s | %9s %9s %9s %9s\n", "spheres", "excess",
-                "sky_rmse", "sky_max", "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms", "sun_iou",
-                "sun_rmse", "sun_ms", "ub_rmse", "ub_shade", "ub_max", "ub_bright");
+    std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s %8s %8s %8s | %9s %9s %9s %9s\n", "spheres",
+                "excess", "sky_rmse", "sky_max", "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms",
+                "sun_iou", "sun_rmse", "sun_ms", "tri_iou", "tri_rmse", "tri_ms", "ub_rmse", "ub_shade", "ub_max",
+                "ub_bright");
     for (const Set& s : sets) {
         Row row;
         row.count = int(s.d.spheres.size()), row.decompose_s = s.d.seconds, row.excess = s.d.excess_volume_ratio;
@@ -198,42 +202,102 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         row.raw_shaded_rmse = raw_shaded ? std::sqrt(raw_shaded_se / double(raw_shaded)) : 0.0;
         row.sky_rmse = n ? std::sqrt(se / n) : 0.0, row.sky_bias = n ? bias / n : 0.0, row.ref_shadow_mean = n ? dark / n : 0.0;
 
-        std::vector<float> vis(texels, 1.0f);
-        const visibility::BlockerSunShadow shadow(grid, s.b, curvature, o.threads);
-        const Stopwatch t2;
-        shadow.apply(o.sun_az, o.sun_el, vis);
-        row.sun_s = t2.seconds();
-        long long both = 0, either = 0;
-        double sse = 0;
-        long long m = 0;
-        for (int r = sun_rect.row0; r < sun_rect.row1; ++r)
-            for (int c = sun_rect.col0; c < sun_rect.col1; ++c) {
-                const float ref = sun_ref[std::size_t(r - sun_rect.row0) * sun_w + std::size_t(c - sun_rect.col0)];
-                const float ours = vis[std::size_t(r) * grid.width + c];
-                if (std::isnan(ref)) continue;
-                const bool a = ours < 0.5f, b = ref < 0.5f;
-                both += a && b, either += a || b, row.sun_ref_texels += b, row.sun_ours_texels += a;
-                sse += double(ours - ref) * double(ours - ref), ++m;
-            }
-        row.sun_iou = either ? double(both) / double(either) : NAN;
-        row.sun_rmse = m ? std::sqrt(sse / m) : 0.0;
-        std::printf("%7d %7.2f %9.4f %9.4f %+9.4f %9.4f %7lld %9.4f %11lld %8.1f %8.3f %8.4f %8.2f | %9.4f %9.4f %9.4f "
-                    "%9.4f\n",
+        // The sun shadow cast by the spheres, then by the triangles where the spheres shadow.
+        struct SunFigures {
+            double iou = 0, rmse = 0, seconds = 0;
+            long long ref_texels = 0, ours_texels = 0;
+        };
+        auto sun_figures = [&](const blockers::SphereBlockers& b) {
+            SunFigures f;
+            std::vector<float> vis(texels, 1.0f);
+            const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);
+            const Stopwatch t2;
+            shadow.apply(o.sun_az, o.sun_el, vis);
+            f.seconds = t2.seconds();
+            long long both = 0, either = 0, m = 0;
+            double sse = 0;
+            for (int r = sun_rect.row0; r < sun_rect.row1; ++r)
+                for (int c = sun_rect.col0; c < sun_rect.col1; ++c) {
+                    const float ref = sun_ref[std::size_t(r - sun_rect.row0) * sun_w + std::size_t(c - sun_rect.col0)];
+                    const float ours = vis[std::size_t(r) * grid.width + c];
+                    if (std::isnan(ref)) continue;
+                    const bool a = ours < 0.5f, bb = ref < 0.5f;
+                    both += a && bb, either += a || bb, f.ref_texels += bb, f.ours_texels += a;
+                    sse += double(ours - ref) * double(ours - ref), ++m;
+                }
+            f.iou = either ? double(both) / double(either) : NAN;
+            f.rmse = m ? std::sqrt(sse / m) : 0.0;
+            return f;
+        };
+        blockers::SphereBlockers by_spheres = s.b, by_triangles = s.b;
+        by_spheres.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::spheres;
+        by_triangles.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::triangles;
+        by_triangles.meshes[0].model_triangles = model_triangles;
+        const SunFigures fs = sun_figures(by_spheres), ft = sun_figures(by_triangles);
+        row.sun_iou = fs.iou, row.sun_rmse = fs.rmse, row.sun_s = fs.seconds;
+        row.sun_ref_texels = fs.ref_texels, row.sun_ours_texels = fs.ours_texels;
+        row.tri_iou = ft.iou, row.tri_rmse = ft.rmse, row.tri_s = ft.seconds;
+        std::printf("%7d %7.2f %9.4f %9.4f %+9.4f %9.4f %7lld %9.4f %11lld %8.1f %8.3f %8.4f %8.2f %8.3f %8.4f %8.2f | "
+                    "%9.4f %9.4f %9.4f %9.4f\n",
                     row.count, row.excess, row.sky_rmse, row.sky_max, row.sky_bias, row.ref_shadow_mean,
                     row.shaded_texels, row.shaded_rmse, row.pairs, 1e3 * row.sky_s, row.sun_iou, row.sun_rmse,
-                    1e3 * row.sun_s, row.raw_sky_rmse, row.raw_shaded_rmse, row.raw_sky_max, row.raw_brightening);
+                    1e3 * row.sun_s, row.tri_iou, row.tri_rmse, 1e3 * row.tri_s, row.raw_sky_rmse, row.raw_shaded_rmse, row.raw_sky_max, row.raw_brightening);
         std::fflush(stdout);
         rows.push_back(row);
     }
     std::printf("sky: error of the sky-visibility change the mesh makes (ours - triangles) over the %lld texels of the sky "
                 "footprint; ref_dark: the triangles' mean darkening there (largest %.3f); shaded, shade_rms: the texels "
                 "either changes by more than 0.01 and the RMSE over them. sun: shadow = less than half the disc, %lld "
-                "texels of the triangles'. ours is bounded by the terrain's own sky per texel as the renderer shades it "
+                "texels of the triangles'; sun_*: cast by the spheres (--mesh-sun-shadow spheres), tri_*: by the "
+                "triangles where the spheres shadow, %d rays over the disc (the default). ours is bounded by the terrain's own sky per texel as the renderer shades it "
                 "(render::blocked_sky_term); ub_*: the same without the bound, ub_bright the largest brightening the "
                 "mesh makes\n",
                 rows.empty() ? 0 : rows[0].sky_texels, rows.empty() ? 0.0 : rows[0].ref_dark_max,
-                rows.empty() ? 0 : rows[0].sun_ref_texels);
+                rows.empty() ? 0 : rows[0].sun_ref_texels, blockers::SphereBlockerOptions{}.sun_rays);
     if (!o.csv.empty()) write_csv(o.csv, rows);
+
+    // The sun caster's knobs at 64 spheres (or the count nearest it): the spheres, and the
+    // triangles at 4 ... 64 rays over the disc, against a reference of 4 x the most rays.
+    if (!sets.empty()) {
+        const Set* at64 = &sets[0];
+        for (const Set& s : sets)
+            if (std::abs(int(s.d.spheres.size()) - 64) < std::abs(int(at64->d.spheres.size()) - 64)) at64 = &s;
+        visibility::ReferenceOptions fine = ro;
+        fine.sun_samples = 256;
+        const std::vector<float> sun_fine = visibility::reference_sun(
+            grid, tris, sun_rect, sun, blockers::SphereBlockerOptions{}.sun_radius_rad, curvature, fine);
+        std::printf("sun caster at %zu spheres against %d rays over the disc through the triangles (%lld texels):\n",
+                    at64->d.spheres.size(), fine.sun_samples, sun_rect.texels());
+        auto measure = [&](blockers::SphereBlockerOptions::SunCaster caster, int rays) {
+            blockers::SphereBlockers b = at64->b;
+            b.options.sun_caster = caster, b.options.sun_rays = rays;
+            b.meshes[0].model_triangles = model_triangles;
+            std::vector<float> vis(texels, 1.0f);
+            const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);
+            const Stopwatch t;
+            shadow.apply(o.sun_az, o.sun_el, vis);
+            const double seconds = t.seconds();
+            long long both = 0, either = 0, m = 0;
+            double se = 0;
+            for (int r = sun_rect.row0; r < sun_rect.row1; ++r)
+                for (int c = sun_rect.col0; c < sun_rect.col1; ++c) {
+                    const float ref = sun_fine[std::size_t(r - sun_rect.row0) * sun_w + std::size_t(c - sun_rect.col0)];
+                    const float ours = vis[std::size_t(r) * grid.width + c];
+                    if (std::isnan(ref)) continue;
+                    both += ours < 0.5f && ref < 0.5f, either += ours < 0.5f || ref < 0.5f;
+                    se += double(ours - ref) * double(ours - ref), ++m;
+                }
+            const bool spheres = caster == blockers::SphereBlockerOptions::SunCaster::spheres;
+            const bool is_default = !spheres && rays == blockers::SphereBlockerOptions{}.sun_rays;
+            char what[64];
+            std::snprintf(what, sizeof what, spheres ? "spheres" : "triangles %d rays", rays);
+            std::printf("sun caster %-20s ms %8.3f rmse %.5f iou %.4f%s\n", what, 1e3 * seconds,
+                        m ? std::sqrt(se / double(m)) : 0.0, either ? double(both) / double(either) : 1.0,
+                        is_default ? "  (default)" : "");
+        };
+        measure(blockers::SphereBlockerOptions::SunCaster::spheres, 0);
+        for (int rays : {4, 8, 16, 32, 64}) measure(blockers::SphereBlockerOptions::SunCaster::triangles, rays);
+    }
     if (o.motion_frames > 0) run_blocker_motion_bench(o);
 }
 

@@ -91,6 +91,7 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
     blockers::DecompositionOptions d;
     d.count = o.motion_spheres, d.threads = o.threads;
     const blockers::SphereDecomposition dec = blockers::decompose_into_spheres(mesh, d);
+    const std::shared_ptr<const blockers::TriangleBvh> triangles = blockers::model_triangle_bvh(mesh);
     const double curvature = visibility::curvature_factor(true);
     const std::size_t texels = std::size_t(grid.width) * grid.height;
     // The terrain's log-SH stands in as zeros: the bench measures the blockers' share.
@@ -110,10 +111,11 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
         blockers::SphereBlockers b;
         const glm::dvec2 anchor = render::mesh_anchor(gr, p, o.mesh);
         b.meshes.push_back(blockers::place_spheres(dec.spheres, p, anchor, render::ground_height(grid, anchor), o.mesh));
+        b.meshes[0].model_triangles = triangles;  // the sun shadow cast by the triangles, the default
         return b;
     };
     struct Totals {
-        double sky_s = 0, sun_s = 0;
+        double sky_s = 0, sun_s = 0, sun_spheres_s = 0;
         long long pairs = 0, texels = 0;
     };
     Totals tree, flat;
@@ -146,6 +148,13 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
             std::fill(sun.begin(), sun.end(), 1.0f);
             shadow.apply(o.sun_az, o.sun_el, sun);
             tot.sun_s += ts.seconds();
+            blockers::SphereBlockers by_spheres = b;
+            by_spheres.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::spheres;
+            const visibility::BlockerSunShadow sphere_shadow(grid, by_spheres, curvature, o.threads);
+            const Stopwatch tss;
+            std::fill(sun.begin(), sun.end(), 1.0f);
+            sphere_shadow.apply(o.sun_az, o.sun_el, sun);
+            tot.sun_spheres_s += tss.seconds();
             old_rect = rect;
         }
         last_log_sh[pass] = std::move(log_sh);
@@ -165,17 +174,19 @@ void run_blocker_motion_bench(const BenchBlockersOptions& o) {
         }
     const double n = std::max(1, o.motion_frames);
     auto line = [&](const char* what, const Totals& t) {
-        std::printf("%-26s %10.1f %10.2f %14.0f %14.3g\n", what, 1e3 * t.sky_s / n, 1e3 * t.sun_s / n, t.pairs / n,
-                    t.sky_s > 0 ? t.pairs / t.sky_s : 0.0);
+        std::printf("%-26s %10.1f %10.2f %14.0f %14.3g %14.2f\n", what, 1e3 * t.sky_s / n, 1e3 * t.sun_s / n, t.pairs / n,
+                    t.sky_s > 0 ? t.pairs / t.sky_s : 0.0, 1e3 * t.sun_spheres_s / n);
     };
-    std::printf("%-26s %10s %10s %14s %14s\n", "per frame", "sky_ms", "sun_ms", "pairs", "pairs_per_s");
+    std::printf("%-26s %10s %10s %14s %14s %14s\n", "per frame", "sky_ms", "sun_ms", "pairs", "pairs_per_s",
+                "sun_spheres_ms");
     line("hierarchy (threshold+cull)", tree);
     line("flat (every sphere)", flat);
 #ifdef TERRASHADE_HAS_GPU
     run_flat_on_vulkan(grid, place_at(o.motion_frames - 1), curvature, o.threads, last_log_sh[1]);
 #endif
-    std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f\n", tree.texels / n,
-                flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0);
+    std::printf("footprint %.0f texels a frame; hierarchy / flat sky time: %.3f; sun_ms: cast by the triangles (%d rays "
+                "where the spheres shadow, the default), sun_spheres_ms: by the spheres\n", tree.texels / n,
+                flat.sky_s > 0 ? tree.sky_s / flat.sky_s : 0.0, blockers::SphereBlockerOptions{}.sun_rays);
     std::printf("culling error: sky visibility rms %.3g, max %.3g over %lld texels (hierarchy against flat, last "
                 "frame)\n", compared ? std::sqrt(se / double(compared)) : 0.0, worst, compared);
 }

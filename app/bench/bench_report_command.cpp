@@ -326,6 +326,37 @@ Study culling_study(const std::string& dem, const std::string& mesh, Size size) 
     return s;
 }
 
+// bench blockers at 64 spheres: what casts a mesh's sun shadow (--mesh-sun-shadow) and how many
+// rays the triangles take (--mesh-sun-rays), against 256 rays through the triangles.
+Study sun_caster_study(const std::string& dem, const std::string& mesh) {
+    Study s;
+    s.name = "mesh sun shadow on " + dem_name(dem);
+    s.expected_s = 10;
+    s.writes_csv = false;
+    s.args = "blockers --dem " + shell_quote(dem) + " --mesh " + shell_quote(mesh) +
+             " --counts 64 --sky-strata 8 --motion-frames 0";
+    s.parse = [dem](const std::vector<CsvRecord>&, const std::string& log, std::vector<ReportRow>& rows) {
+        const std::regex line(R"(^sun caster (spheres|triangles (\d+) rays)\s+ms\s+([0-9.]+) rmse ([0-9.eE+-]+))");
+        std::istringstream in(log);
+        std::string l;
+        while (std::getline(in, l)) {
+            std::smatch m;
+            if (!std::regex_search(l, m, line)) continue;
+            // Two knobs: the caster (the triangles at their default rays), and the triangles' rays.
+            const bool spheres = m[1] == "spheres", is_default = l.find("(default)") != std::string::npos;
+            const double seconds = std::stod(m[3]) / 1000.0, rms = std::stod(m[4]);
+            const std::string where = dem_name(dem) + " (64 spheres, per frame)";
+            if (spheres || is_default)
+                rows.push_back({"render", "mesh_sun_shadow", spheres ? "spheres" : "triangles", !spheres, seconds, rms,
+                                "sun_visible_disc_rms_vs_256_rays", where});
+            if (!spheres)
+                rows.push_back({"render", "mesh_sun_rays", m[2].str(), is_default, seconds, rms,
+                                "sun_visible_disc_rms_vs_256_rays", where});
+        }
+    };
+    return s;
+}
+
 #ifdef TERRASHADE_HAS_GPU
 // bench fly: frame time and screen-space error against the LOD goal (its log's CSV lines).
 Study fly_study(const std::string& dem, double goal_px, Size size) {
@@ -375,6 +406,7 @@ std::vector<Study> studies(const BenchReportOptions& o, Size size) {
     s.push_back(device_study(grenoble, size));
     if (size != Size::tiny) s.push_back(tile_knobs_study(grenoble));
     if (size != Size::tiny) s.push_back(culling_study(grenoble, o.data + "/meshes/c172p.ac", size));
+    if (size != Size::tiny) s.push_back(sun_caster_study(dem_dir + "srtm3_N39E040_1000px.tif", o.data + "/meshes/c172p.ac"));
 #ifdef TERRASHADE_HAS_GPU
     if (size != Size::tiny)
         for (double g : {0.5, 1.0, 2.0, 4.0, 8.0}) s.push_back(fly_study(grenoble, g, size));

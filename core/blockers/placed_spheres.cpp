@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/matrix.hpp>
+
 #include "core/util/angles.hpp"
 
 namespace ts::blockers {
@@ -28,7 +30,14 @@ PlacedSpheres place_spheres(std::span<const Sphere> model_spheres, const mesh::P
         p.spheres.push_back({c, s.radius * placement.scale});
     }
     p.hierarchy = build_sphere_hierarchy(p.spheres);
+    p.frame_to_model = glm::transpose(rotation) * (1.0 / placement.scale);
+    p.model_origin = {0.0, 0.0, lift};
     return p;
+}
+
+std::shared_ptr<const TriangleBvh> model_triangle_bvh(const mesh::TriangleMesh& mesh) {
+    const std::vector<glm::dvec3> p(mesh.positions.begin(), mesh.positions.end());
+    return std::make_shared<const TriangleBvh>(p);
 }
 
 double min_cap_sine(double min_solid_angle_sr) {

@@ -8,16 +8,20 @@
 // above the DEM's datum (the grid's heights), the terrain dropped by Earth curvature with
 // distance from the anchor. A receiver texel (c, r) of height z sits at
 //   ((c - anchor.x) dx(r), (anchor.y - r) dy(r), z - curvature * horizontal distance^2).
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 
 #include "core/blockers/sphere_blocker.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/blockers/sun_disc_occlusion.hpp"
+#include "core/blockers/triangle_bvh.hpp"
 #include "core/mesh/placement.hpp"
+#include "core/mesh/triangle_mesh.hpp"
 
 namespace ts::blockers {
 
@@ -44,6 +48,16 @@ struct SphereBlockerOptions {
     // too dark against the opaque cap, -1 keeps small caps right (docs/blockers.md).
     double log_eps = -1.0;
     double sun_radius_rad = kSunAngularRadiusRad;
+    // What casts a mesh's sun shadow on the terrain. `triangles`: rays from each texel the
+    // spheres shadow to sun_rays points of the sun's disc, through the mesh's own triangles
+    // (PlacedSpheres::model_triangles), so the shadow has the aircraft's outline and the disc's
+    // penumbra; the spheres bound the mesh, so a texel they leave in full sun is in full sun.
+    // `spheres`: the spheres' analytic cover of the disc, whose outline is the union's (larger
+    // than a thin wing's by its chord over sin(elevation)). A mesh placed without triangles
+    // falls back to its spheres. Measured in docs/blockers.md ("The sun shadow's caster").
+    enum class SunCaster { triangles, spheres };
+    SunCaster sun_caster = SunCaster::triangles;
+    int sun_rays = 16;
 };
 
 // One mesh's spheres in its anchor frame (above), with their hierarchy for culling.
@@ -52,6 +66,12 @@ struct PlacedSpheres {
     glm::dvec2 anchor{0.0};          // texel-centre coordinates (col, row) of the frame's origin
     std::vector<Sphere> spheres;     // x east, y north of the anchor, z above the datum, metres
     SphereHierarchy hierarchy;       // over `spheres`; nodes[0].bound holds them all
+    // The mesh's own triangles in the normalised model frame (shared by every placement of it),
+    // for the sun shadow they cast (SphereBlockerOptions::sun_caster); null: the spheres cast it.
+    std::shared_ptr<const TriangleBvh> model_triangles;
+    // This frame -> the model frame: model = frame_to_model * (p - model_origin).
+    glm::dmat3 frame_to_model{1.0};
+    glm::dvec3 model_origin{0.0};
 };
 
 struct SphereBlockers {
@@ -66,6 +86,9 @@ struct SphereBlockers {
 // ground_height_m when above_ground). Throws ts::InputError for a bad placement.
 PlacedSpheres place_spheres(std::span<const Sphere> model_spheres, const mesh::Placement& placement,
                             glm::dvec2 anchor, double ground_height_m, std::string name = {});
+
+// The BVH of a mesh's triangles in its normalised model frame, for PlacedSpheres::model_triangles.
+std::shared_ptr<const TriangleBvh> model_triangle_bvh(const mesh::TriangleMesh& mesh);
 
 // Sphere solid-angle threshold as the sine of the cap half-angle it corresponds to:
 // 2 pi (1 - cos theta_min) = min_solid_angle_sr.

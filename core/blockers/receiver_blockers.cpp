@@ -109,4 +109,14 @@ double sun_visible_past(const PlacedSpheres& mesh, const glm::dvec3& receiver, c
     return visible;
 }
 
+double sun_visible_past_triangles(const PlacedSpheres& mesh, const glm::dvec3& receiver,
+                                  std::span<const glm::dvec3> disc) {
+    if (disc.empty()) return 1.0;
+    // The rays in the model frame, where the triangles' BVH was built once for every placement.
+    const glm::dvec3 origin = mesh.frame_to_model * (receiver - mesh.model_origin);
+    int seen = 0;
+    for (const glm::dvec3& d : disc) seen += !mesh.model_triangles->occluded(origin, mesh.frame_to_model * d);
+    return double(seen) / double(disc.size());
+}
+
 }  // namespace ts::blockers

@@ -2,6 +2,7 @@
 // What one receiver point sees of a placed mesh's spheres (placed_spheres.hpp), through the
 // sphere hierarchy: the spheres that count for its sky, and the part of the sun they leave.
 // The receiver is in the mesh's anchor frame.
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -31,5 +32,10 @@ void collect_sky_blockers(const PlacedSpheres& mesh, const glm::dvec3& receiver,
 // penumbrae come out a little dark (umbrae are exact: any sphere covering all gives 0).
 double sun_visible_past(const PlacedSpheres& mesh, const glm::dvec3& receiver, const glm::dvec3& sun,
                         double sun_radius);
+
+// Fraction of the rays from the receiver along `disc` (unit directions over the sun's disc:
+// sun_disc_directions) that miss the mesh's own triangles (mesh.model_triangles, not null).
+double sun_visible_past_triangles(const PlacedSpheres& mesh, const glm::dvec3& receiver,
+                                  std::span<const glm::dvec3> disc);
 
 }  // namespace ts::blockers

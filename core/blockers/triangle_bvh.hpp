@@ -1,11 +1,12 @@
 #pragma once
 // A bounding volume hierarchy over a triangle soup, for occlusion rays: the reference the
 // sphere blockers are measured against (the real triangles' sky and sun shadows,
-// docs/blockers.md "Accuracy against the triangles"). Axis-aligned boxes, split at the median
-// centroid along the longest side, up to 4 triangles a leaf; Moller-Trumbore intersection,
-// both faces (meshes are polygon soups, no orientation is trusted). Built in core rather than
-// taken from Embree: a few hundred lines' worth, exact double arithmetic, and no dependency
-// for a reference that is not on the hot path (docs/dependencies.md).
+// docs/blockers.md "Accuracy against the triangles"), and the rays of a mesh's sun shadow
+// where its spheres shadow (receiver_blockers.hpp, sun_visible_past_triangles). Axis-aligned
+// boxes, split at the median centroid along the longest side, up to 4 triangles a leaf;
+// Moller-Trumbore intersection, both faces (meshes are polygon soups, no orientation is
+// trusted). Built in core rather than taken from Embree: a few hundred lines' worth, exact
+// double arithmetic, and no dependency for a few thousand rays a frame (docs/dependencies.md).
 #include <span>
 #include <vector>
 

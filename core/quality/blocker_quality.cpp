@@ -111,12 +111,13 @@ ShadowOutline flat_shadow_outline(const mesh::TriangleMesh& mesh, std::span<cons
 
 MeshErrorTerms predicted_mesh_error(const mesh::TriangleMesh& mesh, std::span<const blockers::Sphere> model_spheres,
                                     const mesh::Placement& placement, std::span<const BlockerSun> suns,
-                                    const PictureArea& picture, double sky_footprint_area_m2) {
+                                    const PictureArea& picture, double sky_footprint_area_m2, bool sun_by_triangles) {
     MeshErrorTerms e;
     if (!(picture.area_m2 > 0)) return e;
     for (const BlockerSun& sun : suns) {
         if (!(sun.direction.z > 0)) continue;  // no sun light to shadow
-        const ShadowOutline o = flat_shadow_outline(mesh, model_spheres, placement, sun.direction);
+        const ShadowOutline o =
+            sun_by_triangles ? ShadowOutline{} : flat_shadow_outline(mesh, model_spheres, placement, sun.direction);
         // A lit texel's direct sun over the picture's mean: sin e / mean(max(0, n.s)); a picture
         // with hardly any lit ground is held at 1% of the sun's flat-ground light.
         const double share = sun.direction.z / std::max(sun.mean_lit_cosine, 0.01 * sun.direction.z);
@@ -128,14 +129,16 @@ MeshErrorTerms predicted_mesh_error(const mesh::TriangleMesh& mesh, std::span<co
 }
 
 SphereCountChoice choose_sphere_count(double budget, const std::function<double(int)>& error_of) {
-    SphereCountChoice c;
+    SphereCountChoice best;
+    best.met = false;
+    bool first = true;
     for (int count : candidate_sphere_counts()) {
-        c.spheres = count;
-        c.predicted_error = error_of(count);
-        if (c.predicted_error <= budget) return c;
+        const double e = error_of(count);
+        if (e <= budget) return {count, e, true};
+        if (first || e < best.predicted_error) best.spheres = count, best.predicted_error = e;
+        first = false;
     }
-    c.met = false;
-    return c;
+    return best;
 }
 
 }  // namespace ts::quality

@@ -74,20 +74,23 @@ struct PictureArea {
 
 // The predicted error one mesh with these spheres adds to the picture, the worst over `suns`
 // for the sun term; sky_footprint_area_m2 is the ground where its spheres shade the sky
-// (visibility::sky_footprint).
+// (visibility::sky_footprint). sun_by_triangles: the mesh's triangles cast its sun shadow
+// (SphereBlockerOptions::sun_caster), so M = 0 and the sun term is the texels' sampling alone,
+// whatever the count.
 MeshErrorTerms predicted_mesh_error(const mesh::TriangleMesh& mesh, std::span<const blockers::Sphere> model_spheres,
                                     const mesh::Placement& placement, std::span<const BlockerSun> suns,
-                                    const PictureArea& picture, double sky_footprint_area_m2);
+                                    const PictureArea& picture, double sky_footprint_area_m2, bool sun_by_triangles);
 
 struct SphereCountChoice {
     int spheres = 0;
     double predicted_error = 0;  // of every mesh together
-    bool met = true;             // false: even the most spheres are above the budget
+    bool met = true;             // false: no count is predicted under the budget
 };
 
 // The fewest spheres (one count for every mesh) whose predicted error, `error_of(count)`, is at
-// most `budget`; the most spheres (met = false) when none is. error_of is called in rising
-// count and not past the choice.
+// most `budget`; when none is (met = false), the count of the least predicted error, the fewest
+// of equals (with the triangles casting the sun the error hardly depends on the count, and more
+// spheres would cost without helping). error_of is called in rising count and not past the choice.
 SphereCountChoice choose_sphere_count(double budget, const std::function<double(int)>& error_of);
 
 }  // namespace ts::quality

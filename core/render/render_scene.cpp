@@ -133,8 +133,10 @@ visibility::TexelRect Scene::move_mesh(std::size_t k, const mesh::Placement& pla
     if (placement.above_ground && std::isnan(ground))
         throw input_error(m.name, "an agl height over a void of the DEM: give the height above the datum");
     m.placement = placement;
+    std::shared_ptr<const blockers::TriangleBvh> triangles = std::move(blockers_.meshes[k].model_triangles);
     blockers_.meshes[k] = blockers::place_spheres(m.model_spheres, placement, anchor, std::isnan(ground) ? 0.0 : ground,
                                                   m.name);
+    blockers_.meshes[k].model_triangles = std::move(triangles);  // one model frame for every placement
     return state_->move_mesh(k, blockers_.meshes[k]);
 }
 

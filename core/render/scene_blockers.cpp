@@ -46,6 +46,8 @@ blockers::SphereBlockers place_scene_meshes(std::span<const SceneMesh> meshes, c
             throw input_error(m.name, "an agl height over a void of the DEM: give the height above the datum");
         out.meshes.push_back(blockers::place_spheres(m.model_spheres, m.placement, anchor,
                                                      std::isnan(ground) ? 0.0 : ground, m.name));
+        if (m.triangles && options.sun_caster == blockers::SphereBlockerOptions::SunCaster::triangles)
+            out.meshes.back().model_triangles = blockers::model_triangle_bvh(*m.triangles);
         double top = -INFINITY;
         for (const blockers::Sphere& s : out.meshes.back().spheres) top = std::max(top, s.center.z + s.radius);
         if (!std::isnan(ground) && top < ground) {

@@ -22,7 +22,8 @@ struct SceneMesh {
     mesh::Placement placement;
     std::vector<blockers::Sphere> model_spheres;
     // Its triangles and materials (normalised model frame), for drawing it in perspective views
-    // lit per vertex (mesh_lighting.hpp); null: only its shadows.
+    // lit per vertex (mesh_lighting.hpp) and for the sun shadow they cast (SphereBlockerOptions::
+    // sun_caster); null: only its spheres' shadows.
     std::shared_ptr<const mesh::TriangleMesh> triangles;
 };
 

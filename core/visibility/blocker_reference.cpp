@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/blockers/sun_disc_samples.hpp"
 #include "core/sh/sh_basis.hpp"
 #include "core/sh/sh_exp.hpp"
 #include "core/util/angles.hpp"
@@ -117,16 +118,8 @@ std::vector<float> reference_sun(const terrain::HeightGrid& grid, const PlacedTr
     const std::size_t n = rect.empty() ? 0 : w * std::size_t(rect.row1 - rect.row0);
     std::vector<float> out(n, 1.0f);
     if (n == 0) return out;
-    // Area-uniform points on the disc (sunflower), as directions about the sun.
-    const glm::dvec3 e1 = glm::normalize(std::abs(sun.z) < 0.9 ? glm::cross(sun, glm::dvec3(0, 0, 1))
-                                                               : glm::cross(sun, glm::dvec3(1, 0, 0)));
-    const glm::dvec3 e2 = glm::cross(sun, e1);
-    std::vector<glm::dvec3> dirs;
-    const int m = std::max(1, o.sun_samples);
-    for (int i = 0; i < m; ++i) {
-        const double rho = sun_radius * std::sqrt((i + 0.5) / m), a = i * 2.399963229728653;
-        dirs.push_back(glm::normalize(sun + std::tan(rho) * (std::cos(a) * e1 + std::sin(a) * e2)));
-    }
+    const std::vector<glm::dvec3> dirs = blockers::sun_disc_directions(sun, sun_radius, o.sun_samples);
+    const int m = int(dirs.size());
     parallel_rows(rect.row1 - rect.row0, o.threads, (long long)w * m, [&](int b, int e) {
         for (int r = rect.row0 + b; r < rect.row0 + e; ++r)
             for (int c = rect.col0; c < rect.col1; ++c) {

@@ -1,9 +1,10 @@
 #pragma once
 // Mesh blockers' sun shadows on the terrain, per frame: for every texel in a mesh's sun
-// footprint (blocker_footprint.hpp), the fraction of the sun's disc the spheres leave
-// (core/blockers/receiver_blockers.hpp: analytic disc cover, smooth penumbra) multiplies the
-// terrain's sun visibility (sun_sweep.hpp or sun_visibility.hpp). Texels outside every
-// footprint are not touched.
+// footprint (blocker_footprint.hpp), the fraction of the sun's disc the mesh leaves multiplies
+// the terrain's sun visibility (sun_sweep.hpp or sun_visibility.hpp). Texels outside every
+// footprint are not touched. The fraction (core/blockers/receiver_blockers.hpp) is the spheres'
+// analytic cover of the disc, and where that is not the whole disc and the options' sun_caster
+// is `triangles`, the share of sun_rays rays through the mesh's own triangles instead.
 #include <vector>
 
 #include "core/blockers/placed_spheres.hpp"

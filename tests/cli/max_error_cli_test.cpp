@@ -39,7 +39,9 @@ TEST(MaxErrorCli, RenderPrintsWhatItChoseAndUsesIt) {
     EXPECT_TRUE(std::filesystem::exists(dir / "r.png"));
 }
 
-// With a mesh: the spheres are chosen with the terrain's setting, fewer for a looser bound.
+// With a mesh: the spheres are chosen with the terrain's setting. When the spheres cast the sun
+// shadow their outline is most of the error, so a looser bound takes fewer; when the triangles
+// cast it (the default) the error hardly depends on the count, so the fewest serve any bound.
 int chosen_spheres(const std::string& out) {
     const std::string key = "--max-error: ";
     const auto at = out.find(key);
@@ -50,20 +52,25 @@ int chosen_spheres(const std::string& out) {
 TEST(MaxErrorCli, RenderWithAMeshChoosesItsSpheresToo) {
     const auto dir = temp_dir("max_error_mesh");
     const std::string cessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
-    int spheres[2] = {0, 0};
+    int spheres[2][2] = {{0, 0}, {0, 0}};
     const char* bounds[2] = {"0.08", "0.06"};
-    for (int k = 0; k < 2; ++k) {
-        const Result r = run(ts_cmd("render " + quote(kDem) + kCrop + " --mesh " + quote(cessna) +
-                                    " --at 5.75,45.2,300agl --scale 30 --sphere-cache-dir " + quote((dir / "cache").string()) +
-                                    " --sun-azimuth 135 --sun-elevation 30 --max-error " + bounds[k] + " --out " +
-                                    quote((dir / "m.png").string())));
-        ASSERT_EQ(r.exit_code, 0) << r.err;
-        EXPECT_TRUE(has_choice_line(r.out, bounds[k])) << r.out;
-        EXPECT_NE(r.out.find("(its spheres: --max-error chooses how many)"), std::string::npos) << r.out;
-        spheres[k] = chosen_spheres(r.out);
-        EXPECT_GE(spheres[k], 8) << r.out;
-    }
-    EXPECT_LT(spheres[0], spheres[1]) << "a tighter bound takes more spheres";
+    const char* casters[2] = {"spheres", "triangles"};
+    for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 2; ++k) {
+            const Result r = run(ts_cmd("render " + quote(kDem) + kCrop + " --mesh " + quote(cessna) +
+                                        " --at 5.75,45.2,300agl --scale 30 --sphere-cache-dir " +
+                                        quote((dir / "cache").string()) + " --mesh-sun-shadow " + casters[c] +
+                                        " --sun-azimuth 135 --sun-elevation 30 --max-error " + bounds[k] + " --out " +
+                                        quote((dir / "m.png").string())));
+            ASSERT_EQ(r.exit_code, 0) << r.err;
+            EXPECT_TRUE(has_choice_line(r.out, bounds[k])) << r.out;
+            EXPECT_NE(r.out.find("(its spheres: --max-error chooses how many)"), std::string::npos) << r.out;
+            spheres[c][k] = chosen_spheres(r.out);
+            EXPECT_GE(spheres[c][k], 8) << r.out;
+        }
+    EXPECT_LT(spheres[0][0], spheres[0][1]) << "spheres casting the sun: a tighter bound takes more of them";
+    EXPECT_EQ(spheres[1][0], 8) << "triangles casting the sun: the fewest spheres";
+    EXPECT_EQ(spheres[1][1], 8) << "triangles casting the sun: the fewest spheres";
     const Result both = run(ts_cmd("render " + quote(kDem) + " --mesh " + quote(cessna) +
                                    " --at 5.75,45.2,300agl --spheres 32 --sun-azimuth 135 --sun-elevation 30 "
                                    "--max-error 0.05 --out " + quote((dir / "x.png").string())));

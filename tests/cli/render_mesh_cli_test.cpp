@@ -77,6 +77,43 @@ TEST(RenderMeshCli, TheCessnasShadowDarkensTheTerrainAwayFromTheSun) {
     EXPECT_EQ(brighter, 0);
 }
 
+// The sun shadow cast by the Cessna's triangles (the default) lies inside the one its spheres
+// cast, and is smaller: the spheres bound the mesh, their union is thicker than its wings.
+TEST(RenderMeshCli, TheTrianglesSunShadowLiesInsideTheSpheresAndIsSmaller) {
+    const auto dir = temp_dir("render_mesh_caster");
+    const auto plain = dir / "plain.png", tri = dir / "tri.png", sph = dir / "sph.png";
+    // A Cessna x250 (a 2.8 km span, ~100 pixels) under a 45-degree sun.
+    const std::string light = " --sun-azimuth 135 --sun-elevation 45 --exposure 13";
+    const std::string mesh = " --mesh " + quote(kCessna) + " --at 5.75,45.20,800agl --hpr 45,0,0 --scale 250 --spheres 32 "
+                             "--sphere-cache-dir " + quote((dir / "cache").string());
+    ASSERT_EQ(run(ts_cmd("render " + quote(kDem) + kCrop + light + " --out " + quote(plain.string()))).exit_code, 0);
+    const Result a = run(ts_cmd("render " + quote(kDem) + kCrop + light + mesh + " --out " + quote(tri.string())));
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    const Result b = run(ts_cmd("render " + quote(kDem) + kCrop + light + mesh + " --mesh-sun-shadow spheres --out " +
+                                quote(sph.string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    const Image p = read_png(plain), t = read_png(tri), s = read_png(sph);
+    ASSERT_EQ(p.px.size(), t.px.size());
+    ASSERT_EQ(p.px.size(), s.px.size());
+    // A pixel in the sun shadow: darker than without the mesh by more than the sky's faint
+    // darkening (a shadowed pixel loses its direct sun: tens of codes).
+    auto shadowed = [&](const Image& m, std::size_t px) {
+        double drop = 0;
+        for (int k = 0; k < p.channels; ++k) drop += double(p.px[px * p.channels + k]) - double(m.px[px * p.channels + k]);
+        return drop > 3 * 25;
+    };
+    long in_t = 0, in_s = 0, t_outside_s = 0;
+    for (std::size_t px = 0; px < std::size_t(p.w) * p.h; ++px) {
+        const bool a_t = shadowed(t, px), a_s = shadowed(s, px);
+        in_t += a_t, in_s += a_s, t_outside_s += a_t && !a_s;
+    }
+    std::printf("sun shadow pixels: %ld cast by the triangles, %ld by the spheres, %ld of the first outside the second\n",
+                in_t, in_s, t_outside_s);
+    EXPECT_GT(in_t, 20);
+    EXPECT_LT(in_t, in_s * 8 / 10);
+    EXPECT_LE(t_outside_s, in_t / 50);
+}
+
 // The covered-pixel count `render` prints for the meshes drawn in a perspective view.
 long covered_pixels(const std::string& out) {
     const std::string key = "meshes cover ";
@@ -213,6 +250,8 @@ TEST(RenderMeshCli, BadMeshFlagsExitTwoWithOneLine) {
         " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --spheres 4",
         " --mesh " + quote(kCessna) + " --at 7.5,45.2,100",  // off the DEM
         " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --hpr 10,20",
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --mesh-sun-shadow blobs",
+        " --mesh " + quote(kCessna) + " --at 5.75,45.2,100 --mesh-sun-rays 0",
     };
     for (const std::string& c : cases) {
         const Result r = run(ts_cmd(base + c));

@@ -159,15 +159,21 @@ TEST_P(BlockerMaxError, ThePredictedShareBoundsTheSpheresErrorAgainstTheTriangle
         const double texel_m2 = grid.dx_m[std::size_t(anchor.y)] * grid.dy_m[std::size_t(anchor.y)];
         const double fp_m2 = double(fp.texels()) * texel_m2;
 
-        const visibility::BlockerSunShadow shadow(grid, b, curvature, 0);
+        // The shadow cast by the spheres, and by the triangles where the spheres shadow.
+        blockers::SphereBlockers by_spheres = b, by_triangles = b;
+        by_spheres.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::spheres;
+        by_triangles.meshes[0].model_triangles = blockers::model_triangle_bvh(mesh);
+        const visibility::BlockerSunShadow shadow(grid, by_spheres, curvature, 0);
+        const visibility::BlockerSunShadow tri_shadow(grid, by_triangles, curvature, 0);
         for (const Sun s : {Sun{135, 30}, Sun{250, 12}, Sun{200, 60}}) {
             const glm::dvec3 dir = sun_direction(s.az, s.el);
-            std::vector<float> vis(texels, 1.0f);
+            std::vector<float> vis(texels, 1.0f), tri_vis(texels, 1.0f);
             shadow.apply(s.az, s.el, vis);
+            tri_shadow.apply(s.az, s.el, tri_vis);
             const visibility::TexelRect rect = shadow.footprint(0, s.az, s.el);
             const std::vector<float> ref = visibility::reference_sun(grid, tris, rect, dir, b.options.sun_radius_rad,
                                                                      curvature, ro);
-            double cos_sum = 0, se = 0;
+            double cos_sum = 0, se = 0, tri_se = 0;
             for (std::size_t t = 0; t < texels; ++t)
                 cos_sum += std::max(0.0, normals.x[t] * dir.x + normals.y[t] * dir.y + normals.z[t] * dir.z);
             const int rw = rect.col1 - rect.col0;
@@ -175,18 +181,25 @@ TEST_P(BlockerMaxError, ThePredictedShareBoundsTheSpheresErrorAgainstTheTriangle
                 for (int c = rect.col0; c < rect.col1; ++c) {
                     const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
                     const double lit = std::max(0.0, normals.x[t] * dir.x + normals.y[t] * dir.y + normals.z[t] * dir.z);
-                    const double e = lit * (double(vis[t]) - double(ref[std::size_t(r - rect.row0) * std::size_t(rw) + std::size_t(c - rect.col0)]));
-                    se += e * e;
+                    const double want = ref[std::size_t(r - rect.row0) * std::size_t(rw) + std::size_t(c - rect.col0)];
+                    const double e = lit * (double(vis[t]) - want), tri_e = lit * (double(tri_vis[t]) - want);
+                    se += e * e, tri_se += tri_e * tri_e;
                 }
             const double mean_cos = cos_sum / double(texels);
             const double measured_sun = std::sqrt(se / double(texels)) / mean_cos;
+            const double measured_tri_sun = std::sqrt(tri_se / double(texels)) / mean_cos;
             const quality::BlockerSun bs{dir, mean_cos};
             const quality::MeshErrorTerms predicted =
-                quality::predicted_mesh_error(mesh, dec.spheres, place, {&bs, 1}, {picture_m2, texel_m2}, fp_m2);
-            std::printf("%s: %s x%g, %d spheres, sun %g/%g: sun measured %.4f predicted %.4f; sky measured %.4f predicted "
-                        "%.4f\n",
-                        mc.name, mc.file, mc.scale, count, s.az, s.el, measured_sun, predicted.sun, measured_sky, predicted.sky);
+                quality::predicted_mesh_error(mesh, dec.spheres, place, {&bs, 1}, {picture_m2, texel_m2}, fp_m2, false);
+            const quality::MeshErrorTerms tri_predicted =
+                quality::predicted_mesh_error(mesh, dec.spheres, place, {&bs, 1}, {picture_m2, texel_m2}, fp_m2, true);
+            std::printf("%s: %s x%g, %d spheres, sun %g/%g: sun measured %.4f predicted %.4f (cast by the triangles: "
+                        "%.4f, %.4f); sky measured %.4f predicted %.4f\n",
+                        mc.name, mc.file, mc.scale, count, s.az, s.el, measured_sun, predicted.sun, measured_tri_sun,
+                        tri_predicted.sun, measured_sky, predicted.sky);
             EXPECT_LE(measured_sun, predicted.sun) << count << " spheres, sun " << s.az << "/" << s.el;
+            EXPECT_LE(measured_tri_sun, tri_predicted.sun) << count << " spheres, sun " << s.az << "/" << s.el;
+            EXPECT_LT(tri_predicted.sun, predicted.sun);
             EXPECT_LE(measured_sky, predicted.sky) << count << " spheres";
             EXPECT_GT(measured_sun, 0.1 * predicted.sun) << "the bound should not be loose by 10x";
         }

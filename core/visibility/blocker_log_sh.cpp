@@ -150,29 +150,43 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
 }
 
 bool device_can_add_blockers(const blockers::SphereBlockers& blockers) {
-    return blockers.meshes.size() == 1 &&
-           blockers.options.sky_culling == blockers::SphereBlockerOptions::SkyCulling::none;
+    return blockers.options.sky_culling == blockers::SphereBlockerOptions::SkyCulling::none;
 }
 
 FlatBlockerReceivers flat_blocker_receivers(const terrain::HeightGrid& grid, const ReceiverWindow& window,
                                             const blockers::SphereBlockers& blockers, double curvature, int threads) {
     FlatBlockerReceivers out;
-    if (!device_can_add_blockers(blockers)) return out;
-    const blockers::PlacedSpheres& m = blockers.meshes[0];
+    if (blockers.empty() || !device_can_add_blockers(blockers)) return out;
     const double min_sine = blockers::min_cap_sine(blockers.options.min_solid_angle_sr);
     const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
-    const TexelRect rect = intersect(sky_footprint(grid, m, min_sine), win);
-    if (rect.empty()) return out;
-    const RectNormals normals = normals_of(grid, rect, threads);
-    for (int r = rect.row0; r < rect.row1; ++r)
-        for (int c = rect.col0; c < rect.col1; ++c) {
+    std::vector<TexelRect> rects;
+    TexelRect all;
+    for (const blockers::PlacedSpheres& m : blockers.meshes) {
+        rects.push_back(intersect(sky_footprint(grid, m, min_sine), win));
+        all = bounding(all, rects.back());
+    }
+    if (all.empty()) return out;
+    const RectNormals normals = normals_of(grid, all, threads);
+    for (int r = all.row0; r < all.row1; ++r)
+        for (int c = all.col0; c < all.col1; ++c) {
             if (grid.is_hole(c, r)) continue;
-            ++out.texels_visited;
-            const glm::dvec3 q = receiver_in_anchor_frame(grid, c, r, m, curvature);
-            if (!bounding_sphere_counts(m, q, min_sine)) continue;
-            out.texels.push_back(std::size_t(r - window.row0) * std::size_t(window.width) + std::size_t(c - window.col0));
-            out.positions.emplace_back(q);
-            out.normals.emplace_back(normals.at(c, r));
+            bool inside_any = false, counted = false;
+            for (std::size_t k = 0; k < rects.size(); ++k) {
+                if (!rects[k].contains(c, r)) continue;
+                inside_any = true;
+                const blockers::PlacedSpheres& m = blockers.meshes[k];
+                const glm::dvec3 q = receiver_in_anchor_frame(grid, c, r, m, curvature);
+                if (!bounding_sphere_counts(m, q, min_sine)) continue;
+                if (!counted)
+                    out.texels.push_back(std::size_t(r - window.row0) * std::size_t(window.width) +
+                                         std::size_t(c - window.col0));
+                counted = true;
+                out.receiver.push_back(std::uint32_t(out.texels.size() - 1));
+                out.mesh.push_back(std::uint32_t(k));
+                out.positions.emplace_back(q);
+                out.normals.emplace_back(normals.at(c, r));
+            }
+            out.texels_visited += inside_any;
         }
     return out;
 }

@@ -7,6 +7,7 @@
 //   V_log(texel) = V_log^HF(texel) + sum_b w_b * rot(log-ZH(theta_b), dir_b).
 // Called once, from the visibility seam (complete_on_cpu), so every consumer gets it.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -32,18 +33,22 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
 
 // For a device that accumulates the spheres itself (gpu/visibility's blocker_log_sh.comp: every
 // sphere at every receiver, the accumulation kernel's formulas): the receivers add_blocker_log_sh
-// would visit without culling. Applies to one mesh with sky_culling = none (several meshes are
-// attenuated together in one frame per texel, which the device does not do).
+// would visit without culling, for any number of meshes. Applies with sky_culling = none.
 bool device_can_add_blockers(const blockers::SphereBlockers& blockers);
 
 struct FlatBlockerReceivers {
-    std::vector<std::size_t> texels;      // window-relative index (row * width + col)
-    std::vector<glm::vec3> positions;     // in the mesh's anchor frame, as the spheres
+    std::vector<std::size_t> texels;      // per receiver: window-relative index (row * width + col)
+    // Per entry: a receiver and one mesh whose bounding sphere passes the threshold there, the
+    // entries of a receiver consecutive (with one mesh: one entry per receiver, in order). The
+    // device sums a receiver's entries and attenuates them together, as add_blocker_log_sh does.
+    std::vector<std::uint32_t> receiver;  // index into texels
+    std::vector<std::uint32_t> mesh;      // index into blockers.meshes
+    std::vector<glm::vec3> positions;     // in that mesh's anchor frame, as its spheres
     std::vector<glm::vec3> normals;       // unit, as add_blocker_log_sh takes them
-    long long texels_visited = 0;         // texels in the footprint (BlockerStageStats)
+    long long texels_visited = 0;         // texels in any footprint (BlockerStageStats)
 };
-// Every non-void texel of the window's part of the mesh's sky footprint where its bounding
-// sphere passes the threshold. Requires device_can_add_blockers.
+// Every non-void texel of the window's part of the meshes' sky footprints where some mesh's
+// bounding sphere passes the threshold. Requires device_can_add_blockers.
 FlatBlockerReceivers flat_blocker_receivers(const terrain::HeightGrid& grid, const ReceiverWindow& window,
                                             const blockers::SphereBlockers& blockers, double curvature, int threads);
 

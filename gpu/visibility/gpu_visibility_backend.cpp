@@ -63,9 +63,9 @@ public:
     }
 
 private:
-    // The mesh's sphere log-SH on the device (blocker_log_sh.comp), into result.log_sh, as
-    // complete_on_cpu adds it on the CPU without culling: the footprint's receivers gathered,
-    // accumulated, scattered back.
+    // The meshes' sphere log-SH on the device (blocker_log_sh.comp), into result.log_sh, as
+    // complete_on_cpu adds it on the CPU without culling: the footprints' receivers gathered
+    // (one entry per receiver and mesh that counts there), accumulated, scattered back.
     void add_blockers(const terrain::HeightGrid& grid, const vis::VisibilityRequest& request,
                       vis::VisibilityResult& result) const {
         const Stopwatch t;
@@ -78,18 +78,32 @@ private:
         const blockers::SphereBlockers& b = *request.blockers;
         const vis::FlatBlockerReceivers rec = vis::flat_blocker_receivers(
             grid, resolved, b, vis::curvature_factor(request.horizon.curvature), request.horizon.threads);
+        // Every mesh's spheres in one list, each mesh a range of it.
+        std::vector<blockers::Sphere> spheres;
+        std::vector<std::uint32_t> first;
+        for (const blockers::PlacedSpheres& m : b.meshes) {
+            first.push_back(std::uint32_t(spheres.size()));
+            spheres.insert(spheres.end(), m.spheres.begin(), m.spheres.end());
+        }
+        std::vector<GpuBlockerEntry> entries(rec.receiver.size());
+        long long pairs = 0;
+        for (std::size_t e = 0; e < entries.size(); ++e) {
+            const std::uint32_t k = rec.mesh[e];
+            entries[e] = {rec.positions[e], rec.normals[e], first[k], std::uint32_t(b.meshes[k].spheres.size())};
+            pairs += (long long)b.meshes[k].spheres.size();
+        }
         const std::size_t n = rec.texels.size(), texels = result.log_sh.size() / 16;
         std::vector<float> log_sh(16 * n);
         for (std::size_t i = 0; i < 16; ++i)
             for (std::size_t k = 0; k < n; ++k) log_sh[i * n + k] = result.log_sh[i * texels + rec.texels[k]];
         if (!blocker_kernel_) blocker_kernel_ = std::make_unique<GpuBlockerLogSh>(context_);
-        blocker_kernel_->add(rec.positions, rec.normals, b.meshes[0].spheres, float(b.options.log_eps),
-                             b.options.attenuation, log_sh);
+        blocker_kernel_->add(entries, rec.receiver, n, spheres, float(b.options.log_eps), b.options.attenuation,
+                             log_sh);
         for (std::size_t i = 0; i < 16; ++i)
             for (std::size_t k = 0; k < n; ++k) result.log_sh[i * texels + rec.texels[k]] = log_sh[i * n + k];
-        result.stages.push_back({"sphere blockers (" + std::to_string(b.sphere_count()) + " spheres, " +
-                                     std::to_string(n) + " texels, " +
-                                     std::to_string((long long)n * (long long)b.sphere_count()) +
+        result.stages.push_back({"sphere blockers (" + std::to_string(b.meshes.size()) + " mesh" +
+                                     (b.meshes.size() == 1 ? "" : "es") + ", " + std::to_string(b.sphere_count()) +
+                                     " spheres, " + std::to_string(n) + " texels, " + std::to_string(pairs) +
                                      " sphere-texel pairs)",
                                  name(), t.seconds()});
     }

@@ -99,11 +99,13 @@ TEST_F(GpuBlockerLogShTest, MismatchedSizesAreRefused) {
                  std::invalid_argument);
 }
 
-TEST_F(GpuBlockerLogShTest, TheVulkanBackendAddsAMeshAsTheCpuBackendDoes) {
-    // The visibility seam with a mesh: the Vulkan backend accumulates the spheres on the device
-    // (one mesh, no culling: the default), the CPU backend with its kernel; the log-SH agrees
-    // to float rounding and the stage says where it ran. A window off the grid's corner and a
-    // void texel in the footprint too.
+TEST_F(GpuBlockerLogShTest, TheVulkanBackendAddsMeshesAsTheCpuBackendDoes) {
+    // The visibility seam with meshes: the Vulkan backend accumulates the spheres on the device
+    // (no culling: the default), the CPU backend with its kernel; the log-SH agrees to float
+    // rounding and the stage says where it ran. One mesh, then two with overlapping footprints
+    // and their own anchors, the second low and large (receivers inside its spheres: the ratio
+    // attenuation over both meshes' caps at once). A window off the grid's corner and a void
+    // texel in the footprint too.
     const int w = 80, h = 70;
     std::vector<float> z(std::size_t(w) * h);
     for (int r = 0; r < h; ++r)
@@ -116,44 +118,53 @@ TEST_F(GpuBlockerLogShTest, TheVulkanBackendAddsAMeshAsTheCpuBackendDoes) {
     std::uniform_real_distribution<double> u(-10.0, 10.0);
     for (int i = 0; i < 60; ++i) m.spheres.push_back({{u(rng), 0.3 * u(rng), 240.0 + 0.2 * u(rng)}, 1.5});
     m.hierarchy = blockers::build_sphere_hierarchy(m.spheres);
-    blockers::SphereBlockers b;
-    b.meshes.push_back(m);
-    ASSERT_EQ(b.options.sky_culling, blockers::SphereBlockerOptions::SkyCulling::none);
-    for (const ts::visibility::ReceiverWindow window :
-         {ts::visibility::ReceiverWindow{}, ts::visibility::ReceiverWindow{10, 5, 50, 45}}) {
-        ts::visibility::VisibilityRequest req;
-        req.horizon.directions = 16;
-        req.horizon.window = window;
-        req.log_sh = true;
-        req.blockers = &b;
-        req.keep_terrain_log_sh = true;
-        const auto gpu = make_gpu_visibility_backend(*context_, {})->compute(grid, req);
-        const auto cpu = ts::visibility::make_cpu_visibility_backend()->compute(grid, req);
-        ASSERT_EQ(gpu.log_sh.size(), cpu.log_sh.size());
-        ASSERT_EQ(gpu.terrain_log_sh.size(), cpu.terrain_log_sh.size());
-        double worst = 0.0, changed = 0.0;
-        for (std::size_t k = 0; k < cpu.log_sh.size(); ++k) {
-            if (std::isnan(cpu.log_sh[k])) {
-                EXPECT_TRUE(std::isnan(gpu.log_sh[k])) << k;
-                continue;
+    blockers::PlacedSpheres low;
+    low.anchor = {30.5, 28.0};
+    for (int i = 0; i < 12; ++i) low.spheres.push_back({{3.0 * u(rng), 3.0 * u(rng), 205.0 + 0.5 * u(rng)}, 12.0});
+    low.hierarchy = blockers::build_sphere_hierarchy(low.spheres);
+    for (int meshes = 1; meshes <= 2; ++meshes) {
+        blockers::SphereBlockers b;
+        b.meshes.push_back(m);
+        if (meshes == 2) b.meshes.push_back(low);
+        ASSERT_EQ(b.options.sky_culling, blockers::SphereBlockerOptions::SkyCulling::none);
+        for (const ts::visibility::ReceiverWindow window :
+             {ts::visibility::ReceiverWindow{}, ts::visibility::ReceiverWindow{10, 5, 50, 45}}) {
+            ts::visibility::VisibilityRequest req;
+            req.horizon.directions = 16;
+            req.horizon.window = window;
+            req.log_sh = true;
+            req.blockers = &b;
+            req.keep_terrain_log_sh = true;
+            const auto gpu = make_gpu_visibility_backend(*context_, {})->compute(grid, req);
+            const auto cpu = ts::visibility::make_cpu_visibility_backend()->compute(grid, req);
+            ASSERT_EQ(gpu.log_sh.size(), cpu.log_sh.size());
+            ASSERT_EQ(gpu.terrain_log_sh.size(), cpu.terrain_log_sh.size());
+            double worst = 0.0, changed = 0.0;
+            for (std::size_t k = 0; k < cpu.log_sh.size(); ++k) {
+                if (std::isnan(cpu.log_sh[k])) {
+                    EXPECT_TRUE(std::isnan(gpu.log_sh[k])) << k;
+                    continue;
+                }
+                worst = std::max(worst, double(std::abs(gpu.log_sh[k] - cpu.log_sh[k])));
+                changed = std::max(changed, double(std::abs(cpu.log_sh[k] - cpu.terrain_log_sh[k])));
             }
-            worst = std::max(worst, double(std::abs(gpu.log_sh[k] - cpu.log_sh[k])));
-            changed = std::max(changed, double(std::abs(cpu.log_sh[k] - cpu.terrain_log_sh[k])));
+            EXPECT_GT(changed, 0.05);  // the meshes do shadow the window
+            // The terrain's log-SH of the two paths differs by its own GPU/CPU tolerance (the
+            // visibility agreement tests); the blockers' part adds float rounding.
+            double terrain_worst = 0.0;
+            for (std::size_t k = 0; k < cpu.terrain_log_sh.size(); ++k)
+                if (!std::isnan(cpu.terrain_log_sh[k]))
+                    terrain_worst =
+                        std::max(terrain_worst, double(std::abs(gpu.terrain_log_sh[k] - cpu.terrain_log_sh[k])));
+            std::printf("%d mesh(es), window %d,%d: log-SH max %.3g apart (terrain alone %.3g), the meshes change it "
+                        "by up to %.3g\n",
+                        meshes, window.col0, window.row0, worst, terrain_worst, changed);
+            EXPECT_LE(worst, terrain_worst + 1e-4 * changed + 1e-6);
+            bool on_device = false;
+            for (const auto& stage : gpu.stages)
+                if (stage.label.rfind("sphere blockers", 0) == 0) on_device = stage.path == context_->device_info().name;
+            EXPECT_TRUE(on_device);
         }
-        EXPECT_GT(changed, 0.05);  // the mesh does shadow the window
-        // The terrain's log-SH of the two paths differs by its own GPU/CPU tolerance (the
-        // visibility agreement tests); the blockers' part adds float rounding.
-        double terrain_worst = 0.0;
-        for (std::size_t k = 0; k < cpu.terrain_log_sh.size(); ++k)
-            if (!std::isnan(cpu.terrain_log_sh[k]))
-                terrain_worst = std::max(terrain_worst, double(std::abs(gpu.terrain_log_sh[k] - cpu.terrain_log_sh[k])));
-        std::printf("window %d,%d: log-SH max %.3g apart (terrain alone %.3g), the mesh changes it by up to %.3g\n",
-                    window.col0, window.row0, worst, terrain_worst, changed);
-        EXPECT_LE(worst, terrain_worst + 1e-4 * changed + 1e-6);
-        bool on_device = false;
-        for (const auto& stage : gpu.stages)
-            if (stage.label.rfind("sphere blockers", 0) == 0) on_device = stage.path == context_->device_info().name;
-        EXPECT_TRUE(on_device);
     }
 }
 

@@ -1,8 +1,12 @@
 #pragma once
-// `terrashade bench blockers` (bench_blockers_command.cpp) and its moving-aircraft part
-// (bench_blockers_motion.cpp).
+// `terrashade bench blockers` (bench_blockers_command.cpp), its moving-aircraft part
+// (bench_blockers_motion.cpp) and its part on the mesh itself (bench_blockers_self.cpp).
+#include <span>
 #include <string>
 #include <vector>
+
+#include "core/blockers/sphere_decomposition.hpp"
+#include "core/mesh/triangle_mesh.hpp"
 
 namespace ts::app {
 
@@ -31,5 +35,10 @@ struct BenchBlockersOptions {
 // recomputed through the sphere hierarchy, against every sphere tested at every footprint
 // texel (no hierarchy), and the sphere-texel pairs per second of both.
 void run_blocker_motion_bench(const BenchBlockersOptions& o);
+
+// The mesh's self-shadow from each decomposition's spheres against its triangles ray-traced:
+// sky visibility about the surface's normals and the sun's disc, on each side of every face.
+void run_blocker_self_bench(const mesh::TriangleMesh& mesh, std::span<const blockers::SphereDecomposition> sets,
+                            int threads);
 
 }  // namespace ts::app

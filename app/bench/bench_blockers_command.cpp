@@ -298,6 +298,9 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         measure(blockers::SphereBlockerOptions::SunCaster::spheres, 0);
         for (int rays : {4, 8, 16, 32, 64}) measure(blockers::SphereBlockerOptions::SunCaster::triangles, rays);
     }
+    std::vector<blockers::SphereDecomposition> decompositions;
+    for (const Set& s : sets) decompositions.push_back(s.d);
+    run_blocker_self_bench(mesh, decompositions, o.threads);
     if (o.motion_frames > 0) run_blocker_motion_bench(o);
 }
 

@@ -63,6 +63,47 @@ sh::ShVec zenith_cosine_lobe() {
     return lobe;
 }
 
+sh::ShVec cosine_lobe_about(const sh::ShVec& z, const glm::dvec3& n) {
+    static_assert(sh::kBands == 4);
+    // About +z the lobe is zonal: its m = 0 coefficients are the ZH coefficients zh_l.
+    return sh::zh_rotate({z[0], z[2], z[6], z[12]}, n);
+}
+
+namespace {
+
+// A frame (t, b, n) about the unit normal n.
+void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+    t = glm::normalize(std::abs(n.z) < 0.9 ? glm::cross(n, glm::dvec3(0, 0, 1)) : glm::cross(n, glm::dvec3(1, 0, 0)));
+    b = glm::cross(n, t);
+}
+
+}  // namespace
+
+double reference_self_sky(const blockers::TriangleBvh& bvh, const glm::dvec3& point, const glm::dvec3& normal,
+                          int strata, double offset) {
+    glm::dvec3 t, b;
+    tangent_frame(normal, t, b);
+    const glm::dvec3 o = point + offset * normal;
+    const int s = std::max(1, strata);
+    int seen = 0;
+    for (int i = 0; i < s; ++i)
+        for (int j = 0; j < s; ++j) {
+            const double u = (i + 0.5) / s, phi = 2.0 * kPi * (j + 0.5) / s;
+            const double rho = std::sqrt(u), z = std::sqrt(1.0 - u);
+            seen += !bvh.occluded(o, rho * std::cos(phi) * t + rho * std::sin(phi) * b + z * normal);
+        }
+    return double(seen) / double(s * s);
+}
+
+double reference_self_sun(const blockers::TriangleBvh& bvh, const glm::dvec3& point, const glm::dvec3& normal,
+                          const glm::dvec3& sun, double sun_radius, int sun_samples, double offset) {
+    const glm::dvec3 o = point + offset * normal;
+    const std::vector<glm::dvec3> dirs = blockers::sun_disc_directions(sun, sun_radius, sun_samples);
+    int seen = 0;
+    for (const glm::dvec3& d : dirs) seen += !bvh.occluded(o, d);
+    return double(seen) / double(dirs.size());
+}
+
 PlacedTriangles place_triangles(const mesh::TriangleMesh& mesh, const mesh::Placement& placement, glm::dvec2 anchor,
                                 double ground_height_m) {
     const std::vector<glm::dvec3> p = placed_positions(mesh, placement, ground_height_m);

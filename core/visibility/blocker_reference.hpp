@@ -54,13 +54,26 @@ std::vector<float> reference_sun(const terrain::HeightGrid& grid, const PlacedTr
                                  const glm::dvec3& sun, double sun_radius, double curvature,
                                  const ReferenceOptions& options);
 
+// On the mesh itself (its self-shadow, docs/blockers.md "Mesh self-shadowing"): from a point of
+// its surface with unit normal `normal` (the side it faces), the cosine-weighted share of the
+// hemisphere about the normal that misses every triangle (strata x strata stratified rays), and
+// the share of the sun's disc that does (`sun_samples` rays). The rays start a hair off the
+// surface (`offset` metres along the normal) so the point's own face does not hide it.
+double reference_self_sky(const blockers::TriangleBvh& bvh, const glm::dvec3& point, const glm::dvec3& normal,
+                          int strata, double offset);
+double reference_self_sun(const blockers::TriangleBvh& bvh, const glm::dvec3& point, const glm::dvec3& normal,
+                          const glm::dvec3& sun, double sun_radius, int sun_samples, double offset);
+
 // The clamped cosine about the zenith, max(0, cos theta), projected onto the SH basis
 // (numerically, so no convention of the rotation formulas is assumed).
 sh::ShVec zenith_cosine_lobe();
+// The same lobe about the unit direction n, from zenith_cosine_lobe() computed once by the
+// caller (its zonal part turned to n).
+sh::ShVec cosine_lobe_about(const sh::ShVec& zenith_lobe, const glm::dvec3& n);
 
 // (1/pi) int exp(f) cos(theta) d omega over the upper hemisphere about the zenith, from 16
 // log-SH coefficients f (one texel's, strided by `stride` floats as in log_sh rasters);
-// lobe = zenith_cosine_lobe().
+// lobe = zenith_cosine_lobe(), or cosine_lobe_about(n) for a surface of normal n.
 double sky_visibility_of_log_sh(const float* f, std::size_t stride, sh::ExpMethod method, const sh::ShVec& lobe);
 
 }  // namespace ts::visibility

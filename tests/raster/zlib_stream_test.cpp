@@ -33,6 +33,14 @@ std::vector<std::uint8_t> tile_like_bytes(std::uint32_t seed) {
     return v;
 }
 
+// A tile at the data's edge: its first `blank` rows transparent (grey 0, alpha 0), the rest as
+// tile_like_bytes.
+std::vector<std::uint8_t> edge_tile_bytes(std::uint32_t seed, int blank) {
+    std::vector<std::uint8_t> v = tile_like_bytes(seed);
+    std::fill(v.begin(), v.begin() + std::ptrdiff_t(blank) * (1 + 2 * 256), std::uint8_t(0));
+    return v;
+}
+
 std::vector<std::uint8_t> compressed(Deflater d, int level, const std::vector<std::uint8_t>& in) {
     std::vector<std::uint8_t> out(zlib_bound(in.size()));
     out.resize(zlib_compress(d, level, in.data(), in.size(), out.data(), out.size()));
@@ -67,6 +75,24 @@ TEST(ZlibStream, TheBytesDependOnTheInputOnlyNotOnEarlierCallsOrTheStack) {
                     << (d == Deflater::isal ? "isal" : "libdeflate") << " level " << level << " after stack words "
                     << word;
         }
+}
+
+TEST(ZlibStream, AnEdgeTileDoesNotDependOnTheTilesBeforeIt) {
+    // Tiles at the data's edge are long runs of zeros: the deflater's match finder must not take
+    // what an earlier picture left in its tables for a match here (resume and merge compare the
+    // bytes of such tiles after a different predecessor).
+    for (const Deflater d : {Deflater::isal, Deflater::libdeflate})
+        for (int level = 0; level <= max_level(d); ++level)
+            for (int blank : {40, 128, 250}) {
+                const std::vector<std::uint8_t> in = edge_tile_bytes(777, blank);
+                std::vector<std::uint8_t> reference;
+                std::thread([&] { reference = compressed(d, level, in); }).join();
+                std::uint32_t seed = 1;
+                for (int other_blank : {0, 17, 64, 200, 255})
+                    EXPECT_EQ(compressed_after(edge_tile_bytes(seed++, other_blank), 0u, d, level, in), reference)
+                        << (d == Deflater::isal ? "isal" : "libdeflate") << " level " << level << ", " << blank
+                        << " blank rows after a tile with " << other_blank;
+            }
 }
 
 }  // namespace

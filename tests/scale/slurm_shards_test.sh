@@ -111,7 +111,16 @@ cat "$tmp/xyz/log/merge.out"
 $hashes "$tmp/single_xyz" >"$tmp/single_xyz.txt"
 $hashes "$tmp/merged_xyz" >"$tmp/merged_xyz.txt"
 n=$(grep -c '\.png ' "$tmp/single_xyz.txt")
-diff "$tmp/single_xyz.txt" "$tmp/merged_xyz.txt" >&2 || fail "merged XYZ differs from the single-process run"
+if ! diff "$tmp/single_xyz.txt" "$tmp/merged_xyz.txt" >&2; then
+  # What the difference is, for the log: the tiles' sizes, where their bytes first differ, and
+  # whether shard 1 wrote the tile before the cancel (its mtime is in before_mtimes.txt).
+  { diff "$tmp/single_xyz.txt" "$tmp/merged_xyz.txt" || true; } | sed -n 's/^< file \([^ ]*\) .*/\1/p' | while read -r f; do
+    echo "differing tile $f: single $(stat -c %s "$tmp/single_xyz/$f") bytes, merged $(stat -c %s "$tmp/merged_xyz/$f")" \
+      "bytes, first differences (offset, octal): $(cmp -l "$tmp/single_xyz/$f" "$tmp/merged_xyz/$f" 2>&1 | head -3 | tr '\n' ' ')" \
+      "; written by shard 1 before the cancel: $(grep -c "^$f " "$tmp/before_mtimes.txt" || true)" >&2
+  done
+  fail "merged XYZ differs from the single-process run"
+fi
 echo "merged XYZ equals the single run: $n tiles; shard 1 resumed $resumed of its tiles"
 
 echo "== 3. relight: 5 frames as a 2-shard array, merged"

@@ -7,7 +7,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/blockers/receiver_blockers.hpp"
 #include "core/blockers/self_shadow.hpp"
+#include "core/blockers/sun_disc_samples.hpp"
 #include "core/render/diffuse_band_correction.hpp"
 #include "core/render/transfer.hpp"
 #include "core/sh/slice_projector.hpp"
@@ -143,13 +145,32 @@ void MeshLighting::sun_visibility(const glm::dvec3& sun, std::vector<float>& out
             terrain[std::size_t(i)] = float(horizons_.sun_fraction({q.x, q.y}, q.z, sun, sphere_options_.sun_radius_rad));
         });
     }
+    // The sun on the mesh from its own triangles (sun_caster = triangles, as on the terrain):
+    // rays over the disc from each side of a corner, a hair off the surface along that side's
+    // normal so the corner's own faces do not hide it; else from its spheres, analytically.
+    const bool by_triangles = options_.self_shadow && spheres_ && spheres_->model_triangles &&
+                              sphere_options_.sun_caster == blockers::SphereBlockerOptions::SunCaster::triangles;
+    const std::vector<glm::dvec3> disc =
+        by_triangles ? blockers::sun_disc_directions(sun, sphere_options_.sun_radius_rad, sphere_options_.sun_rays)
+                     : std::vector<glm::dvec3>{};
+    const double offset =
+        by_triangles && !spheres_->hierarchy.nodes.empty() ? 1e-4 * spheres_->hierarchy.nodes[0].bound.radius : 0.0;
     parallel_for(int(corners), thread_count(options_.threads), [&](int k, int) {
-        double v = terrain[point_of_[std::size_t(k)]];
-        if (v > 0 && options_.self_shadow && spheres_)
-            v *= blockers::self_shadow_sun(spheres_->spheres, mesh_.positions[std::size_t(k)], sun,
-                                           sphere_options_.sun_radius_rad);
-        // Both sides of a corner stand at the same point: the sun reaches it or not alike.
-        out[std::size_t(k)] = out[corners + std::size_t(k)] = float(std::clamp(v, 0.0, 1.0));
+        const double v = terrain[point_of_[std::size_t(k)]];
+        const glm::dvec3& p = mesh_.positions[std::size_t(k)];
+        if (by_triangles) {
+            const glm::dvec3 n(mesh_.normals[std::size_t(k)]);
+            const double front = v > 0 ? blockers::sun_visible_past_triangles(*spheres_, p + offset * n, disc) : 0.0;
+            const double back = v > 0 ? blockers::sun_visible_past_triangles(*spheres_, p - offset * n, disc) : 0.0;
+            out[std::size_t(k)] = float(std::clamp(v * front, 0.0, 1.0));
+            out[corners + std::size_t(k)] = float(std::clamp(v * back, 0.0, 1.0));
+            return;
+        }
+        double w = v;
+        if (w > 0 && options_.self_shadow && spheres_)
+            w *= blockers::self_shadow_sun(spheres_->spheres, p, sun, sphere_options_.sun_radius_rad);
+        // Both sides of a corner stand at the same point: the spheres hide the sun from it or not alike.
+        out[std::size_t(k)] = out[corners + std::size_t(k)] = float(std::clamp(w, 0.0, 1.0));
     });
 }
 

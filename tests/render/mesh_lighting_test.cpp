@@ -107,6 +107,53 @@ TEST(MeshLighting, AReceiverInsideASphereIgnoresIt) {
     EXPECT_EQ(blockers::self_shadow_sun(two, {0, 0, 1.0}, -up), 1.0);
 }
 
+// A table: a 4 x 4 m top 3 m over a 10 x 10 m floor whose four triangles meet at its centre,
+// under the top. One sphere bounds it all.
+TEST(MeshLighting, TheTrianglesShadowTheMeshItselfWhereItsSpheresCannot) {
+    mesh::TriangleMesh table;
+    auto quad = [&](double h, double z) {
+        const glm::vec3 a(-h, -h, z), b(h, -h, z), c(h, h, z), d(-h, h, z);
+        for (const glm::vec3& p : {a, b, c, a, c, d}) table.positions.push_back(p);
+    };
+    quad(2.0, 3.0);
+    const glm::vec3 centre(0, 0, 0), corners[4] = {{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}};
+    for (int i = 0; i < 4; ++i)
+        for (const glm::vec3& p : {centre, corners[i], corners[(i + 1) % 4]}) table.positions.push_back(p);
+    table.normals.assign(table.positions.size(), glm::vec3(0, 0, 1));
+    table.material.assign(table.positions.size() / 3, 0);
+    table.materials.resize(1);
+    mesh::Placement place;
+    place.height_m = 100.0;  // far above the flat ground: only the table shadows itself
+    const glm::dvec2 anchor(30, 30);
+    const blockers::Sphere bound{{0, 0, 1.5}, std::hypot(5.0 * std::sqrt(2.0), 1.5)};
+    blockers::PlacedSpheres ps = blockers::place_spheres({&bound, 1}, place, anchor, 0.0);
+    const Terrain flat(61, 61, 5.0, [](double, double) { return 0.0; });
+    MeshLightingOptions o;
+    o.curvature = false;
+    const glm::dvec3 sun = sun_from(200, 85);
+    std::vector<float> by_spheres, by_triangles;
+    MeshLighting(flat.grid, place_mesh(table, place, anchor, 0.0), &ps, {}, o).sun_visibility(sun, by_spheres);
+    ps.model_triangles = blockers::model_triangle_bvh(table);
+    const MeshLighting lit(flat.grid, place_mesh(table, place, anchor, 0.0), &ps, {}, o);
+    lit.sun_visibility(sun, by_triangles);
+    const std::size_t n = lit.mesh().corners();
+    ASSERT_EQ(by_triangles.size(), 2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::vec3 p = table.positions[k];
+        const bool top = p.z > 1.0, under_top = !top && std::abs(p.x) < 2 && std::abs(p.y) < 2;
+        // Cast by the triangles: the top's upper side and the floor's open corners in the sun,
+        // the floor's centre under the top and the top's underside in shade.
+        EXPECT_EQ(by_triangles[k], top || !under_top ? 1.0f : 0.0f) << k;
+        // Under the floor's centre the floor itself hides the sun (the corners' undersides are on
+        // the plates' edges, where the disc's rays may pass beside them).
+        if (p == centre) {
+            EXPECT_EQ(by_triangles[n + k], 0.0f) << k;
+        }
+        // Every point lies inside the one sphere, which it ignores: the spheres see no shadow.
+        EXPECT_EQ(by_spheres[k], 1.0f) << k;
+    }
+}
+
 TEST(MeshLighting, FiveHundredOverlappingSpheresStayFiniteAndClamped) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -59,6 +59,39 @@ visibility::TexelRect bounding(const visibility::TexelRect& a, const visibility:
     return {std::min(a.col0, b.col0), std::min(a.row0, b.row0), std::max(a.col1, b.col1), std::max(a.row1, b.row1)};
 }
 
+// One frame's sun shadow of `b` on an unshadowed field against a reference over `rect`
+// (row-major inside it): the masks' IoU (shadow: less than half the disc; NaN when neither has
+// one), the RMSE of the visible share, and the frame's time.
+struct SunFigures {
+    double iou = 0, rmse = 0, seconds = 0;
+    long long ref_texels = 0, ours_texels = 0;
+};
+SunFigures sun_figures(const terrain::HeightGrid& grid, const blockers::SphereBlockers& b, double curvature,
+                       int threads, double sun_az, double sun_el, const visibility::TexelRect& rect,
+                       const std::vector<float>& ref) {
+    SunFigures f;
+    std::vector<float> vis(std::size_t(grid.width) * std::size_t(grid.height), 1.0f);
+    const visibility::BlockerSunShadow shadow(grid, b, curvature, threads);
+    const Stopwatch t;
+    shadow.apply(sun_az, sun_el, vis);
+    f.seconds = t.seconds();
+    const std::size_t w = std::size_t(rect.col1 - rect.col0);
+    long long both = 0, either = 0, m = 0;
+    double se = 0;
+    for (int r = rect.row0; r < rect.row1; ++r)
+        for (int c = rect.col0; c < rect.col1; ++c) {
+            const float want = ref[std::size_t(r - rect.row0) * w + std::size_t(c - rect.col0)];
+            const float ours = vis[std::size_t(r) * std::size_t(grid.width) + std::size_t(c)];
+            if (std::isnan(want)) continue;
+            const bool a = ours < 0.5f, bb = want < 0.5f;
+            both += a && bb, either += a || bb, f.ref_texels += bb, f.ours_texels += a;
+            se += double(ours - want) * double(ours - want), ++m;
+        }
+    f.iou = either ? double(both) / double(either) : NAN;
+    f.rmse = m ? std::sqrt(se / double(m)) : 0.0;
+    return f;
+}
+
 void write_csv(const std::string& path, const std::vector<Row>& rows) {
     std::ostringstream t;
     t << "spheres,excess_volume_ratio,decompose_s,sky_texels,sky_rmse,sky_max_error,sky_bias,ref_sky_shadow_mean,"
@@ -159,7 +192,7 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
     const std::size_t texels = base.horizons.texels();
     const sh::ShVec lobe = visibility::zenith_cosine_lobe();
     const sh::ExpMethod exp = sh::ExpMethod::scaling_squaring;  // the renderer's default
-    const int sky_w = sky_rect.col1 - sky_rect.col0, sun_w = sun_rect.col1 - sun_rect.col0;
+    const int sky_w = sky_rect.col1 - sky_rect.col0;
     std::vector<Row> rows;
     std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s %8s %8s %8s | %9s %9s %9s %9s\n", "spheres",
                 "excess", "sky_rmse", "sky_max", "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms",
@@ -203,37 +236,12 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
         row.sky_rmse = n ? std::sqrt(se / n) : 0.0, row.sky_bias = n ? bias / n : 0.0, row.ref_shadow_mean = n ? dark / n : 0.0;
 
         // The sun shadow cast by the spheres, then by the triangles where the spheres shadow.
-        struct SunFigures {
-            double iou = 0, rmse = 0, seconds = 0;
-            long long ref_texels = 0, ours_texels = 0;
-        };
-        auto sun_figures = [&](const blockers::SphereBlockers& b) {
-            SunFigures f;
-            std::vector<float> vis(texels, 1.0f);
-            const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);
-            const Stopwatch t2;
-            shadow.apply(o.sun_az, o.sun_el, vis);
-            f.seconds = t2.seconds();
-            long long both = 0, either = 0, m = 0;
-            double sse = 0;
-            for (int r = sun_rect.row0; r < sun_rect.row1; ++r)
-                for (int c = sun_rect.col0; c < sun_rect.col1; ++c) {
-                    const float ref = sun_ref[std::size_t(r - sun_rect.row0) * sun_w + std::size_t(c - sun_rect.col0)];
-                    const float ours = vis[std::size_t(r) * grid.width + c];
-                    if (std::isnan(ref)) continue;
-                    const bool a = ours < 0.5f, bb = ref < 0.5f;
-                    both += a && bb, either += a || bb, f.ref_texels += bb, f.ours_texels += a;
-                    sse += double(ours - ref) * double(ours - ref), ++m;
-                }
-            f.iou = either ? double(both) / double(either) : NAN;
-            f.rmse = m ? std::sqrt(sse / m) : 0.0;
-            return f;
-        };
         blockers::SphereBlockers by_spheres = s.b, by_triangles = s.b;
         by_spheres.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::spheres;
         by_triangles.options.sun_caster = blockers::SphereBlockerOptions::SunCaster::triangles;
         by_triangles.meshes[0].model_triangles = model_triangles;
-        const SunFigures fs = sun_figures(by_spheres), ft = sun_figures(by_triangles);
+        const SunFigures fs = sun_figures(grid, by_spheres, curvature, o.threads, o.sun_az, o.sun_el, sun_rect, sun_ref);
+        const SunFigures ft = sun_figures(grid, by_triangles, curvature, o.threads, o.sun_az, o.sun_el, sun_rect, sun_ref);
         row.sun_iou = fs.iou, row.sun_rmse = fs.rmse, row.sun_s = fs.seconds;
         row.sun_ref_texels = fs.ref_texels, row.sun_ours_texels = fs.ours_texels;
         row.tri_iou = ft.iou, row.tri_rmse = ft.rmse, row.tri_s = ft.seconds;
@@ -272,27 +280,12 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
             blockers::SphereBlockers b = at64->b;
             b.options.sun_caster = caster, b.options.sun_rays = rays;
             b.meshes[0].model_triangles = model_triangles;
-            std::vector<float> vis(texels, 1.0f);
-            const visibility::BlockerSunShadow shadow(grid, b, curvature, o.threads);
-            const Stopwatch t;
-            shadow.apply(o.sun_az, o.sun_el, vis);
-            const double seconds = t.seconds();
-            long long both = 0, either = 0, m = 0;
-            double se = 0;
-            for (int r = sun_rect.row0; r < sun_rect.row1; ++r)
-                for (int c = sun_rect.col0; c < sun_rect.col1; ++c) {
-                    const float ref = sun_fine[std::size_t(r - sun_rect.row0) * sun_w + std::size_t(c - sun_rect.col0)];
-                    const float ours = vis[std::size_t(r) * grid.width + c];
-                    if (std::isnan(ref)) continue;
-                    both += ours < 0.5f && ref < 0.5f, either += ours < 0.5f || ref < 0.5f;
-                    se += double(ours - ref) * double(ours - ref), ++m;
-                }
+            const SunFigures f = sun_figures(grid, b, curvature, o.threads, o.sun_az, o.sun_el, sun_rect, sun_fine);
             const bool spheres = caster == blockers::SphereBlockerOptions::SunCaster::spheres;
             const bool is_default = !spheres && rays == blockers::SphereBlockerOptions{}.sun_rays;
             char what[64];
             std::snprintf(what, sizeof what, spheres ? "spheres" : "triangles %d rays", rays);
-            std::printf("sun caster %-20s ms %8.3f rmse %.5f iou %.4f%s\n", what, 1e3 * seconds,
-                        m ? std::sqrt(se / double(m)) : 0.0, either ? double(both) / double(either) : 1.0,
+            std::printf("sun caster %-20s ms %8.3f rmse %.5f iou %.4f%s\n", what, 1e3 * f.seconds, f.rmse, f.iou,
                         is_default ? "  (default)" : "");
         };
         measure(blockers::SphereBlockerOptions::SunCaster::spheres, 0);

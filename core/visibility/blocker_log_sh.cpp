@@ -57,6 +57,22 @@ RectNormals normals_of(const terrain::HeightGrid& g, const TexelRect& rect, int 
 }
 
 // Whether a mesh's bounding sphere subtends more than the threshold from receiver q (or holds it).
+// Each mesh's sky footprint inside the window, and the rectangle bounding them all.
+struct WindowFootprints {
+    std::vector<TexelRect> rects;
+    TexelRect all;
+};
+WindowFootprints window_footprints(const terrain::HeightGrid& grid, const ReceiverWindow& window,
+                                   const blockers::SphereBlockers& blockers, double min_sine) {
+    WindowFootprints fp;
+    const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
+    for (const blockers::PlacedSpheres& m : blockers.meshes) {
+        fp.rects.push_back(intersect(sky_footprint(grid, m, min_sine), win));
+        fp.all = bounding(fp.all, fp.rects.back());
+    }
+    return fp;
+}
+
 bool bounding_sphere_counts(const blockers::PlacedSpheres& m, const glm::dvec3& q, double min_sine) {
     if (m.hierarchy.nodes.empty()) return false;
     const blockers::Sphere& root = m.hierarchy.nodes[0].bound;
@@ -74,13 +90,9 @@ BlockerStageStats add_blocker_log_sh(const terrain::HeightGrid& grid, const Rece
     if (blockers.empty()) return stats;
     const blockers::SphereBlockerOptions& opt = blockers.options;
     const double min_sine = blockers::min_cap_sine(opt.min_solid_angle_sr);
-    const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
-    std::vector<TexelRect> rects;
-    TexelRect all;
-    for (const blockers::PlacedSpheres& m : blockers.meshes) {
-        rects.push_back(intersect(sky_footprint(grid, m, min_sine), win));
-        all = bounding(all, rects.back());
-    }
+    const WindowFootprints fp = window_footprints(grid, window, blockers, min_sine);
+    const std::vector<TexelRect>& rects = fp.rects;
+    const TexelRect& all = fp.all;
     if (all.empty()) return stats;
     const RectNormals normals = normals_of(grid, all, threads);
     // Without culling: each mesh's spheres as lanes in its anchor frame, where the receiver is
@@ -158,13 +170,9 @@ FlatBlockerReceivers flat_blocker_receivers(const terrain::HeightGrid& grid, con
     FlatBlockerReceivers out;
     if (blockers.empty() || !device_can_add_blockers(blockers)) return out;
     const double min_sine = blockers::min_cap_sine(blockers.options.min_solid_angle_sr);
-    const TexelRect win{window.col0, window.row0, window.col0 + window.width, window.row0 + window.height};
-    std::vector<TexelRect> rects;
-    TexelRect all;
-    for (const blockers::PlacedSpheres& m : blockers.meshes) {
-        rects.push_back(intersect(sky_footprint(grid, m, min_sine), win));
-        all = bounding(all, rects.back());
-    }
+    const WindowFootprints fp = window_footprints(grid, window, blockers, min_sine);
+    const std::vector<TexelRect>& rects = fp.rects;
+    const TexelRect& all = fp.all;
     if (all.empty()) return out;
     const RectNormals normals = normals_of(grid, all, threads);
     for (int r = all.row0; r < all.row1; ++r)

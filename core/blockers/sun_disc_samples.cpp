@@ -5,12 +5,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/util/unit_frame.hpp"
+
 namespace ts::blockers {
 
 std::vector<glm::dvec3> sun_disc_directions(const glm::dvec3& sun, double radius, int count) {
-    const glm::dvec3 e1 = glm::normalize(std::abs(sun.z) < 0.9 ? glm::cross(sun, glm::dvec3(0, 0, 1))
-                                                               : glm::cross(sun, glm::dvec3(1, 0, 0)));
-    const glm::dvec3 e2 = glm::cross(sun, e1);
+    glm::dvec3 e1, e2;
+    unit_frame(sun, e1, e2);
     const int m = std::max(1, count);
     std::vector<glm::dvec3> dirs;
     dirs.reserve(std::size_t(m));

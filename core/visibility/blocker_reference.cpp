@@ -10,6 +10,7 @@
 #include "core/sh/sh_exp.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/util/unit_frame.hpp"
 
 namespace ts::visibility {
 namespace {
@@ -69,20 +70,10 @@ sh::ShVec cosine_lobe_about(const sh::ShVec& z, const glm::dvec3& n) {
     return sh::zh_rotate({z[0], z[2], z[6], z[12]}, n);
 }
 
-namespace {
-
-// A frame (t, b, n) about the unit normal n.
-void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-    t = glm::normalize(std::abs(n.z) < 0.9 ? glm::cross(n, glm::dvec3(0, 0, 1)) : glm::cross(n, glm::dvec3(1, 0, 0)));
-    b = glm::cross(n, t);
-}
-
-}  // namespace
-
 double reference_self_sky(const blockers::TriangleBvh& bvh, const glm::dvec3& point, const glm::dvec3& normal,
                           int strata, double offset) {
     glm::dvec3 t, b;
-    tangent_frame(normal, t, b);
+    unit_frame(normal, t, b);
     const glm::dvec3 o = point + offset * normal;
     const int s = std::max(1, strata);
     int seen = 0;

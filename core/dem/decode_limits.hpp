@@ -10,6 +10,10 @@ namespace ts::dem {
 // Bytes one cell costs in a Dem: its float height and its void flag.
 inline constexpr std::uint64_t kBytesPerCell = sizeof(float) + 1;
 
+// The most cells one Dem holds (read whole or mosaicked). Readers that stream windows
+// (DemSource) need no such cap: only each side must fit an int.
+inline constexpr std::uint64_t kMaxDemCells = std::uint64_t(1) << 31;
+
 // Throws ts::InputError "source: ..." when `what` (e.g. "decoding") of width x height cells,
 // plus `buffer_bytes` of decoding buffers, needs more than ts::available_memory().
 void require_memory_for(const std::string& source, const std::string& what, std::uint64_t width, std::uint64_t height,

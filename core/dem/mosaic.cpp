@@ -1,6 +1,7 @@
 #include "core/dem/mosaic.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
 
@@ -20,17 +21,17 @@ bool close(double a, double b) { return std::abs(a - b) <= kResolutionTolerance 
 
 }  // namespace
 
-Dem mosaic(std::vector<Dem> parts) {
+MosaicPlan plan_mosaic(const std::vector<DemLayout>& parts) {
     if (parts.empty()) throw InputError("no DEM given");
-    if (parts.size() == 1) return std::move(parts.front());
+    if (parts.size() == 1) return {parts.front(), {{0, 0}}};
 
-    const Dem& first = parts.front();
+    const DemLayout& first = parts.front();
     const geo::GeoTransform& t0 = first.georef.transform();
     if (t0.dx_row != 0 || t0.dy_col != 0) throw input_error(first.source, "a rotated grid cannot be mosaicked");
     // Offsets of each part in cells of the first.
     std::vector<std::pair<long, long>> offsets;
     long min_c = 0, min_r = 0, max_c = 0, max_r = 0;
-    for (const Dem& d : parts) {
+    for (const DemLayout& d : parts) {
         const geo::GeoTransform& t = d.georef.transform();
         if (!d.georef.crs().same_as(first.georef.crs()))
             throw input_error(d.source, "CRS " + d.georef.crs().name() + " differs from " + first.source + " (" +
@@ -50,37 +51,59 @@ Dem mosaic(std::vector<Dem> parts) {
         max_r = std::max(max_r, r + d.height);
     }
     const long width = max_c - min_c, height = max_r - min_r;
-    if (width * height > (long(1) << 31)) throw input_error(first.source, "mosaic too large");
-    // Tiles far apart on one grid span a large, mostly empty box.
-    require_memory_for(first.source, "a mosaic of", std::uint64_t(width), std::uint64_t(height));
+    if (width > INT_MAX || height > INT_MAX) throw input_error(first.source, "mosaic too large");
 
-    Dem out;
+    MosaicPlan plan;
+    DemLayout& out = plan.layout;
     out.width = int(width);
     out.height = int(height);
-    out.z.assign(std::size_t(width * height), std::numeric_limits<float>::quiet_NaN());
-    out.void_mask.assign(out.z.size(), 1);
     out.vertical_datum = first.vertical_datum;
     for (std::size_t k = 0; k < parts.size(); ++k) {
-        const Dem& d = parts[k];
-        if (d.vertical_datum != out.vertical_datum) out.vertical_datum = "mixed";
-        out.source += (k ? " + " : "") + d.source;
-        const long c0 = offsets[k].first - min_c, r0 = offsets[k].second - min_r;
-        for (int r = 0; r < d.height; ++r)
-            for (int c = 0; c < d.width; ++c) {
-                const std::size_t dst = out.index(int(c0 + c), int(r0 + r));
-                const std::size_t src = d.index(c, r);
-                // A shared edge cell keeps the first valid height; a void never hides a height.
-                if (!d.void_mask[src] && out.void_mask[dst]) {
-                    out.z[dst] = d.z[src];
-                    out.void_mask[dst] = 0;
-                }
-            }
+        if (parts[k].vertical_datum != out.vertical_datum) out.vertical_datum = "mixed";
+        out.source += (k ? " + " : "") + parts[k].source;
+        plan.offsets.emplace_back(int(offsets[k].first - min_c), int(offsets[k].second - min_r));
     }
     geo::GeoTransform t = t0;
     const glm::dvec2 origin = t0.apply(double(min_c), double(min_r));
     t.x0 = origin.x;
     t.y0 = origin.y;
     out.georef = geo::Georef(out.width, out.height, t, first.georef.crs_ptr(), first.georef.pixel_is_area());
+    return plan;
+}
+
+void merge_into(const float* z, const std::uint8_t* voids, float* out_z, std::uint8_t* out_voids, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+        if (!voids[i] && out_voids[i]) {
+            out_z[i] = z[i];
+            out_voids[i] = 0;
+        }
+}
+
+Dem mosaic(std::vector<Dem> parts) {
+    if (parts.empty()) throw InputError("no DEM given");
+    if (parts.size() == 1) return std::move(parts.front());
+
+    std::vector<DemLayout> layouts;
+    layouts.reserve(parts.size());
+    for (const Dem& d : parts) layouts.push_back(layout_of(d));
+    const MosaicPlan plan = plan_mosaic(layouts);
+    const std::string& first = parts.front().source;
+    const std::uint64_t width = std::uint64_t(plan.layout.width), height = std::uint64_t(plan.layout.height);
+    if (width * height > kMaxDemCells) throw input_error(first, "mosaic too large");
+    // Tiles far apart on one grid span a large, mostly empty box.
+    require_memory_for(first, "a mosaic of", width, height);
+
+    Dem out = allocate_dem(plan.layout);
+    std::fill(out.z.begin(), out.z.end(), std::numeric_limits<float>::quiet_NaN());
+    std::fill(out.void_mask.begin(), out.void_mask.end(), std::uint8_t(1));
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Dem& d = parts[k];
+        const auto [c0, r0] = plan.offsets[k];
+        for (int r = 0; r < d.height; ++r) {
+            const std::size_t src = d.index(0, r), dst = out.index(c0, r0 + r);
+            merge_into(&d.z[src], &d.void_mask[src], &out.z[dst], &out.void_mask[dst], std::size_t(d.width));
+        }
+    }
     return out;
 }
 

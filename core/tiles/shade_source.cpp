@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
-#include <limits>
 #include <memory>
 
 #include "core/material/material.hpp"
@@ -18,10 +16,9 @@
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/dem_level.hpp"
-#include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/far_field_horizons.hpp"
-#include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/visibility_backend.hpp"
+#include "core/visibility/window_visibility_backend.hpp"
 
 namespace ts::tiles {
 namespace {
@@ -86,83 +83,8 @@ double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
     return render::luminance(radiance[std::size_t(n / 2) * n + n / 2]);
 }
 
-struct Rect {
-    int col0 = 0, row0 = 0, width = 0, height = 0;
-};
-
-// The horizons (and what derives from them) of the receivers of a window of the level. With a
-// far field: the exact sweep over the window alone, raised by the far field's horizons for the
-// core's receivers (the halo's are only there for the core's sun shadows and normals). Without
-// one: the exact sweep of the window's receivers over every texel of the level (the same
-// horizons as the whole-level computation, at a sweep of the whole level per block).
-class LevelWindowVisibility final : public visibility::VisibilityBackend {
-public:
-    LevelWindowVisibility(const terrain::HeightGrid& level, const Rect& window, const Rect& core,
-                          const visibility::FarField* far)
-        : level_(level), window_(window), core_(core), far_(far) {}
-    std::string name() const override { return cpu_->name(); }
-    visibility::VisibilityResult compute(const terrain::HeightGrid& window_grid,
-                                         const visibility::VisibilityRequest& request) override {
-        visibility::VisibilityRequest r = request;
-        if (!far_) {
-            r.horizon.window = {window_.col0, window_.row0, window_.width, window_.height};
-            return cpu_->compute(level_, r);
-        }
-        visibility::check_request(r);
-        // Only the core's receivers: the halo's values are never kept, and void (NaN) receivers
-        // cost nothing in the products and the transfer.
-        r.horizon.window = {core_.col0 - window_.col0, core_.row0 - window_.row0, core_.width, core_.height};
-        visibility::VisibilityResult result;
-        result.horizons = visibility::compute_horizons(window_grid, r.horizon);
-        far_->raise(result.horizons, {core_.col0, core_.row0, core_.width, core_.height},
-                    {core_.col0, core_.row0, core_.width, core_.height}, level_);
-        grow_to_window(result.horizons);
-        r.horizon.window = {};
-        result.stages.push_back({"horizons (exact in the window, far field beyond)", "cpu", 0.0});
-        visibility::complete_on_cpu(window_grid, r, result);
-        return result;
-    }
-
-private:
-    // The core's horizon set as the window's, the halo's receivers void (NaN), in place: every
-    // value moves to an offset at or past its own, so copying from the end never overwrites
-    // one not yet moved.
-    void grow_to_window(visibility::HorizonSet& set) const {
-        const std::size_t cw = std::size_t(core_.width), ch = std::size_t(core_.height);
-        const std::size_t ww = std::size_t(window_.width), wn = ww * std::size_t(window_.height), cn = cw * ch;
-        const std::size_t dc = std::size_t(core_.col0 - window_.col0), dr = std::size_t(core_.row0 - window_.row0);
-        const std::size_t planes = std::size_t(set.directions);
-        set.angle.resize(planes * wn);
-        float* a = set.angle.data();
-        const float nan = std::numeric_limits<float>::quiet_NaN();
-        for (std::size_t d = planes; d-- > 0;) {
-            float* to = a + d * wn;
-            for (std::size_t r = ch; r-- > 0;) {
-                float* row = to + (dr + r) * ww;
-                std::memmove(row + dc, a + d * cn + r * cw, cw * sizeof(float));
-            }
-        }
-        // The halo: every window texel outside the core, in every plane.
-        for (std::size_t d = 0; d < planes; ++d) {
-            float* to = a + d * wn;
-            for (std::size_t r = 0; r < std::size_t(window_.height); ++r) {
-                float* row = to + r * ww;
-                if (r < dr || r >= dr + ch) {
-                    std::fill(row, row + ww, nan);
-                } else {
-                    std::fill(row, row + dc, nan);
-                    std::fill(row + dc + cw, row + ww, nan);
-                }
-            }
-        }
-        set.width = window_.width, set.height = window_.height;
-    }
-
-    const terrain::HeightGrid& level_;
-    Rect window_, core_;
-    const visibility::FarField* far_;
-    std::unique_ptr<visibility::VisibilityBackend> cpu_ = visibility::make_cpu_visibility_backend();
-};
+// A rectangle of the level: a block's core or window.
+using Rect = visibility::ReceiverWindow;
 
 // A window of a grid as a grid of its own, its heights (and void mask) copied into `z`/`voids`.
 terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,
@@ -277,7 +199,7 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
                 std::vector<float> sz;
                 std::vector<std::uint8_t> svoids;
                 const terrain::HeightGrid g = window_grid(grid, w, sz, svoids);
-                result = LevelWindowVisibility(grid, w, core, far.get()).compute(g, request);
+                result = visibility::WindowFarFieldVisibility(w, core, *far).compute(g, request);
             } else {
                 result = visibility::make_cpu_visibility_backend()->compute(grid, request);
             }
@@ -287,20 +209,17 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
                 values[k] = raster::srgb_eotf(std::clamp((v - kSvfBlack) / (1.0f - kSvfBlack), 0.0f, 1.0f));
             }
         } else {
-            std::unique_ptr<LevelWindowVisibility> backend;
+            std::unique_ptr<visibility::WindowFarFieldVisibility> backend;
             terrain::HeightGrid g = grid, tg = true_grid;
             OuterSunShadow outer_sun;
-            if (far)
-                outer_sun = [&far, &grid, &w, &core](const render::SunState& sun, std::vector<float>& vis) {
-                    far->limit_sun(sun.azimuth_deg, sun.elevation_deg, visibility::SunSweepOptions{}.sun_radius_rad,
-                                   {w.col0, w.row0, w.width, w.height}, {core.col0, core.row0, core.width, core.height},
-                                   grid, vis.data());
-                };
             if (!whole) {
                 g = window_grid(grid, w, wz, wvoids);
                 if (s.style == TileStyle::color) tg = window_grid(true_grid, w, wtrue, wtrue_voids);
-                backend = std::make_unique<LevelWindowVisibility>(grid, w, core, far.get());
+                backend = far ? std::make_unique<visibility::WindowFarFieldVisibility>(w, core, *far)
+                              : std::make_unique<visibility::WindowFarFieldVisibility>(w, core, grid);
             }
+            // The far field shades the core from the sun past the halo (the sweep's shadows end there).
+            if (far) outer_sun = visibility::far_field_sun_shadow(w, core, *far, g);
             const std::size_t m = std::size_t(w.width) * std::size_t(w.height);
             if (s.style == TileStyle::relief) {
                 const auto radiance = render_frame(g, grey_materials(m, 1.0f), bs, whole ? progress : nullptr, backend.get(), outer_sun);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
@@ -17,20 +19,34 @@ namespace {
 
 constexpr double kNoSlope = -std::numeric_limits<double>::infinity();
 
-// The grid's mean level `shift` (2x2 steps as the pyramid takes them) and its row spacing.
+void check_options(const FarFieldOptions& options) {
+    if (!(options.start_texels >= 1)) throw InputError("far field: the start must be at least 1 texel");
+    if (options.samples_per_octave < 1 || options.sun_samples_per_octave < 1)
+        throw InputError("far field: at least 1 sample per octave");
+}
+
+// Texels along one side of a grid's level `shift` (each 2x2 step rounds up).
+int level_size(int level0, int shift) {
+    for (int k = 0; k < shift; ++k) level0 = (level0 + 1) / 2;
+    return level0;
+}
+
+// A mean level of the grid (2x2 steps as the pyramid takes them) and its row spacing.
 struct CoarseCopy {
     std::vector<float> z;
     int width = 0, height = 0;
     std::vector<double> dx_m, dy_m;
 };
 
-CoarseCopy coarse_copy(const terrain::HeightGrid& grid, int shift, int threads) {
+// `steps` more 2x2 steps from the level `from`; the first step reads `from` in place, so a
+// whole grid is never copied.
+CoarseCopy coarse_copy(const terrain::HeightGrid& from, int steps, int threads) {
     CoarseCopy c;
-    c.z.assign(grid.z.begin(), grid.z.end());
-    c.width = grid.width, c.height = grid.height;
-    c.dx_m = grid.dx_m, c.dy_m = grid.dy_m;
-    for (int k = 0; k < shift; ++k) {
-        c.z = terrain::downsample_2x2(c.z.data(), c.width, c.height, false, threads);
+    c.width = from.width, c.height = from.height;
+    c.dx_m = from.dx_m, c.dy_m = from.dy_m;
+    if (steps == 0) c.z.assign(from.z.begin(), from.z.end());
+    for (int k = 0; k < steps; ++k) {
+        c.z = terrain::downsample_2x2(k == 0 ? from.z.data() : c.z.data(), c.width, c.height, false, threads);
         const int h = (c.height + 1) / 2;
         std::vector<double> dx(std::size_t(h), 0.0), dy(std::size_t(h), 0.0);
         for (int r = 0; r < h; ++r) {
@@ -44,29 +60,53 @@ CoarseCopy coarse_copy(const terrain::HeightGrid& grid, int shift, int threads) 
     return c;
 }
 
+// A grid of row spacing alone: what RowMetrics reads of a grid the far field never holds.
+terrain::HeightGrid spacing_only(int width, int height, std::vector<double> dx_m, std::vector<double> dy_m) {
+    terrain::HeightGrid g;
+    g.width = width, g.height = height;
+    g.dx_m = std::move(dx_m), g.dy_m = std::move(dy_m);
+    return g;
+}
+
 }  // namespace
 
-FarField::FarField(const terrain::HeightGrid& grid, const FarFieldOptions& options)
-    : options_(options), width_(grid.width), height_(grid.height), metrics_(grid) {
-    if (!(options.start_texels >= 1)) throw InputError("far field: the start must be at least 1 texel");
-    if (options.samples_per_octave < 1 || options.sun_samples_per_octave < 1)
-        throw InputError("far field: at least 1 sample per octave");
+int FarField::coarse_shift_for(const FarFieldOptions& options, int width0, int height0) {
+    check_options(options);
     // The first far sample of the denser schedule reads the finest level any sample reads (the
     // gap grows with tau).
     constexpr int kAnyLevels = 64;
     const int densest = std::max(options.samples_per_octave, options.sun_samples_per_octave);
-    shift_ = shared::ts_pyramid_sample_level(options.start_texels, std::exp2(1.0 / densest), kAnyLevels);
-    while (shift_ > 0 && (std::max(width_, height_) >> shift_) < 2) --shift_;
-    CoarseCopy coarse = coarse_copy(grid, shift_, options.threads);
+    int shift = shared::ts_pyramid_sample_level(options.start_texels, std::exp2(1.0 / densest), kAnyLevels);
+    while (shift > 0 && (std::max(width0, height0) >> shift) < 2) --shift;
+    return shift;
+}
+
+FarField::FarField(const terrain::HeightGrid& grid, const FarFieldOptions& options)
+    : FarField(grid, 0, grid.width, grid.height, grid.dx_m, grid.dy_m, highest_height(grid), options) {}
+
+FarField::FarField(const terrain::HeightGrid& coarse, int coarse_shift, int width0, int height0,
+                   std::vector<double> dx0_m, std::vector<double> dy0_m, float z_top, const FarFieldOptions& options)
+    : options_(options),
+      width_(width0),
+      height_(height0),
+      shift_(std::max(coarse_shift_for(options, width0, height0), coarse_shift)),
+      metrics_(spacing_only(width0, height0, std::move(dx0_m), std::move(dy0_m))),
+      z_top_(z_top) {
+    if (coarse_shift < 0 || coarse.width != level_size(width0, coarse_shift) ||
+        coarse.height != level_size(height0, coarse_shift) ||
+        coarse.z.size() != std::size_t(coarse.width) * std::size_t(coarse.height) ||
+        coarse.dx_m.size() != std::size_t(coarse.height) || coarse.dy_m.size() != std::size_t(coarse.height))
+        throw InputError("far field: the coarse copy is not level " + std::to_string(coarse_shift) + " of a " +
+                         std::to_string(width0) + "x" + std::to_string(height0) + " grid");
+    CoarseCopy copy = coarse_copy(coarse, shift_ - coarse_shift, options.threads);
     terrain::HeightGrid cg;
-    cg.width = coarse.width, cg.height = coarse.height;
-    cg.z = coarse.z;
-    cg.dx_m = std::move(coarse.dx_m), cg.dy_m = std::move(coarse.dy_m);
+    cg.width = copy.width, cg.height = copy.height;
+    cg.z = copy.z;
+    cg.dx_m = std::move(copy.dx_m), cg.dy_m = std::move(copy.dy_m);
     terrain::PyramidOptions po;
     po.threads = options.threads;
     po.tile_size = 64;
     pyramid_ = terrain::HeightPyramid(cg, po);
-    z_top_ = highest_height(grid);
     curvature_ = curvature_factor(options.curvature);
     const int levels = shift_ + pyramid_.level_count();
     const double max_tau = pyramid_max_tau(width_, height_);
@@ -105,9 +145,29 @@ double FarField::march(const std::vector<PyramidSample>& samples, double col, do
     return best;
 }
 
+void FarField::check_window(const ReceiverWindow& receivers, const terrain::HeightGrid& window,
+                            const WindowOrigin& window_origin) const {
+    const int c0 = window_origin.col0, r0 = window_origin.row0;
+    if (c0 < 0 || r0 < 0 || c0 + window.width > width_ || r0 + window.height > height_)
+        throw InputError("far field: the window lies outside the grid it was built on");
+    if (receivers.col0 < c0 || receivers.row0 < r0 || receivers.col0 + receivers.width > c0 + window.width ||
+        receivers.row0 + receivers.height > r0 + window.height)
+        throw InputError("far field: receivers outside the window grid");
+}
+
 void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_radius_rad, const ReceiverWindow& origin,
                          const ReceiverWindow& receivers, const terrain::HeightGrid& grid, float* vis) const {
     if (grid.width != width_ || grid.height != height_) throw InputError("far field: not the grid it was built on");
+    limit_sun(azimuth_deg, elevation_deg, sun_radius_rad, origin, receivers, grid, {0, 0}, vis);
+}
+
+void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_radius_rad, const ReceiverWindow& origin,
+                         const ReceiverWindow& receivers, const terrain::HeightGrid& window,
+                         const WindowOrigin& window_origin, float* vis) const {
+    check_window(receivers, window, window_origin);
+    if (receivers.col0 < origin.col0 || receivers.row0 < origin.row0 ||
+        receivers.col0 + receivers.width > origin.col0 + origin.width)
+        throw InputError("far field: receivers outside the sun visibility's window");
     const double phi = (90.0 - azimuth_deg) * kPi / 180.0, elevation = elevation_deg * kPi / 180.0;
     // A far horizon below this cannot touch the disc: skip the atan and the segment area.
     const double clear = std::tan(std::min(elevation - sun_radius_rad, kPi / 2 - 1e-6));
@@ -118,7 +178,7 @@ void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_ra
         const double step_c = std::cos(phi) * unit / dx, step_r = -std::sin(phi) * unit / dy;
         for (int lc = 0; lc < receivers.width; ++lc) {
             const int col = receivers.col0 + lc;
-            const float z0 = grid.at(col, row);
+            const float z0 = window.at(col - window_origin.col0, row - window_origin.row0);
             float& v = vis[std::size_t(row - origin.row0) * std::size_t(origin.width) + std::size_t(col - origin.col0)];
             if (std::isnan(z0) || std::isnan(v) || v <= 0.0f) continue;
             const double best = march(sun_samples_, col, row, z0, step_c, step_r, unit, clear, dark);
@@ -131,10 +191,16 @@ void FarField::limit_sun(double azimuth_deg, double elevation_deg, double sun_ra
 void FarField::raise(HorizonSet& set, const ReceiverWindow& origin, const ReceiverWindow& receivers,
                      const terrain::HeightGrid& grid) const {
     if (grid.width != width_ || grid.height != height_) throw InputError("far field: not the grid it was built on");
+    raise(set, origin, receivers, grid, {0, 0});
+}
+
+void FarField::raise(HorizonSet& set, const ReceiverWindow& origin, const ReceiverWindow& receivers,
+                     const terrain::HeightGrid& window, const WindowOrigin& window_origin) const {
     if (receivers.col0 < origin.col0 || receivers.row0 < origin.row0 ||
         receivers.col0 + receivers.width > origin.col0 + set.width ||
         receivers.row0 + receivers.height > origin.row0 + set.height)
         throw InputError("far field: receivers outside the horizon set's window");
+    check_window(receivers, window, window_origin);
     const std::size_t nd = std::size_t(set.directions);
     std::vector<double> cos_phi(nd), sin_phi(nd);
     for (std::size_t d = 0; d < nd; ++d)
@@ -146,7 +212,7 @@ void FarField::raise(HorizonSet& set, const ReceiverWindow& origin, const Receiv
         for (std::size_t d = 0; d < nd; ++d) step_c[d] = cos_phi[d] * unit / dx, step_r[d] = -sin_phi[d] * unit / dy;
         for (int lc = 0; lc < receivers.width; ++lc) {
             const int col = receivers.col0 + lc;
-            const float z0 = grid.at(col, row);
+            const float z0 = window.at(col - window_origin.col0, row - window_origin.row0);
             if (std::isnan(z0)) continue;
             const std::size_t k = std::size_t(row - origin.row0) * std::size_t(set.width) + std::size_t(col - origin.col0);
             for (int d = 0; d < set.directions; ++d) {

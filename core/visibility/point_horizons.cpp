@@ -47,6 +47,7 @@ PointHorizons::PointHorizons(const terrain::HeightGrid& grid, const PointHorizon
 }
 
 double PointHorizons::plane_max_slope(double z, double a, double b) const {
+    if (!options_.base_plane) return -kInf;
     a = std::max(a, 1e-9);
     if (!(b > a)) return -kInf;
     const double dz = base_ - z;  // the plane's height above the point

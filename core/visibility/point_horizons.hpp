@@ -26,6 +26,9 @@ namespace ts::visibility {
 struct PointHorizonOptions {
     bool curvature = true;     // Earth curvature with refraction (earth_curvature.hpp)
     double step_texels = 0.25; // march step over the grid, texels of the shorter spacing
+    // Beyond the grid the base plane (its border's height) stands in for the terrain; false: no
+    // terrain there (a window of a larger terrain whose far part another grid gives).
+    bool base_plane = true;
 };
 
 class PointHorizons {

@@ -16,8 +16,10 @@
 
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
+#include "core/dem/dem_source.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
+#include "app/job_memory.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/fly/hud_status.hpp"
@@ -87,6 +89,10 @@ struct FlyArgs {
     // error PX (pixels) is the LOD's --pixel-error; the flags given explicitly, which conflict.
     std::string max_error;
     bool directions_given = false, pixel_error_given = false;
+    // A DEM larger than the budget is streamed by tile (gpu/fly/flythrough.hpp).
+    std::string stream = "auto";
+    double memory_budget_mb = 4096;
+    int overview_level = 0;
 };
 
 struct FlyErrorBounds {
@@ -208,7 +214,8 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     double worst_error = 0, frame_ms_sum = 0;
     std::size_t tris_sum = 0;
     ProgressBar bar("frames", std::uint64_t(a.frames), "frames");
-    std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms\n";
+    std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms,"
+                      "coarse_fallbacks,tiles_resident,tiles_loaded,tiles_ms\n";
     const bool hud = parse_hud(a.hud, true);
     double previous_draw_ms = 0;
     for (int i = 0; i < a.frames; ++i) {
@@ -230,9 +237,10 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
         write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(), flight.renderer().height(),
                        rgba);
-        char line[160];
-        std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f\n", i, t, st.patches, st.triangles,
-                      st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms);
+        char line[256];
+        std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%zu,%zu,%zu,%.1f\n", i, t, st.patches,
+                      st.triangles, st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms, st.coarse_fallbacks,
+                      st.tiles_resident, st.tiles_loaded, st.tiles_ms);
         csv += line;
         worst_error = std::max(worst_error, st.screen_error_px);
         frame_ms_sum += draw_ms + st.select_ms;
@@ -246,6 +254,15 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     std::printf("wrote %d frames (%dx%d) to %s: %.1f ms and %zu triangles a frame on average, screen-space error <= %.2f px\n",
                 a.frames, flight.renderer().width(), flight.renderer().height(), a.out.c_str(),
                 frame_ms_sum / std::max(1, a.frames), tris_sum / std::size_t(std::max(1, a.frames)), worst_error);
+}
+
+// Flown whole, a DEM's shading state is held at once (gpu::whole_fly_bytes): refused before it
+// is read when the machine cannot hold it, since what does not fit is an OOM kill after minutes
+// of shading, not a clean error.
+void check_whole_fly_memory(int width, int height) {
+    check_job_memory("fly of " + std::to_string(width) + "x" + std::to_string(height) + " texels flown whole",
+                     gpu::whole_fly_bytes(std::int64_t(width) * height),
+                     "stream it by tile (--stream auto or on, within --memory-budget) or --crop a smaller window");
 }
 
 bool held(const gpu::WindowInput& in, int key) {
@@ -470,6 +487,9 @@ void run_fly(const FlyArgs& a) {
     if (!(a.min_solid_angle_sr > 0 && a.min_solid_angle_sr < 2.0 * kPi))
         throw InputError("--blocker-min-solid-angle must be in (0, 2 pi) steradians");
     if (!(a.sky_detail >= 0 && a.sky_detail <= 1)) throw InputError("--aircraft-sky-detail must be in [0, 1]");
+    if (a.stream != "auto" && a.stream != "on" && a.stream != "off") throw InputError("--stream " + a.stream + ": give auto, on or off");
+    if (!(a.memory_budget_mb >= 64 && a.memory_budget_mb <= 1e7)) throw InputError("--memory-budget must be in [64, 1e7] MB");
+    if (a.overview_level < 0 || a.overview_level > 12) throw InputError("--overview-level must be in [0, 12] (0: from the budget)");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
     plan.input("--path", a.path);
@@ -505,8 +525,38 @@ void run_fly(const FlyArgs& a) {
     settings.aircraft_shadows = !a.no_aircraft_shadows;
     settings.aircraft_min_solid_angle_sr = a.min_solid_angle_sr;
     settings.aircraft_sky_detail = a.sky_detail;
-    const dem::Dem dem = load_dem_input(a.dem);
-    if (dem.width < 2 || dem.height < 2) throw InputError("fly: the DEM needs at least 2x2 texels");
+    settings.memory_budget_bytes = std::size_t(a.memory_budget_mb * 1048576.0);
+    settings.overview_level = a.overview_level;
+    settings.wait_for_tiles = offscreen;
+    // Headers only: whether the DEM fits is known before anything is decoded.
+    std::unique_ptr<dem::DemSource> source;
+    {
+        std::vector<std::filesystem::path> files(a.dem.files.begin(), a.dem.files.end());
+        auto opened = std::make_unique<dem::DemSource>(files);
+        const std::int64_t texels = std::int64_t(opened->layout().width) * opened->layout().height;
+        const bool big = gpu::whole_fly_bytes(texels) > settings.memory_budget_bytes;
+        if (a.stream == "on" || (a.stream == "auto" && big)) {
+            if (!a.dem.crop.empty()) throw InputError("--crop: a streamed DEM is flown whole; crop it beforehand or give --stream off");
+            if (!a.dem.fill_voids) throw InputError("--no-fill: a streamed DEM's voids take the overview's heights; drop --no-fill");
+            if (bounds)
+                throw InputError("--max-error: not available on a streamed DEM (its roughness would take a pass of its own); "
+                                 "give --directions and --pixel-error");
+            source = std::move(opened);
+            std::printf("streaming %s (%dx%d texels, ~%.0f MB whole) by tile within --memory-budget %.0f MB\n",
+                        source->layout().source.c_str(), source->layout().width, source->layout().height,
+                        double(gpu::whole_fly_bytes(texels)) / 1048576.0, a.memory_budget_mb);
+            std::fflush(stdout);
+        } else {
+            // From the header; a crop is checked once read, by its own size.
+            if (a.dem.crop.empty()) check_whole_fly_memory(opened->layout().width, opened->layout().height);
+            if (a.stream == "off" && big)
+                std::printf("warning: the DEM takes ~%.0f MB flown whole, over --memory-budget %.0f MB (--stream off)\n",
+                            double(gpu::whole_fly_bytes(texels)) / 1048576.0, a.memory_budget_mb);
+        }
+    }
+    const dem::Dem dem = source ? dem::Dem{} : load_dem_input(a.dem);
+    if (!source && !a.dem.crop.empty()) check_whole_fly_memory(dem.width, dem.height);
+    if (!source && (dem.width < 2 || dem.height < 2)) throw InputError("fly: the DEM needs at least 2x2 texels");
     if (bounds) {
         quality::RadianceScene scene;
         scene.roughness = quality::mean_tan_slope(visibility::VisibilityGrid(dem).view());
@@ -521,7 +571,9 @@ void run_fly(const FlyArgs& a) {
         std::fflush(stdout);
     }
     context = std::make_unique<gpu::Context>(context_options);
-    gpu::Flythrough flight(dem, settings, *context);
+    std::unique_ptr<gpu::Flythrough> flight_owner = source ? std::make_unique<gpu::Flythrough>(*source, settings, *context)
+                                                           : std::make_unique<gpu::Flythrough>(dem, settings, *context);
+    gpu::Flythrough& flight = *flight_owner;
     const fly::FlightPath path = given_path ? *given_path : default_path(flight);
     if (!a.mesh.empty()) {
         const mesh::TriangleMesh aircraft = mesh::import_mesh(a.mesh);
@@ -611,6 +663,15 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--haze-km", args->haze_km, "aerial perspective: distance of 1/e transmittance (0 = none)")
         ->capture_default_str();
     cmd->add_option("--fov", args->fov_deg, "horizontal field of view in degrees")->capture_default_str();
+    cmd->add_option("--stream", args->stream,
+                    "auto: stream the DEM by tile when flying it whole would take more than --memory-budget; on; off")
+        ->capture_default_str();
+    cmd->add_option("--memory-budget", args->memory_budget_mb,
+                    "MB a streamed DEM's overview, far field and detail tiles may hold in all")
+        ->capture_default_str();
+    cmd->add_option("--overview-level", args->overview_level,
+                    "streamed DEMs: the overview keeps every 2^L-th texel (0: the finest that fits a quarter of the budget)")
+        ->capture_default_str();
     cmd->callback([args] { run_fly(*args); });
 }
 

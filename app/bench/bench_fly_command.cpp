@@ -16,6 +16,7 @@
 #include "app/dem_input.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
+#include "core/dem/dem_source.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/fly/fly_camera.hpp"
 #include "core/light/utc_time.hpp"
@@ -39,10 +40,16 @@ struct BenchFlyArgs {
     std::string mesh_forward = "+y";
     std::vector<int> spheres = {64, 400};  // the aircraft's shadows at each count (0: none)
     std::string sphere_cache_dir;
+    // The first run again with the DEM streamed by tile within this budget (MB; 0: not run).
+    double stream_budget_mb = 0;
+    int overview_level = 0;
 };
 
 struct Figures {
     double fps = 0, mean_ms = 0, p99_ms = 0, tris = 0, error_px = 0, error_max_px = 0, select_ms = 0;
+    // Streamed: patches drawn coarser while their tile loaded (all frames), tiles resident at the end.
+    std::size_t fallbacks = 0, tiles_resident = 0;
+    double tiles_ms = 0;
 };
 
 // low: the aircraft 25 m above the ground along the same track and the camera chasing it (60 m
@@ -88,6 +95,9 @@ Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft, bool l
         fig.error_px = std::max(fig.error_px, st.screen_error_px);
         fig.error_max_px = std::max(fig.error_max_px, st.screen_error_max_px);
         fig.select_ms += st.select_ms;
+        fig.fallbacks += st.coarse_fallbacks;
+        fig.tiles_resident = st.tiles_resident;
+        fig.tiles_ms += st.tiles_ms;
     }
     double sum = 0;
     for (double v : ms) sum += v;
@@ -141,6 +151,7 @@ void run_bench_fly(const BenchFlyArgs& a) {
     const std::filesystem::path cache =
         a.sphere_cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.sphere_cache_dir);
     const double yaw = a.mesh_forward == "-x" ? -90.0 : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 0.0;
+    double whole_start_ms = 0;
     for (const Run& run : runs) {
         const double goal = run.goal;
         gpu::FlySettings s;
@@ -148,8 +159,10 @@ void run_bench_fly(const BenchFlyArgs& a) {
         s.directions = a.directions;
         s.lod.pixel_error = goal;
         s.lod.error_quantile = run.quantile;
+        const Stopwatch start;
         gpu::Flythrough flight(dem, s, context);
         flight.set_time(light::parse_utc_time(a.time));
+        if (whole_start_ms == 0) whole_start_ms = start.milliseconds();
         std::vector<blockers::Sphere> spheres;
         if (run.aircraft && run.spheres > 0) {
             blockers::DecompositionOptions d;
@@ -172,6 +185,30 @@ void run_bench_fly(const BenchFlyArgs& a) {
                     run.quantile, f.fps, f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
     }
     if (a.mesh.empty()) std::printf("with an aircraft: give --mesh FILE\n");
+    if (a.stream_budget_mb > 0) {
+        // The first run's flight over the DEM streamed by tile, tiles loaded on the worker as in
+        // the window (frames do not wait: a tile not in yet is drawn coarser and counted).
+        const std::vector<std::filesystem::path> files(a.dem.files.begin(), a.dem.files.end());
+        const dem::DemSource source(files);
+        gpu::FlySettings s;
+        s.width = w, s.height = h;
+        s.directions = a.directions;
+        s.lod.pixel_error = a.pixel_error;
+        s.memory_budget_bytes = std::size_t(a.stream_budget_mb * 1048576.0);
+        s.overview_level = a.overview_level;
+        const Stopwatch start;
+        gpu::Flythrough flight(source, s, context);
+        flight.set_time(light::parse_utc_time(a.time));
+        const double start_ms = start.milliseconds();
+        const Figures f = fly_once(flight, a.frames, false, false);
+        std::printf("streamed(overview level %d, %d tile slots, %.0f MB) %.2f,0.99,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n",
+                    flight.overview()->level, flight.detail_tiles()->slots(), a.stream_budget_mb, a.pixel_error, f.fps,
+                    f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
+        std::printf("start_ms_whole,start_ms_streamed,tiles_loaded,tiles_resident,coarse_fallbacks_all_frames,"
+                    "tile_ms_per_frame,tile_bytes_resident_peak\n%.0f,%.0f,%llu,%zu,%zu,%.2f,%zu\n",
+                    whole_start_ms, start_ms, static_cast<unsigned long long>(flight.detail_tiles()->loaded()),
+                    f.tiles_resident, f.fallbacks, f.tiles_ms / a.frames, flight.detail_tiles()->peak_resident_bytes());
+    }
 }
 
 }  // namespace
@@ -191,6 +228,10 @@ void add_bench_fly_command(CLI::App& bench) {
         ->delimiter(',')
         ->capture_default_str();
     cmd->add_option("--sphere-cache-dir", a->sphere_cache_dir, "where sphere decompositions are cached");
+    cmd->add_option("--stream-budget", a->stream_budget_mb,
+                    "also fly the DEM streamed by tile within this many MB (fly --memory-budget)");
+    cmd->add_option("--overview-level", a->overview_level, "with --stream-budget: fly --overview-level")
+        ->capture_default_str();
     cmd->callback([a] { run_bench_fly(*a); });
 }
 

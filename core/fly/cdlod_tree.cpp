@@ -69,83 +69,143 @@ bool box_in_frustum(const glm::dmat4& m, const glm::dvec3& lo, const glm::dvec3&
     return true;
 }
 
-CdlodTree::CdlodTree(const terrain::HeightGrid& g, const GridFrame& frame, const CdlodOptions& options)
-    : frame_(frame), options_(options) {
-    const int n = options_.patch_quads;
-    if (n < 2 || (n & (n - 1)) != 0) throw std::invalid_argument("CdlodTree: patch_quads must be a power of two >= 2");
-    if (g.width < 2 || g.height < 2) throw std::invalid_argument("CdlodTree: the grid needs at least 2x2 texels");
-    const int extent = std::max(g.width - 1, g.height - 1);
-    levels_ = 1;
-    while (double(n) * double(1 << (levels_ - 1)) < double(extent)) ++levels_;
-
-    if (!(options_.error_quantile >= 0.5 && options_.error_quantile <= 1.0))
-        throw std::invalid_argument("CdlodTree: error_quantile must be in [0.5, 1]");
-    error_m_.assign(std::size_t(levels_ + 1), 0.0);
-    max_error_m_.assign(std::size_t(levels_ + 1), 0.0);
-    for (int k = 1; k <= levels_; ++k) {
-        max_error_m_[std::size_t(k)] = std::max(max_error_m_[std::size_t(k - 1)], mesh_error_m(g, 1 << k, 1.0));
-        const double q = options_.error_quantile >= 1.0 ? max_error_m_[std::size_t(k)]
-                                                         : mesh_error_m(g, 1 << k, options_.error_quantile);
-        error_m_[std::size_t(k)] = std::max(error_m_[std::size_t(k - 1)], q);
-    }
-
-    boxes_.resize(std::size_t(levels_));
-    diag_m_.assign(std::size_t(levels_), 0.0);
-    for (int k = 0; k < levels_; ++k) {
-        const double s = node_texels(k);
-        nodes_x_.push_back(std::max(1, int(std::ceil(double(g.width - 1) / s))));
-        nodes_y_.push_back(std::max(1, int(std::ceil(double(g.height - 1) / s))));
-    }
-    // Level 0 from the heights, every coarser level the union of its children.
-    {
-        const int nx = nodes_x(0), ny = nodes_y(0);
-        auto& level0 = boxes_[0];
-        level0.resize(std::size_t(nx) * std::size_t(ny));
-        for (int iy = 0; iy < ny; ++iy) {
-            const int r0 = iy * n, r1 = std::min(r0 + n, g.height - 1);
-            for (int ix = 0; ix < nx; ++ix) {
-                const int c0 = ix * n, c1 = std::min(c0 + n, g.width - 1);
-                double zlo = kInfinity, zhi = -kInfinity;
-                for (int r = r0; r <= r1; ++r)
-                    for (int c = c0; c <= c1; ++c) {
-                        const double z = height_at(g, c, r);
-                        zlo = std::min(zlo, z), zhi = std::max(zhi, z);
-                    }
-                Box b;
-                b.lo = glm::dvec3(kInfinity), b.hi = glm::dvec3(-kInfinity);
-                for (int corner = 0; corner < 4; ++corner) {
-                    const glm::dvec2 m = frame.to_metric((corner & 1) ? c1 : c0, (corner & 2) ? r1 : r0);
-                    b.lo = glm::min(b.lo, glm::dvec3(m, zlo));
-                    b.hi = glm::max(b.hi, glm::dvec3(m, zhi));
-                }
-                level0[std::size_t(iy) * std::size_t(nx) + std::size_t(ix)] = b;
-            }
-        }
-    }
-    for (int k = 1; k < levels_; ++k) {
-        const int nx = nodes_x(k), ny = nodes_y(k);
-        auto& level = boxes_[std::size_t(k)];
-        level.resize(std::size_t(nx) * std::size_t(ny));
-        for (int iy = 0; iy < ny; ++iy)
-            for (int ix = 0; ix < nx; ++ix) {
-                Box b;
-                b.lo = glm::dvec3(kInfinity), b.hi = glm::dvec3(-kInfinity);
-                for (int q = 0; q < 4; ++q) {
-                    const int cx = 2 * ix + (q & 1), cy = 2 * iy + (q >> 1);
-                    if (cx >= nodes_x(k - 1) || cy >= nodes_y(k - 1)) continue;
-                    const Box& c = box(k - 1, cx, cy);
-                    b.lo = glm::min(b.lo, c.lo), b.hi = glm::max(b.hi, c.hi);
-                }
-                level[std::size_t(iy) * std::size_t(nx) + std::size_t(ix)] = b;
-            }
-    }
-    for (int k = 0; k < levels_; ++k)
-        for (const Box& b : boxes_[std::size_t(k)])
-            diag_m_[std::size_t(k)] = std::max(diag_m_[std::size_t(k)], glm::length(b.hi - b.lo));
+int cdlod_level_count(int width, int height, int n) {
+    const int extent = std::max(width - 1, height - 1);
+    int levels = 1;
+    while (double(n) * double(1 << (levels - 1)) < double(extent)) ++levels;
+    return levels;
 }
 
-const CdlodTree::Box& CdlodTree::box(int level, int ix, int iy) const {
-    return boxes_[std::size_t(level)][std::size_t(iy) * std::size_t(nodes_x(level)) + std::size_t(ix)];
+glm::ivec2 cdlod_node_count(int width, int height, int n, int level) {
+    const double s = double(n) * double(1 << level);
+    return {std::max(1, int(std::ceil(double(width - 1) / s))), std::max(1, int(std::ceil(double(height - 1) / s)))};
+}
+
+CdlodSummary summarize_cdlod(const terrain::HeightGrid& g, const CdlodOptions& options) {
+    const int n = options.patch_quads;
+    if (n < 2 || (n & (n - 1)) != 0) throw std::invalid_argument("CdlodTree: patch_quads must be a power of two >= 2");
+    if (g.width < 2 || g.height < 2) throw std::invalid_argument("CdlodTree: the grid needs at least 2x2 texels");
+    if (!(options.error_quantile >= 0.5 && options.error_quantile <= 1.0))
+        throw std::invalid_argument("CdlodTree: error_quantile must be in [0.5, 1]");
+    CdlodSummary s;
+    s.width = g.width, s.height = g.height;
+    const int levels = cdlod_level_count(g.width, g.height, n);
+    s.error_m.assign(std::size_t(levels + 1), 0.0);
+    s.max_error_m.assign(std::size_t(levels + 1), 0.0);
+    for (int k = 1; k <= levels; ++k) {
+        s.max_error_m[std::size_t(k)] = mesh_error_m(g, 1 << k, 1.0);
+        s.error_m[std::size_t(k)] = options.error_quantile >= 1.0 ? s.max_error_m[std::size_t(k)]
+                                                                  : mesh_error_m(g, 1 << k, options.error_quantile);
+    }
+    // Level 0 from the heights, every coarser level the union of its children.
+    s.node_z.resize(std::size_t(levels));
+    for (int k = 0; k < levels; ++k) {
+        const glm::ivec2 nodes = cdlod_node_count(g.width, g.height, n, k);
+        auto& level = s.node_z[std::size_t(k)];
+        level.assign(std::size_t(nodes.x) * std::size_t(nodes.y), glm::vec2(float(kInfinity), -float(kInfinity)));
+        for (int iy = 0; iy < nodes.y; ++iy)
+            for (int ix = 0; ix < nodes.x; ++ix) {
+                glm::vec2& z = level[std::size_t(iy) * std::size_t(nodes.x) + std::size_t(ix)];
+                if (k == 0) {
+                    const int r0 = iy * n, r1 = std::min(r0 + n, g.height - 1);
+                    const int c0 = ix * n, c1 = std::min(c0 + n, g.width - 1);
+                    for (int r = r0; r <= r1; ++r)
+                        for (int c = c0; c <= c1; ++c) z.x = std::min(z.x, g.at(c, r)), z.y = std::max(z.y, g.at(c, r));
+                    continue;
+                }
+                const glm::ivec2 below = cdlod_node_count(g.width, g.height, n, k - 1);
+                for (int q = 0; q < 4; ++q) {
+                    const int cx = 2 * ix + (q & 1), cy = 2 * iy + (q >> 1);
+                    if (cx >= below.x || cy >= below.y) continue;
+                    const glm::vec2 c = s.node_z[std::size_t(k - 1)][std::size_t(cy) * std::size_t(below.x) + std::size_t(cx)];
+                    z.x = std::min(z.x, c.x), z.y = std::max(z.y, c.y);
+                }
+            }
+    }
+    return s;
+}
+
+CdlodTree::CdlodTree(const terrain::HeightGrid& g, const GridFrame& frame, const CdlodOptions& options)
+    : frame_(frame), options_(options) {
+    init(summarize_cdlod(g, options));
+}
+
+CdlodTree::CdlodTree(CdlodSummary summary, const GridFrame& frame, const CdlodOptions& options, CdlodDetail* detail)
+    : frame_(frame), options_(options), detail_(detail) {
+    init(std::move(summary));
+}
+
+void CdlodTree::init(CdlodSummary s) {
+    const int n = options_.patch_quads;
+    if (n < 2 || (n & (n - 1)) != 0) throw std::invalid_argument("CdlodTree: patch_quads must be a power of two >= 2");
+    if (s.width < 2 || s.height < 2) throw std::invalid_argument("CdlodTree: the grid needs at least 2x2 texels");
+    if (frame_.width() != s.width || frame_.height() != s.height)
+        throw std::invalid_argument("CdlodTree: the frame is not the summary's grid");
+    width_ = s.width, height_ = s.height;
+    levels_ = cdlod_level_count(width_, height_, n);
+    stored_level_ = std::clamp(s.stored_level, 0, levels_ - 1);
+    if (s.error_m.size() != std::size_t(levels_ + 1) || s.max_error_m.size() != s.error_m.size() ||
+        s.node_z.size() != std::size_t(levels_ - stored_level_) ||
+        s.detail_diag_m.size() < std::size_t(stored_level_))
+        throw std::invalid_argument("CdlodTree: the summary does not match the grid");
+    if (stored_level_ > 0 && !detail_) throw std::invalid_argument("CdlodTree: levels below the stored ones need a detail");
+    // Non-decreasing in k: a coarser mesh is never drawn nearer than a finer one.
+    error_m_ = std::move(s.error_m), max_error_m_ = std::move(s.max_error_m);
+    error_m_[0] = max_error_m_[0] = 0.0;
+    for (int k = 1; k <= levels_; ++k) {
+        max_error_m_[std::size_t(k)] = std::max(max_error_m_[std::size_t(k - 1)], max_error_m_[std::size_t(k)]);
+        error_m_[std::size_t(k)] = std::max(error_m_[std::size_t(k - 1)], error_m_[std::size_t(k)]);
+    }
+    for (int k = 0; k < levels_; ++k) {
+        const glm::ivec2 nodes = cdlod_node_count(width_, height_, n, k);
+        nodes_x_.push_back(nodes.x), nodes_y_.push_back(nodes.y);
+    }
+    boxes_.resize(std::size_t(levels_ - stored_level_));
+    diag_m_.assign(std::size_t(levels_), 0.0);
+    for (int k = stored_level_; k < levels_; ++k) {
+        const auto& z = s.node_z[std::size_t(k - stored_level_)];
+        if (z.size() != std::size_t(nodes_x(k)) * std::size_t(nodes_y(k)))
+            throw std::invalid_argument("CdlodTree: the summary's node count does not match the grid");
+        auto& level = boxes_[std::size_t(k - stored_level_)];
+        level.resize(z.size());
+        for (int iy = 0; iy < nodes_y(k); ++iy)
+            for (int ix = 0; ix < nodes_x(k); ++ix) {
+                const std::size_t i = std::size_t(iy) * std::size_t(nodes_x(k)) + std::size_t(ix);
+                level[i] = node_box_of(k, ix, iy, z[i]);
+                diag_m_[std::size_t(k)] = std::max(diag_m_[std::size_t(k)], glm::length(level[i].hi - level[i].lo));
+            }
+    }
+    for (int k = 0; k < stored_level_; ++k) diag_m_[std::size_t(k)] = s.detail_diag_m[std::size_t(k)];
+}
+
+void cdlod_node_box(const GridFrame& frame, int patch_quads, int k, int ix, int iy, glm::vec2 z, glm::dvec3& lo,
+                    glm::dvec3& hi) {
+    const int n = patch_quads << k;
+    const int c0 = ix * n, c1 = std::min(c0 + n, frame.width() - 1);
+    const int r0 = iy * n, r1 = std::min(r0 + n, frame.height() - 1);
+    lo = glm::dvec3(kInfinity), hi = glm::dvec3(-kInfinity);
+    for (int corner = 0; corner < 4; ++corner) {
+        const glm::dvec2 m = frame.to_metric((corner & 1) ? c1 : c0, (corner & 2) ? r1 : r0);
+        lo = glm::min(lo, glm::dvec3(m, double(z.x)));
+        hi = glm::max(hi, glm::dvec3(m, double(z.y)));
+    }
+}
+
+CdlodTree::Box CdlodTree::node_box_of(int k, int ix, int iy, glm::vec2 z) const {
+    Box b;
+    cdlod_node_box(frame_, options_.patch_quads, k, ix, iy, z, b.lo, b.hi);
+    return b;
+}
+
+bool CdlodTree::node_box(int k, int ix, int iy, Box& out) const {
+    if (k >= stored_level_) {
+        out = boxes_[std::size_t(k - stored_level_)][std::size_t(iy) * std::size_t(nodes_x(k)) + std::size_t(ix)];
+        return true;
+    }
+    glm::vec2 z;
+    if (!detail_->node_z_range(k, ix, iy, z)) return false;
+    out = node_box_of(k, ix, iy, z);
+    return true;
 }
 
 void CdlodTree::compute_ranges(double k_px, std::vector<double>& r) const {
@@ -167,9 +227,8 @@ double CdlodTree::range_m(int level, double k_px) const {
     return r[std::size_t(level)];
 }
 
-bool CdlodTree::select_node(int k, int ix, int iy, const CdlodView& view, const std::vector<double>& ranges,
-                            double k_px, CdlodSelection& out) const {
-    const Box& b = box(k, ix, iy);
+bool CdlodTree::select_node(int k, int ix, int iy, const Box& b, const CdlodView& view,
+                            const std::vector<double>& ranges, double k_px, CdlodSelection& out) const {
     if (box_distance(view.eye, b.lo, b.hi) > ranges[std::size_t(k)]) return false;
     auto visible = [&](const Box& bb) {
         // The curvature lowers what is drawn: the box reaches down by the drop at its far corner.
@@ -206,13 +265,27 @@ bool CdlodTree::select_node(int k, int ix, int iy, const CdlodView& view, const 
         add(-1, b);
         return true;
     }
+    Box children[4];
+    bool exists[4];
+    bool resident = true;
     for (int q = 0; q < 4; ++q) {
         const int cx = 2 * ix + (q & 1), cy = 2 * iy + (q >> 1);
-        if (cx >= nodes_x(k - 1) || cy >= nodes_y(k - 1)) continue;
-        if (!select_node(k - 1, cx, cy, view, ranges, k_px, out)) {
-            const Box& c = box(k - 1, cx, cy);
-            if (visible(c)) add(q, c);
+        exists[q] = cx < nodes_x(k - 1) && cy < nodes_y(k - 1);
+        if (exists[q] && !node_box(k - 1, cx, cy, children[q])) {
+            resident = false;
+            detail_->request(k - 1, cx, cy, box_distance(view.eye, b.lo, b.hi));
         }
+    }
+    if (!resident) {
+        // Coarser than the range asks until the finer tile is in (the bound below says how much).
+        ++out.coarse_fallbacks;
+        add(-1, b);
+        return true;
+    }
+    for (int q = 0; q < 4; ++q) {
+        if (!exists[q]) continue;
+        const int cx = 2 * ix + (q & 1), cy = 2 * iy + (q >> 1);
+        if (!select_node(k - 1, cx, cy, children[q], view, ranges, k_px, out) && visible(children[q])) add(q, children[q]);
     }
     return true;
 }
@@ -222,12 +295,17 @@ void CdlodTree::select(const CdlodView& view, CdlodSelection& out) const {
     out.triangles = 0;
     out.screen_error_px = 0;
     out.screen_error_max_px = 0;
+    out.coarse_fallbacks = 0;
     const double k_px = view.viewport_height_px / (2.0 * std::tan(0.5 * view.vertical_fov_rad));
     std::vector<double> ranges;
     compute_ranges(k_px, ranges);
     const int top = levels_ - 1;
     for (int iy = 0; iy < nodes_y(top); ++iy)
-        for (int ix = 0; ix < nodes_x(top); ++ix) select_node(top, ix, iy, view, ranges, k_px, out);
+        for (int ix = 0; ix < nodes_x(top); ++ix) {
+            Box b;
+            node_box(top, ix, iy, b);
+            select_node(top, ix, iy, b, view, ranges, k_px, out);
+        }
 }
 
 }  // namespace ts::fly

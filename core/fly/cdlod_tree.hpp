@@ -26,6 +26,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/fly/grid_frame.hpp"
@@ -53,6 +54,10 @@ struct CdlodPatch {
     int level = 0;
     int quadrant = -1;          // -1: the whole patch; 0..3: NW, NE, SW, SE quarter
     float morph_start_m = 0, morph_end_m = 0;
+    // Where its heights and radiance are read: a streamed DEM's detail tile (its atlas slot and
+    // its first sample's level-0 texel), or -1: the overview (every level of a DEM in memory).
+    int slot = -1;
+    float tile_col0 = 0, tile_row0 = 0;
 };
 
 // What the selection sees: the eye in the GridFrame's metres (x east, y north, z height above
@@ -68,6 +73,9 @@ struct CdlodView {
 struct CdlodSelection {
     std::vector<CdlodPatch> patches;
     std::size_t triangles = 0;
+    // Nodes drawn coarser than their range asks because the finer level's tile was not resident
+    // (a streamed DEM while it loads; CdlodDetail). 0 once every tile the view needs is in.
+    std::size_t coarse_fallbacks = 0;
     // The bound on the screen-space geometric error of what was selected (px): the largest
     // delta_{k+1} K / d over patches, d the nearest distance of the patch's box beyond its
     // morph start (delta_k K / d for an unmorphed part nearer than it).
@@ -76,9 +84,55 @@ struct CdlodSelection {
     double screen_error_max_px = 0;
 };
 
+// What the tree keeps of a terrain: the per-level mesh errors, and the height range of every node
+// of the levels from `stored_level` up. A DEM in memory stores every level (stored_level 0); a
+// streamed one (core/fly/terrain_overview.hpp) only the coarse ones, the finer nodes' ranges
+// coming from the tiles resident at the time (CdlodDetail).
+struct CdlodSummary {
+    int width = 0, height = 0;        // level-0 texels of the grid
+    int stored_level = 0;
+    std::vector<double> error_m;      // delta_k at the options' quantile, k = 0..levels (0 at 0)
+    std::vector<double> max_error_m;  // the largest per-texel error
+    // Per level below stored_level: the largest 3D diagonal of one of its nodes' boxes (m), for
+    // the crack-free range condition (cdlod_node_box).
+    std::vector<double> detail_diag_m;
+    // Per level from stored_level up (index level - stored_level): each node's lowest and highest
+    // height, row-major over the level's nodes.
+    std::vector<std::vector<glm::vec2>> node_z;
+};
+
+// The number of levels and of nodes per level of a width x height grid with patches of
+// `patch_quads` quads (a node of level k covers patch_quads 2^k texels a side).
+int cdlod_level_count(int width, int height, int patch_quads);
+glm::ivec2 cdlod_node_count(int width, int height, int patch_quads, int level);
+
+// The metric box of node (level, ix, iy) with heights in [z.x, z.y]: its four corner texels in
+// the frame, clamped onto the grid. lo and hi.
+void cdlod_node_box(const GridFrame& frame, int patch_quads, int level, int ix, int iy, glm::vec2 z, glm::dvec3& lo,
+                    glm::dvec3& hi);
+
+// The mesh errors and node ranges of a grid in memory (every level stored).
+CdlodSummary summarize_cdlod(const terrain::HeightGrid& grid, const CdlodOptions& options);
+
+// The levels below CdlodSummary::stored_level of a streamed DEM: answered from its resident tiles.
+class CdlodDetail {
+public:
+    virtual ~CdlodDetail() = default;
+    // The height range of node (level, ix, iy); false when its tile is not resident (its parent
+    // is then drawn whole, coarser than the range asks).
+    virtual bool node_z_range(int level, int ix, int iy, glm::vec2& z) = 0;
+    // The selection wanted node (level, ix, iy) and found its tile missing; `distance_m` from the
+    // eye orders the loads.
+    virtual void request(int level, int ix, int iy, double distance_m) = 0;
+};
+
 class CdlodTree {
 public:
     CdlodTree(const terrain::HeightGrid& grid, const GridFrame& frame, const CdlodOptions& options = {});
+    // From a summary; levels below its stored_level come from `detail` (which must outlive the
+    // tree; may be null when every level is stored).
+    CdlodTree(CdlodSummary summary, const GridFrame& frame, const CdlodOptions& options, CdlodDetail* detail = nullptr);
+    int stored_level() const { return stored_level_; }
 
     int levels() const { return levels_; }
     int patch_quads() const { return options_.patch_quads; }
@@ -101,20 +155,27 @@ private:
     };
     // Ranges for this K, cached by select().
     void compute_ranges(double k_px, std::vector<double>& ranges) const;
-    bool select_node(int level, int ix, int iy, const CdlodView& view, const std::vector<double>& ranges,
+    bool select_node(int level, int ix, int iy, const Box& b, const CdlodView& view, const std::vector<double>& ranges,
                      double k_px, CdlodSelection& out) const;
-    const Box& box(int level, int ix, int iy) const;
+    // The box of a node: stored, or from the detail (false when its tile is not resident).
+    bool node_box(int level, int ix, int iy, Box& out) const;
+    Box node_box_of(int level, int ix, int iy, glm::vec2 z) const;
     int nodes_x(int level) const { return nodes_x_[std::size_t(level)]; }
     int nodes_y(int level) const { return nodes_y_[std::size_t(level)]; }
     double node_texels(int level) const { return double(options_.patch_quads) * double(1 << level); }
 
+    void init(CdlodSummary summary);
+
     const GridFrame& frame_;
     CdlodOptions options_;
+    CdlodDetail* detail_ = nullptr;
+    int width_ = 0, height_ = 0;
+    int stored_level_ = 0;
     int levels_ = 0;
     std::vector<double> error_m_, max_error_m_;
     std::vector<double> diag_m_;           // the largest 3D box diagonal per level
     std::vector<int> nodes_x_, nodes_y_;
-    std::vector<std::vector<Box>> boxes_;  // per level, row-major nodes
+    std::vector<std::vector<Box>> boxes_;  // per level from stored_level_ up, row-major nodes
 };
 
 // delta of a mesh with a vertex every `spacing` texels (clamped to the last row and column,

@@ -29,6 +29,8 @@ struct PointTerrainLightOptions {
     bool curvature = true;
     float terrain_log_eps = visibility::kDefaultVisibilityLogEps;
     sh::ExpMethod exp_method = sh::ExpMethod::scaling_squaring;
+    // As visibility::PointHorizonOptions::base_plane.
+    bool base_plane = true;
 };
 
 struct PointTerrainLight {
@@ -45,6 +47,14 @@ public:
     // `sun`: unit ENU towards the disc's centre.
     PointTerrainLight light(glm::dvec2 texel, double z, const light::SkySh& sky_sh, const glm::dvec3& sun,
                             double sun_radius_rad) const;
+
+    // Its parts, to combine grids (a window's near terrain, a coarse copy's far terrain): the
+    // options' `directions` horizon angles (radians) into `out`, the sun's visible fraction, and
+    // the light from horizons and a sun fraction.
+    int directions() const { return options_.directions; }
+    void horizons(glm::dvec2 texel, double z, float* out) const;
+    double sun_fraction(glm::dvec2 texel, double z, const glm::dvec3& sun, double sun_radius_rad) const;
+    PointTerrainLight light_from(const float* horizons, double sun_fraction, const light::SkySh& sky_sh) const;
 
 private:
     PointTerrainLightOptions options_;

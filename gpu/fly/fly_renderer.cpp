@@ -14,12 +14,21 @@ namespace {
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr int kBindings = 8;
+constexpr int kBindings = 11;
 
 struct PatchPush {
     float col0, row0, spacing, morph_start_m, morph_end_m;
     std::uint32_t quads;
+    std::int32_t slot, level;
+    float tile_col0, tile_row0;
 };
+static_assert(sizeof(PatchPush) == 40, "fly_patch.glsl's Patch block");
+
+Buffer zeroed(const Context& ctx, std::size_t bytes) {
+    Buffer b = ctx.create_buffer(std::max<std::size_t>(bytes, 16), MemoryKind::host_visible);
+    std::memset(b.mapped(), 0, b.size());
+    return b;
+}
 
 Buffer upload(const Context& ctx, const void* data, std::size_t bytes, VkBufferUsageFlags usage) {
     Buffer staging = ctx.create_buffer(bytes, MemoryKind::host_visible);
@@ -119,6 +128,9 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
       grid_width_(terrain.width),
       grid_height_(terrain.height),
       patch_quads_(terrain.patch_quads),
+      overview_texels_(terrain.overview_width * terrain.overview_height),
+      atlas_samples_(terrain.atlas_samples),
+      atlas_slots_(terrain.atlas_slots),
       width_(width),
       height_(height) {
     const VkDevice device = context.vk_device();
@@ -128,10 +140,12 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     quadrant_indices_ = std::uint32_t(indices.size() / 4);
     indices_ = upload(context, indices.data(), indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
-    radiance_ = context.create_buffer(std::size_t(grid_width_) * std::size_t(grid_height_) * 8, MemoryKind::host_visible);
-    std::memset(radiance_.mapped(), 0, radiance_.size());
-    sun_radiance_ = context.create_buffer(radiance_.size(), MemoryKind::host_visible);
-    std::memset(sun_radiance_.mapped(), 0, sun_radiance_.size());
+    radiance_ = zeroed(context, std::size_t(overview_texels_) * 8);
+    sun_radiance_ = zeroed(context, radiance_.size());
+    const std::size_t atlas = std::size_t(atlas_slots_) * std::size_t(atlas_samples_) * std::size_t(atlas_samples_);
+    tile_heights_ = zeroed(context, atlas * 4);
+    tile_radiance_ = zeroed(context, atlas * 8);
+    tile_sun_ = zeroed(context, atlas * 8);
     spheres_ = context.create_buffer(16, MemoryKind::host_visible);
     std::memset(spheres_.mapped(), 0, spheres_.size());
     sky_ = context.create_buffer(16, MemoryKind::host_visible);
@@ -144,7 +158,7 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     set_ = pool_.allocate(set_layout_.get(), kBindings);
     write_descriptors();
     sky_layout_ = PipelineLayout(device, set_layout_.get(), 0, kStages);
-    terrain_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(PatchPush), VK_SHADER_STAGE_VERTEX_BIT);
+    terrain_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(PatchPush), kStages);
     render_pass_ = make_render_pass(device);
     sky_pipeline_ = make_graphics_pipeline(device, sky_layout_.get(), render_pass_.get(), "fly_sky.vert", "fly_sky.frag",
                                            PipelineDepth::behind);
@@ -164,8 +178,10 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
 FlyRenderer::~FlyRenderer() { context_.device().wait_idle(); }
 
 void FlyRenderer::write_descriptors() {
-    const VkBuffer buffers[kBindings] = {frame_.get(), heights_.get(),  rows_.get(),          radiance_.get(),
-                                         sky_.get(),   aircraft_.get(), sun_radiance_.get(), spheres_.get()};
+    const VkBuffer buffers[kBindings] = {frame_.get(),        heights_.get(),      rows_.get(),
+                                         radiance_.get(),     sky_.get(),          aircraft_.get(),
+                                         sun_radiance_.get(), spheres_.get(),      tile_heights_.get(),
+                                         tile_radiance_.get(), tile_sun_.get()};
     write_storage_buffers(context_.vk_device(), set_, buffers);
 }
 
@@ -197,6 +213,25 @@ void FlyRenderer::resize(int width, int height) {
     if (width == width_ && height == height_) return;
     width_ = width, height_ = height;
     create_targets();
+}
+
+void FlyRenderer::set_tile(int slot, int sx, int sy, std::span<const float> heights,
+                           std::span<const std::uint32_t> radiance, std::span<const std::uint32_t> sun) {
+    if (slot < 0 || slot >= atlas_slots_ || sx > atlas_samples_ || sy > atlas_samples_ ||
+        heights.size() != std::size_t(sx) * std::size_t(sy) || radiance.size() != 2 * heights.size() ||
+        sun.size() != radiance.size())
+        throw std::logic_error("FlyRenderer::set_tile: wrong slot or size");
+    const std::size_t stride = std::size_t(atlas_samples_);
+    const std::size_t base = std::size_t(slot) * stride * stride;
+    auto* h = reinterpret_cast<float*>(tile_heights_.mapped());
+    auto* l = reinterpret_cast<std::uint32_t*>(tile_radiance_.mapped());
+    auto* s = reinterpret_cast<std::uint32_t*>(tile_sun_.mapped());
+    for (int r = 0; r < sy; ++r) {
+        const std::size_t to = base + std::size_t(r) * stride, from = std::size_t(r) * std::size_t(sx);
+        std::memcpy(h + to, heights.data() + from, std::size_t(sx) * sizeof(float));
+        std::memcpy(l + 2 * to, radiance.data() + 2 * from, std::size_t(sx) * 8);
+        std::memcpy(s + 2 * to, sun.data() + 2 * from, std::size_t(sx) * 8);
+    }
 }
 
 void FlyRenderer::set_radiance(std::span<const std::uint32_t> packed) {
@@ -261,8 +296,9 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_layout_.get(), 0, 1, &set_, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, indices_.get(), 0, VK_INDEX_TYPE_UINT32);
     for (const fly::CdlodPatch& p : patches) {
-        const PatchPush push{p.col0, p.row0, p.spacing, p.morph_start_m, p.morph_end_m, std::uint32_t(patch_quads_)};
-        vkCmdPushConstants(cmd, terrain_layout_.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        const PatchPush push{p.col0,    p.row0,       p.spacing,   p.morph_start_m, p.morph_end_m, std::uint32_t(patch_quads_),
+                             p.slot,    p.level,      p.tile_col0, p.tile_row0};
+        vkCmdPushConstants(cmd, terrain_layout_.get(), kStages, 0, sizeof push, &push);
         const std::uint32_t first = p.quadrant < 0 ? 0 : std::uint32_t(p.quadrant) * quadrant_indices_;
         const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
         vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);

@@ -47,13 +47,22 @@ struct FlyFrameUniforms {
     // x: the share of the bound's sky cover its spheres keep far from it, y: the bound's sky
     // cover above which the spheres are summed one by one (FlySettings::aircraft_sky_detail).
     glm::vec4 aircraft_sky{0.0f};
+    // The overview's width and height, level-0 texels per overview texel, the CDLOD levels
+    // drawn from detail tiles; the atlas's samples per tile side (fly_frame.glsl).
+    glm::vec4 overview{0.0f};
+    glm::vec4 atlas{0.0f};
 };
 
 struct FlyTerrain {
-    int width = 0, height = 0;
-    std::span<const float> heights;     // [row][col], no voids
-    std::span<const float> rows;        // per row: dx_m, north_m
+    int width = 0, height = 0;          // level-0 texels
+    std::span<const float> rows;        // per level-0 row: dx_m, north_m
+    // Every overview_scale-th level-0 texel, [row][col], no voids: the whole grid (scale 1) for
+    // a DEM in memory, the points of a streamed one (core/fly/terrain_overview.hpp).
+    int overview_width = 0, overview_height = 0, overview_scale = 1;
+    std::span<const float> heights;
     int patch_quads = 16;
+    // A streamed DEM's detail tiles (core/fly/detail_tile_cache.hpp): slots and samples a side.
+    int atlas_slots = 0, atlas_samples = 0;
 };
 
 class FlyRenderer {
@@ -64,6 +73,11 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     void resize(int width, int height);  // the device must be idle
+
+    // A detail tile into atlas slot `slot`: samples_x x samples_y heights, radiance and sun part
+    // (2 words a sample, as set_radiance / set_sun_radiance), rows of samples_x.
+    void set_tile(int slot, int samples_x, int samples_y, std::span<const float> heights,
+                  std::span<const std::uint32_t> radiance, std::span<const std::uint32_t> sun);
 
     // Per-texel radiance, 2 words per texel (packHalf2x16 of r,g and of b,0).
     void set_radiance(std::span<const std::uint32_t> packed);
@@ -105,9 +119,11 @@ private:
 
     const Context& context_;
     int grid_width_ = 0, grid_height_ = 0, patch_quads_ = 16;
+    int overview_texels_ = 0, atlas_samples_ = 0, atlas_slots_ = 0;
     int width_ = 0, height_ = 0;
     std::uint32_t quadrant_indices_ = 0;
     Buffer heights_, rows_, indices_, frame_, radiance_, sun_radiance_, sky_, spheres_;
+    Buffer tile_heights_, tile_radiance_, tile_sun_;
     DescriptorSetLayout set_layout_;
     DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -12,7 +12,11 @@
 #include "core/blockers/sphere_occlusion_shared.hpp"
 #include "core/light/sky.hpp"
 #include "core/mesh/placement.hpp"
+#include "core/fly/radiance_pack.hpp"
+#include "core/render/diffuse_sun_part.hpp"
+#include "core/terrain/dem_height_grid.hpp"
 #include "core/render/tone_map.hpp"
+#include "core/visibility/far_field_horizons.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
@@ -20,14 +24,6 @@
 
 namespace ts::gpu {
 namespace {
-
-// rgb as three halves; `extra` goes in the fourth.
-std::uint32_t pack_rgb(glm::vec3 c, std::uint32_t& second, float extra = 0.0f) {
-    const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
-    const glm::vec3 v = finite ? glm::max(c, glm::vec3(0.0f)) : glm::vec3(0.0f);
-    second = glm::packHalf2x16(glm::vec2(v.z, extra));
-    return glm::packHalf2x16(glm::vec2(v.x, v.y));
-}
 
 std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings& s) {
     render::SceneOptions options;
@@ -42,11 +38,70 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
     return scene;
 }
 
+// The overview's level for a budget: the finest whose shading state takes at most a quarter of
+// it (the rest is for the detail tiles).
+int overview_level_for(const dem::DemLayout& l, const FlySettings& s) {
+    if (s.overview_level > 0) return s.overview_level;
+    for (int level = 1; level < 12; ++level) {
+        const std::int64_t w = (l.width - 1) / (1 << level) + 1, h = (l.height - 1) / (1 << level) + 1;
+        if (whole_fly_bytes(w * h) <= s.memory_budget_bytes / 4) return level;
+    }
+    return 12;
+}
+
 }  // namespace
 
+std::size_t whole_fly_bytes(std::int64_t texels) { return std::size_t(std::max<std::int64_t>(texels, 0)) * 280; }
+
 Flythrough::Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context)
-    : dem_(dem), settings_(settings), scene_(make_scene(dem, settings)), frame_(scene_->grid()), context_(context) {
+    : settings_(settings), georef0_(&dem.georef), scene_(make_scene(dem, settings)), frame_(scene_->grid()),
+      context_(context) {
     tree_ = std::make_unique<fly::CdlodTree>(scene_->grid(), frame_, settings_.lod);
+    for (float z : scene_->grid().z) z_top_ = std::max(z_top_, double(z));
+    init_renderer();
+}
+
+Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings, Context& context)
+    : settings_(settings), georef0_(&source.layout().georef), source_(&source), context_(context) {
+    fly::TerrainOverviewOptions oo;
+    oo.level = overview_level_for(source.layout(), settings_);
+    oo.lod = settings_.lod;
+    oo.threads = 0;
+    visibility::FarFieldOptions fo;
+    fo.start_texels = settings_.detail_halo;
+    // The far field's coarse copy: the level its nearest samples would read, or coarser, so its
+    // pyramid (~12 bytes a texel of the copy) stays within an eighth of the budget.
+    oo.far_shift = visibility::FarField::coarse_shift_for(fo, source.layout().width, source.layout().height);
+    const double texels = double(source.layout().width) * double(source.layout().height);
+    while (oo.far_shift < 12 && 12.0 * texels / std::exp2(2.0 * oo.far_shift) > double(settings_.memory_budget_bytes) / 8.0)
+        ++oo.far_shift;
+    {
+        ProgressBar bar("overview", std::uint64_t(source.layout().width) * std::uint64_t(source.layout().height), "texels");
+        overview_ = std::make_unique<fly::TerrainOverview>(fly::build_terrain_overview(source, oo, &bar));
+    }
+    z_top_ = overview_->z_top;
+    terrain::HeightGrid far_grid;
+    far_grid.width = overview_->far_width, far_grid.height = overview_->far_height;
+    far_grid.z = overview_->far_mean;
+    far_grid.dx_m = overview_->far_dx_m, far_grid.dy_m = overview_->far_dy_m;
+    far_ = std::make_unique<visibility::FarField>(far_grid, overview_->far_shift, overview_->width, overview_->height,
+                                                  overview_->dx0_m, overview_->dy0_m, float(overview_->z_top), fo);
+    scene_ = make_scene(overview_->points, settings_);
+    grid0_.width = overview_->width, grid0_.height = overview_->height;
+    grid0_.dx_m = overview_->dx0_m, grid0_.dy_m = overview_->dy0_m;
+    frame_ = fly::GridFrame(grid0_);
+    fly::DetailCacheOptions co;
+    co.budget_bytes = settings_.memory_budget_bytes - std::min(settings_.memory_budget_bytes,
+                                                               whole_fly_bytes(std::int64_t(overview_->points.z.size())) + far_->bytes());
+    co.shading.halo = settings_.detail_halo;
+    co.shading.directions = settings_.directions;
+    co.shading.sky = settings_.sky;
+    cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);
+    tree_ = std::make_unique<fly::CdlodTree>(overview_->cdlod, frame_, settings_.lod, cache_.get());
+    init_renderer();
+}
+
+void Flythrough::init_renderer() {
     std::vector<float> rows(std::size_t(frame_.height()) * 2);
     for (int r = 0; r < frame_.height(); ++r) {
         rows[std::size_t(2 * r)] = float(frame_.row_dx_m()[std::size_t(r)]);
@@ -55,9 +110,16 @@ Flythrough::Flythrough(const dem::Dem& dem, const FlySettings& settings, Context
     FlyTerrain terrain;
     terrain.width = frame_.width();
     terrain.height = frame_.height();
-    terrain.heights = scene_->grid().z;
     terrain.rows = rows;
+    terrain.heights = scene_->grid().z;
+    terrain.overview_width = scene_->grid().width;
+    terrain.overview_height = scene_->grid().height;
+    terrain.overview_scale = overview_ ? 1 << overview_->level : 1;
     terrain.patch_quads = settings_.lod.patch_quads;
+    if (cache_) {
+        terrain.atlas_slots = cache_->slots();
+        terrain.atlas_samples = cache_->layout().tile_texels + 1;
+    }
     renderer_ = std::make_unique<FlyRenderer>(context_, terrain, settings_.width, settings_.height);
     render::PointTerrainLightOptions light_options;
     light_options.directions = settings_.directions;
@@ -78,25 +140,20 @@ double Flythrough::set_time(light::UtcTime time) {
     const std::size_t texels = radiance_.rgb.size();
     packed_.resize(2 * texels);
     packed_sun_.resize(2 * texels);
-    // The sun's part of each texel's radiance, albedo/pi E_sun max(0, n.s) times the sun's
-    // visibility (FrameRenderer's diffuse sun term; the few specular and water texels' sun
-    // terms stay in the rest): what an aircraft's shadow takes away; with the texel's open-sky
-    // fraction, which scales what it takes of the rest.
-    const render::MaterialRaster& m = scene_->state().materials();
-    const render::NormalField& nf = scene_->state().normals();
-    const std::vector<float>& sun_vis = scene_->renderer().sun_visibility();
-    const glm::vec3 s = glm::vec3(render::sun_direction(sun_));
-    const glm::vec3 e = sky.sun().irradiance * float(1.0 / kPi);
+    // The sun's part of each texel's radiance is what an aircraft's shadow takes away; with the
+    // texel's open-sky fraction, which scales what it takes of the rest.
+    std::vector<glm::vec3> sun_part;
+    render::diffuse_sun_part(*scene_, sun_, sky, radiance_.rgb, sun_part);
     for (std::size_t t = 0; t < texels; ++t) {
-        const glm::vec3 c = radiance_.rgb[t];
-        const float v = sun_vis[t] == sun_vis[t] ? sun_vis[t] : 0.0f;
-        const float w = v * std::max(0.0f, nf.x[t] * s.x + nf.y[t] * s.y + nf.z[t] * s.z);
-        const glm::vec3 sun_part = glm::min(glm::vec3(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]) * e * w, c);
-        packed_[2 * t] = pack_rgb(c, packed_[2 * t + 1]);
-        packed_sun_[2 * t] = pack_rgb(sun_part, packed_sun_[2 * t + 1], open_sky_[t]);
+        fly::pack_radiance(radiance_.rgb[t], 0.0f, &packed_[2 * t]);
+        fly::pack_radiance(sun_part[t], open_sky_[t], &packed_sun_[2 * t]);
     }
     renderer_->set_radiance(packed_);
     renderer_->set_sun_radiance(packed_sun_);
+    if (cache_) {
+        cache_->set_sun(sun_);
+        upload_tiles();
+    }
     sky_table_ = fly::make_sky_table(sky);
     sky_sh_ = light::project_sky_sh(sky);
     aircraft_light_ = {sky_sh_, 1.0f};
@@ -111,8 +168,25 @@ double Flythrough::set_time(light::UtcTime time) {
     return watch.milliseconds();
 }
 
+void Flythrough::upload_tiles() {
+    for (const fly::DetailSlotData& d : cache_->take_uploads())
+        renderer_->set_tile(d.slot, d.samples_x, d.samples_y, *d.heights, d.radiance, d.sun);
+}
+
+void Flythrough::assign_tile_slots() {
+    const fly::DetailTileLayout& l = cache_->layout();
+    for (fly::CdlodPatch& p : selection_.patches) {
+        if (p.level >= l.levels_below) continue;
+        const int size = settings_.lod.patch_quads << p.level;
+        const int ix = int(p.col0) / size, iy = int(p.row0) / size;
+        p.slot = cache_->slot_of_node(p.level, ix, iy);
+        const fly::DetailTileKey key = fly::tile_of_node(l, p.level, ix, iy);
+        p.tile_col0 = float(key.tx * l.tile_texels), p.tile_row0 = float(key.ty * l.tile_texels);
+    }
+}
+
 fly::CameraPose Flythrough::pose_of(const fly::FlightPose& p) const {
-    const glm::dvec2 px = dem_.georef.lonlat_to_pixel({p.lon_deg, p.lat_deg});
+    const glm::dvec2 px = georef0_->lonlat_to_pixel({p.lon_deg, p.lat_deg});
     const glm::dvec2 m = frame_.to_metric(px.x - 0.5, px.y - 0.5);
     fly::CameraPose c;
     c.eye = {m.x, m.y, p.height_m};
@@ -124,7 +198,7 @@ fly::CameraPose Flythrough::pose_of(const fly::FlightPose& p) const {
 
 glm::dvec2 Flythrough::lonlat_of(const glm::dvec3& eye) const {
     const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
-    return dem_.georef.pixel_to_lonlat(g.x + 0.5, g.y + 0.5);
+    return georef0_->pixel_to_lonlat(g.x + 0.5, g.y + 0.5);
 }
 
 fly::FlightPose Flythrough::flight_pose_of(const fly::CameraPose& c, double t_s) const {
@@ -133,20 +207,31 @@ fly::FlightPose Flythrough::flight_pose_of(const fly::CameraPose& c, double t_s)
 }
 
 double Flythrough::ground_height_m(const glm::dvec3& eye) const {
-    const glm::dvec2 g = frame_.to_grid(eye.x, eye.y);
+    const glm::dvec2 g0 = frame_.to_grid(eye.x, eye.y);
+    const double x0 = std::clamp(g0.x, 0.0, double(frame_.width() - 1)), y0 = std::clamp(g0.y, 0.0, double(frame_.height() - 1));
+    auto bilinear = [](auto at, int w, int h, double x, double y) {
+        const int c0 = std::min(int(x), w - 2), r0 = std::min(int(y), h - 2);
+        const double fc = x - c0, fr = y - r0;
+        const double top = at(c0, r0) + fc * (at(c0 + 1, r0) - at(c0, r0));
+        const double bottom = at(c0, r0 + 1) + fc * (at(c0 + 1, r0 + 1) - at(c0, r0 + 1));
+        return top + fr * (bottom - top);
+    };
+    if (cache_) {
+        if (const fly::DetailTile* t = cache_->tile_at(x0, y0)) {
+            const auto& z = t->heights();
+            const int sx = t->samples_x();
+            return bilinear([&](int c, int r) { return double(z[std::size_t(r) * std::size_t(sx) + std::size_t(c)]); },
+                            sx, t->samples_y(), x0 - t->col0(), y0 - t->row0());
+        }
+        return double(fly::overview_height(*overview_, x0, y0));
+    }
     const terrain::HeightGrid& grid = scene_->grid();
-    const double x = std::clamp(g.x, 0.0, double(grid.width - 1)), y = std::clamp(g.y, 0.0, double(grid.height - 1));
-    const int c0 = std::min(int(x), grid.width - 2), r0 = std::min(int(y), grid.height - 2);
-    const double fc = x - c0, fr = y - r0;
-    const double top = grid.at(c0, r0) + fc * (grid.at(c0 + 1, r0) - grid.at(c0, r0));
-    const double bottom = grid.at(c0, r0 + 1) + fc * (grid.at(c0 + 1, r0 + 1) - grid.at(c0, r0 + 1));
-    return top + fr * (bottom - top);
+    return bilinear([&](int c, int r) { return double(grid.at(c, r)); }, grid.width, grid.height, x0, y0);
 }
 
 fly::CameraPose Flythrough::default_pose() const {
     const glm::dvec2 sw = frame_.to_metric(0.15 * (frame_.width() - 1), 0.85 * (frame_.height() - 1));
-    double top = 0;
-    for (float z : scene_->grid().z) top = std::max(top, double(z));
+    const double top = z_top_;
     fly::CameraPose c;
     c.eye = {sw.x, sw.y, top + 500.0};
     double h = 0, p = 0;
@@ -189,15 +274,36 @@ void Flythrough::set_aircraft(const mesh::TriangleMesh& m, double scale, double 
 }
 
 void Flythrough::update_aircraft_light(const glm::dvec3& centre) {
-    const glm::dvec2 texel = frame_.to_grid(centre.x, centre.y);
-    const glm::dvec2 last = frame_.to_grid(aircraft_lit_at_.x, aircraft_lit_at_.y);
-    const terrain::HeightGrid& grid = scene_->grid();
-    const int row = std::clamp(int(std::lround(texel.y)), 0, grid.height - 1);
-    const double spacing = std::min(grid.dx_m[std::size_t(row)], grid.dy_m[std::size_t(row)]);
-    // A quarter texel, across or up: the horizons' march step (PointHorizonOptions).
-    const double moved = std::max(glm::length(texel - last), std::abs(centre.z - aircraft_lit_at_.z) / spacing);
+    // Level-0 texels, and the Scene's grid (a streamed DEM's overview: every 2^level-th texel).
+    const double scale = overview_ ? double(1 << overview_->level) : 1.0;
+    const glm::dvec2 texel0 = frame_.to_grid(centre.x, centre.y);
+    const glm::dvec2 texel = texel0 / scale;
+    const glm::dvec2 last0 = frame_.to_grid(aircraft_lit_at_.x, aircraft_lit_at_.y);
+    const terrain::HeightGrid& g0 = overview_ ? grid0_ : scene_->grid();
+    const int row = std::clamp(int(std::lround(texel0.y)), 0, g0.height - 1);
+    const double spacing = std::min(g0.dx_m[std::size_t(row)], g0.dy_m[std::size_t(row)]);
+    // A quarter level-0 texel, across or up: the horizons' march step (PointHorizonOptions).
+    const double moved = std::max(glm::length(texel0 - last0), std::abs(centre.z - aircraft_lit_at_.z) / spacing);
     if (aircraft_lit_ && moved < 0.25) return;
-    aircraft_light_ = aircraft_lighting_->light(texel, centre.z, sky_sh_, glm::dvec3(sun_dir_), sun_radius_rad_);
+    const glm::dvec3 sun(sun_dir_);
+    std::vector<float> sigma(std::size_t(aircraft_lighting_->directions()));
+    aircraft_lighting_->horizons(texel, centre.z, sigma.data());
+    double sun_fraction = aircraft_lighting_->sun_fraction(texel, centre.z, sun, sun_radius_rad_);
+    // A streamed DEM: the overview's horizons raised by the level-0 terrain of the tile under the
+    // aircraft, if it is in (its window, without a base plane beyond it: the overview is there).
+    if (const fly::DetailTile* tile = cache_ ? cache_->tile_at(texel0.x, texel0.y) : nullptr) {
+        const terrain::HeightGrid near_grid = terrain::metric_view(tile->window());
+        render::PointTerrainLightOptions o;
+        o.directions = aircraft_lighting_->directions();
+        o.base_plane = false;
+        const render::PointTerrainLighting near(near_grid, o);
+        const glm::dvec2 local = texel0 - glm::dvec2(tile->window_col0(), tile->window_row0());
+        std::vector<float> near_sigma(sigma.size());
+        near.horizons(local, centre.z, near_sigma.data());
+        for (std::size_t d = 0; d < sigma.size(); ++d) sigma[d] = std::max(sigma[d], near_sigma[d]);
+        sun_fraction = std::min(sun_fraction, near.sun_fraction(local, centre.z, sun, sun_radius_rad_));
+    }
+    aircraft_light_ = aircraft_lighting_->light_from(sigma.data(), sun_fraction, sky_sh_);
     aircraft_lit_ = true;
     aircraft_lit_at_ = centre;
 }
@@ -247,6 +353,30 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     view.vertical_fov_rad = proj.vertical_fov_rad();
     tree_->select(view, selection_);
     stats.select_ms = watch.milliseconds();
+    stats.tiles_loaded = 0;
+    if (cache_) {
+        const Stopwatch tiles;
+        if (settings_.wait_for_tiles || !tiles_waited_) {
+            tiles_waited_ = true;
+            // Offscreen: the frame a window shows once the worker has brought every tile.
+            while (selection_.coarse_fallbacks > 0) {
+                const int loaded = cache_->load_requested_now();
+                stats.tiles_loaded += std::size_t(loaded);
+                tree_->select(view, selection_);
+                if (loaded == 0) break;  // the budget holds no more
+            }
+        }
+        const double k_px = view.viewport_height_px / (2.0 * std::tan(0.5 * view.vertical_fov_rad));
+        const int finest_stored = tree_->stored_level();
+        if (finest_stored > 0) cache_->set_prefetch(1.25 * tree_->range_m(finest_stored - 1, k_px));
+        cache_->update(camera.eye);
+        upload_tiles();
+        assign_tile_slots();
+        stats.coarse_fallbacks = selection_.coarse_fallbacks;
+        stats.tiles_resident = cache_->resident();
+        stats.tiles_pending = cache_->pending();
+        stats.tiles_ms = tiles.milliseconds();
+    }
     stats.patches = selection_.patches.size();
     stats.triangles = selection_.triangles;
     stats.screen_error_px = selection_.screen_error_px;
@@ -286,6 +416,9 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
         placed_spheres_.clear();
         u.aircraft_bound = u.aircraft_shadow = u.aircraft_sky = glm::vec4(0.0f);
     }
+    u.overview = glm::vec4(float(scene_->grid().width), float(scene_->grid().height),
+                           overview_ ? float(1 << overview_->level) : 1.0f, float(tree_->stored_level()));
+    u.atlas = glm::vec4(cache_ ? float(cache_->layout().tile_texels + 1) : 0.0f, 0.0f, 0.0f, 0.0f);
     u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
                             float(sky_table_.highest_rad));
 }

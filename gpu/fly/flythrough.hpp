@@ -4,6 +4,14 @@
 // renderer with the heights uploaded. On each change of time: the per-texel radiance of that
 // sun and sky (the fused diffuse pass over the cached transfer vectors) and the sky table,
 // uploaded. Each frame: the LOD selection for the camera and the frame's uniforms.
+//
+// A DEM too large to hold is streamed (the dem::DemSource constructor): the Scene shades its
+// overview (every 2^level-th texel, core/fly/terrain_overview.hpp), which the CDLOD levels from
+// that level up draw; the finer levels draw the level-0 detail tiles resident near the camera
+// (core/fly/detail_tile_cache.hpp), each shaded on its own window with the overview's far field
+// beyond it, loaded on a worker thread within the memory budget and lit again only when the sun
+// changes.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -17,6 +25,9 @@
 #include "core/fly/flight_path.hpp"
 #include "core/fly/grid_frame.hpp"
 #include "core/fly/sky_table.hpp"
+#include "core/fly/detail_tile_cache.hpp"
+#include "core/fly/terrain_overview.hpp"
+#include "core/dem/dem_source.hpp"
 #include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/mesh/triangle_mesh.hpp"
@@ -24,6 +35,10 @@
 #include "core/render/render_scene.hpp"
 #include "gpu/context.hpp"
 #include "gpu/fly/fly_renderer.hpp"
+
+namespace ts::visibility {
+class FarField;
+}
 
 namespace ts::gpu {
 
@@ -44,24 +59,47 @@ struct FlySettings {
     // the spheres' covers are combined one by one; farther the root's cover times the share of
     // it the spheres keep from afar (their far limit), one evaluation a fragment.
     double aircraft_sky_detail = 0.05;
+    // Streamed DEMs: what the overview, the far field and the detail tiles may hold in all; the
+    // overview's level (0: the finest whose shading state takes at most a quarter of the budget).
+    std::size_t memory_budget_bytes = std::size_t(4) << 30;
+    int overview_level = 0;
+    int detail_halo = 64;
+    // Offscreen frames wait for every tile their view asks for (a window waits at its first frame
+    // only, then draws coarser until the worker brings them).
+    bool wait_for_tiles = false;
 };
+
+// The memory a DEM takes flown over whole (its shading state and device copy: 273 bytes a texel
+// measured, plus ~90 MB).
+std::size_t whole_fly_bytes(std::int64_t texels);
 
 struct FlyFrameStats {
     double select_ms = 0;
     std::size_t patches = 0, triangles = 0;
     double screen_error_px = 0, screen_error_max_px = 0;
+    // Streamed DEMs: patches drawn coarser for want of their tile, tiles resident and loading,
+    // tiles loaded by this frame (waiting offscreen) and the time that took.
+    std::size_t coarse_fallbacks = 0, tiles_resident = 0, tiles_pending = 0, tiles_loaded = 0;
+    double tiles_ms = 0;
 };
 
 class Flythrough {
 public:
     // `context` (made with the settings' window extensions, if any) must outlive the flight.
     Flythrough(const dem::Dem& dem, const FlySettings& settings, Context& context);
+    // A DEM streamed by tile (`source` must outlive the flight).
+    Flythrough(const dem::DemSource& source, const FlySettings& settings, Context& context);
     ~Flythrough();
+
+    bool streamed() const { return overview_ != nullptr; }
+    const fly::TerrainOverview* overview() const { return overview_.get(); }
+    const fly::DetailTileCache* detail_tiles() const { return cache_.get(); }
 
     Context& context() { return context_; }
     FlyRenderer& renderer() { return *renderer_; }
     const fly::GridFrame& frame() const { return frame_; }
     const fly::CdlodTree& tree() const { return *tree_; }
+    // The Scene shading the DEM (streamed: its overview).
     const render::Scene& scene() const { return *scene_; }
     const FlySettings& settings() const { return settings_; }
 
@@ -102,8 +140,20 @@ public:
     const std::vector<fly::CdlodPatch>& patches() const { return selection_.patches; }
 
 private:
-    const dem::Dem& dem_;
+    void init_renderer();
+    void assign_tile_slots();
+    void upload_tiles();
+
     FlySettings settings_;
+    const geo::Georef* georef0_ = nullptr;  // the level-0 grid's
+    // Streamed: the overview, its points as the Scene's DEM, the far field, the tiles.
+    std::unique_ptr<fly::TerrainOverview> overview_;
+    std::unique_ptr<visibility::FarField> far_;
+    std::unique_ptr<fly::DetailTileCache> cache_;
+    const dem::DemSource* source_ = nullptr;
+    terrain::HeightGrid grid0_;  // level-0 spacing of a streamed DEM (no heights)
+    double z_top_ = 0;
+    bool tiles_waited_ = false;  // the first frame waits for its tiles, even in a window
     std::unique_ptr<render::Scene> scene_;
     fly::GridFrame frame_;
     std::unique_ptr<fly::CdlodTree> tree_;

@@ -9,24 +9,58 @@
 #define TS_GLSL 1
 #include "core/blockers/sphere_occlusion_shared.h"
 #include "gpu/fly/fly_frame.glsl"
+#include "gpu/fly/fly_patch.glsl"
 
 layout(location = 0) in vec2 v_texel;
 layout(location = 1) in vec3 v_haze;
 layout(location = 2) in float v_transmittance;
 layout(location = 3) in vec3 v_rel;
+layout(location = 4) in float v_detail;
 layout(location = 0) out vec4 out_color;
 
+// This fragment's corners in the overview and, inside a detail tile, in the tile; the share of
+// the tile's values (v_detail).
+TerrainCorners g_overview, g_tile;
+float g_detail;
+
 vec3 unpack_rgb(uvec2 p) { return vec3(unpackHalf2x16(p.x), unpackHalf2x16(p.y).x); }
-vec3 texel_radiance(int i) { return unpack_rgb(radiance[i]); }
-// rgb: the texel's sun radiance; a: its open-sky fraction.
-vec4 texel_sun(int i) { return vec4(unpack_rgb(terrain_sun[i]), unpackHalf2x16(terrain_sun[i].y).y); }
+// rgb: a sun radiance; a: the open-sky fraction.
+vec4 unpack_sun(uvec2 p) { return vec4(unpack_rgb(p), unpackHalf2x16(p.y).y); }
+
+vec3 bilinear3(vec3 a, vec3 b, vec3 c, vec3 d, vec2 f) { return mix(mix(a, b, f.x), mix(c, d, f.x), f.y); }
+vec4 bilinear4(vec4 a, vec4 b, vec4 c, vec4 d, vec2 f) { return mix(mix(a, b, f.x), mix(c, d, f.x), f.y); }
+
+vec3 terrain_radiance() {
+    ivec4 i = g_overview.index;
+    vec3 l = g_detail >= 1.0 ? vec3(0.0)
+                             : bilinear3(unpack_rgb(radiance[i.x]), unpack_rgb(radiance[i.y]), unpack_rgb(radiance[i.z]),
+                                         unpack_rgb(radiance[i.w]), g_overview.f);
+    if (g_detail <= 0.0) return l;
+    ivec4 j = g_tile.index;
+    vec3 d = bilinear3(unpack_rgb(tile_radiance[j.x]), unpack_rgb(tile_radiance[j.y]), unpack_rgb(tile_radiance[j.z]),
+                       unpack_rgb(tile_radiance[j.w]), g_tile.f);
+    return mix(l, d, g_detail);
+}
+
+// rgb: the sun's part of the radiance; a: the open-sky fraction.
+vec4 terrain_sun_open() {
+    ivec4 i = g_overview.index;
+    vec4 s = g_detail >= 1.0 ? vec4(0.0)
+                             : bilinear4(unpack_sun(terrain_sun[i.x]), unpack_sun(terrain_sun[i.y]),
+                                         unpack_sun(terrain_sun[i.z]), unpack_sun(terrain_sun[i.w]), g_overview.f);
+    if (g_detail <= 0.0) return s;
+    ivec4 j = g_tile.index;
+    vec4 d = bilinear4(unpack_sun(tile_sun[j.x]), unpack_sun(tile_sun[j.y]), unpack_sun(tile_sun[j.z]),
+                       unpack_sun(tile_sun[j.w]), g_tile.f);
+    return mix(s, d, g_detail);
+}
 
 // The aircraft's shadows at this fragment: the radiance `l` (of which `l_sun` is the sun's part)
 // with the sun's disc fraction its spheres hide taken from the sun's part, and from the rest the
 // share of the sky they hide of what the terrain leaves open (ts_open_sky_share: in a valley
 // the aircraft hides more of a smaller sky). Only receivers in the bound's sun cone or sky
 // footprint loop over the spheres.
-vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
+vec3 aircraft_shadowed(vec3 l, vec3 p, vec3 n) {
     vec3 c = frame.aircraft_bound.xyz;
     float r = frame.aircraft_bound.w;
     vec3 s = frame.sun_direction.xyz;
@@ -36,8 +70,7 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
     bool sun = sun_cone_meets(v, r, s, alpha);
     float bound_sky = dot(v, v) < footprint * footprint ? ts_sphere_sky_cover(c, r, p, n) : 0.0;
     if (!sun && bound_sky <= 0.0) return l;
-    vec4 sun_open = mix(mix(texel_sun(texels.x), texel_sun(texels.y), f.x),
-                        mix(texel_sun(texels.z), texel_sun(texels.w), f.x), f.y);
+    vec4 sun_open = terrain_sun_open();
     vec3 l_sun = sun_open.rgb;
     sun = sun && (l_sun.r + l_sun.g + l_sun.b) > 0.0;
     // Near the bound its parts' covers combine one by one; farther the bound's cover times the
@@ -77,18 +110,16 @@ vec3 aircraft_shadowed(vec3 l, ivec4 texels, vec2 f, vec3 p, vec3 n) {
 }
 
 void main() {
-    int w = int(frame.grid.x), h = int(frame.grid.y);
     vec2 t = clamp(v_texel, vec2(0.0), frame.grid.xy - 1.0);
-    int c0 = min(int(floor(t.x)), w - 2), r0 = min(int(floor(t.y)), h - 2);
-    vec2 f = t - vec2(c0, r0);
-    int i00 = r0 * w + c0, i10 = i00 + 1, i01 = i00 + w, i11 = i01 + 1;
-    vec3 l = mix(mix(texel_radiance(i00), texel_radiance(i10), f.x), mix(texel_radiance(i01), texel_radiance(i11), f.x),
-                 f.y);
+    g_detail = patch_.slot >= 0 ? clamp(v_detail, 0.0, 1.0) : 0.0;
+    g_overview = overview_corners(t);
+    if (g_detail > 0.0) g_tile = tile_corners(t);
+    vec3 l = terrain_radiance();
     // The drawn triangle's normal (derivatives are taken where every fragment still runs).
     vec3 n = cross(dFdx(v_rel), dFdy(v_rel));
     n = dot(n, n) > 0.0 ? normalize(n) : vec3(0.0, 0.0, 1.0);
     if (n.z < 0.0) n = -n;
-    if (frame.aircraft_bound.w > 0.0) l = aircraft_shadowed(l, ivec4(i00, i10, i01, i11), f, v_rel, n);
+    if (frame.aircraft_bound.w > 0.0) l = aircraft_shadowed(l, v_rel, n);
     l = l * v_transmittance + v_haze * (1.0 - v_transmittance);
     out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
 }

@@ -6,24 +6,24 @@
 #define TS_GLSL 1
 #include "core/fly/cdlod_shared.h"
 #include "gpu/fly/fly_frame.glsl"
-
-layout(push_constant) uniform Patch {
-    float col0, row0, spacing, morph_start_m, morph_end_m;
-    uint quads;
-} patch_;
+#include "gpu/fly/fly_patch.glsl"
 
 layout(location = 0) out vec2 v_texel;  // level-0 texel-centre coordinates
 layout(location = 1) out vec3 v_haze;      // the sky's horizon radiance in this azimuth
 layout(location = 2) out float v_transmittance;
 layout(location = 3) out vec3 v_rel;    // eye-relative grid-frame metres, before the curvature drop
+// 1 where the fragment takes its tile's radiance, 0 the overview's: a tile's coarsest level fades
+// to the overview's across its morph band, where its geometry becomes the overview's.
+layout(location = 4) out float v_detail;
 
 float height_at(vec2 t) {
-    int w = int(frame.grid.x), h = int(frame.grid.y);
-    int c0 = min(int(floor(t.x)), w - 2), r0 = min(int(floor(t.y)), h - 2);
-    float fc = t.x - float(c0), fr = t.y - float(r0);
-    float z00 = heights[r0 * w + c0], z10 = heights[r0 * w + c0 + 1];
-    float z01 = heights[(r0 + 1) * w + c0], z11 = heights[(r0 + 1) * w + c0 + 1];
-    return mix(mix(z00, z10, fc), mix(z01, z11, fc), fr);
+    if (patch_.slot >= 0) {
+        TerrainCorners c = tile_corners(t);
+        return bilinear(vec4(tile_heights[c.index.x], tile_heights[c.index.y], tile_heights[c.index.z],
+                             tile_heights[c.index.w]), c.f);
+    }
+    TerrainCorners c = overview_corners(t);
+    return bilinear(vec4(heights[c.index.x], heights[c.index.y], heights[c.index.z], heights[c.index.w]), c.f);
 }
 
 vec3 grid_point(vec2 t) {
@@ -47,6 +47,7 @@ void main() {
     rel.z -= ts_curvature_drop(dot(rel.xy, rel.xy));
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_texel = tm;
+    v_detail = patch_.slot < 0 ? 0.0 : (patch_.level + 1 == int(frame.overview.w) ? 1.0 - m : 1.0);
     // Aerial perspective per vertex (it varies slowly over a triangle; the fragment shader
     // would pay the sky lookup for every pixel).
     float dist = length(rel);

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "frame_pixels.hpp"
 
 namespace ts::cli_test {
 namespace {
@@ -31,16 +32,6 @@ std::filesystem::path write_path(const std::filesystem::path& dir) {
                         "6,5.62,45.13,2300,50,-8,10\n"
                         "12,5.70,45.18,2200,60,-8,0\n";
     return p;
-}
-
-std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
-    auto in = OIIO::ImageInput::open(p.string());
-    EXPECT_TRUE(in) << p;
-    if (!in) return {};
-    w = in->spec().width, h = in->spec().height;
-    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
-    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
-    return px;
 }
 
 TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
@@ -172,6 +163,41 @@ TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+}
+
+// The same with the DEM streamed by tile: the worker thread loads tiles while the window draws,
+// and stops with it.
+TEST(FlyCli, AStreamedDemFliesInTheWindowUnderXvfb) {
+    ASSERT_EQ(run("command -v xvfb-run").exit_code, 0) << "xvfb-run is missing: install xvfb (scripts/setup.sh)";
+    const auto dir = temp_dir("fly_window_stream");
+    const std::string server = std::to_string(700 + int(::getpid() % 500));
+    const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
+                                ts_cmd("fly " + quote(kDem) +
+                                       " --stream on --memory-budget 256 --size 320x180 --directions 8 --exit-after 8"
+                                       " --vsync off --path " + quote(write_path(dir).string()) + " --mesh " +
+                                       quote(kCessna) + " --mesh-forward -x --sphere-cache-dir " +
+                                       quote((dir / "cache").string()));
+    Result r = run(command);
+    if (r.exit_code == 2 && r.err.find("cannot open a window") != std::string::npos) r = run(command);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("streaming"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err.find("validation:"), std::string::npos) << r.err;
+}
+
+TEST(FlyCli, StreamingFlagsAreCheckedBeforeWork) {
+    const auto dir = temp_dir("fly_stream_bad");
+    const std::string frames = " --frames 2 --out " + quote(dir.string());
+    for (const std::string& flags : {std::string(" --stream maybe"), std::string(" --memory-budget 10"),
+                                     std::string(" --overview-level 13"), std::string(" --stream on --crop 5.6,45.1,5.8,45.3"),
+                                     std::string(" --stream on --max-error 0.05"), std::string(" --stream on --no-fill")}) {
+        const Result r = run(ts_cmd("fly " + quote(kDem) + frames + flags));
+        EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
+    }
+    // A budget that holds fewer than four detail tiles says how much it needs.
+    const Result tight = run(ts_cmd("fly " + quote(kDem) + frames + " --stream on --memory-budget 64 --overview-level 2"));
+    EXPECT_EQ(tight.exit_code, 2) << tight.err;
+    EXPECT_NE(tight.err.find("--memory-budget"), std::string::npos) << tight.err;
 }
 
 TEST(FlyCli, BadInputExitsTwoBeforeWork) {

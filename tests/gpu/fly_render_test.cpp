@@ -26,6 +26,7 @@
 #include "core/raster/srgb.hpp"
 #include "core/render/tone_map.hpp"
 #include "gpu/fly/flythrough.hpp"
+#include "tests/gpu/crack_pixels.hpp"
 #include "tests/gpu/validated_context.hpp"
 
 namespace ts::gpu {
@@ -40,9 +41,7 @@ struct FrameCheck {
     int crack_pixels = 0;
 };
 
-// depth > 0: terrain drawn (reversed Z, cleared to 0). A crack is a sky pixel with terrain both
-// above and below it in the same column: a height field seen by an upright camera covers each
-// column of the middle of the picture (nearly vertical planes) in one run.
+// depth > 0: terrain drawn (reversed Z, cleared to 0); cracks as tests/gpu/crack_pixels.hpp counts them.
 FrameCheck check_frame(const std::vector<std::uint8_t>& rgba, const std::vector<float>& depth, int w, int h) {
     FrameCheck c;
     std::size_t terrain = 0, sky = 0, black = 0;
@@ -64,16 +63,7 @@ FrameCheck check_frame(const std::vector<std::uint8_t>& rgba, const std::vector<
     c.terrain_mean = terrain ? sum / double(terrain) : 0;
     c.sky_mean = sky ? sky_sum / double(sky) : 0;
     c.black_terrain_fraction = terrain ? double(black) / double(terrain) : 0;
-    for (int x = int(0.3 * w); x < int(0.7 * w); ++x) {
-        int top = -1, bottom = -1;
-        for (int y = 0; y < h; ++y)
-            if (depth[std::size_t(y) * std::size_t(w) + std::size_t(x)] > 0.0f) {
-                if (top < 0) top = y;
-                bottom = y;
-            }
-        for (int y = top + 1; top >= 0 && y < bottom; ++y)
-            if (depth[std::size_t(y) * std::size_t(w) + std::size_t(x)] == 0.0f) ++c.crack_pixels;
-    }
+    c.crack_pixels = test_support::crack_pixels(depth, w, h);
     return c;
 }
 

@@ -130,6 +130,7 @@ void add_bench_command(CLI::App& root) {
     add_bench_spheres_command(*bench);
     add_bench_blockers_command(*bench);
     add_bench_tiles_command(*bench);
+    add_bench_dem_command(*bench);
 #ifdef TERRASHADE_HAS_GPU
     add_bench_fly_command(*bench);
 #endif

@@ -24,6 +24,8 @@ void add_bench_blockers_command(CLI::App& bench);
 void add_bench_tiles_command(CLI::App& bench);
 // `terrashade bench fly` (bench_fly_command.cpp; GPU build only): flythrough fps and LOD figures.
 void add_bench_fly_command(CLI::App& bench);
+// `terrashade bench dem` (bench_dem_command.cpp): the synthetic mosaic written as a GeoTIFF, band by band.
+void add_bench_dem_command(CLI::App& bench);
 // bench report: every knob's time and error in one CSV (bench_report_command.cpp).
 void add_bench_report_command(CLI::App& bench);
 

@@ -187,6 +187,7 @@ fly::HudStatus hud_status(const gpu::Flythrough& flight, const std::string& lead
     h.sun_elevation_deg = flight.sun().elevation_deg;
     h.camera = fly::camera_mode_name(mode);
     h.paused = paused, h.recording = recording;
+    if (flight.streamed()) h.tiles = st.tiles_resident, h.pending_tiles = long(st.tiles_pending);
     return h;
 }
 

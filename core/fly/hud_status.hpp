@@ -17,6 +17,9 @@ struct HudStatus {
     double sun_elevation_deg = 0;
     std::string camera;  // chase, cockpit, free, orbit
     bool paused = false, recording = false;
+    // A streamed DEM: detail tiles resident, and loading (pending < 0: not streamed).
+    std::size_t tiles = 0;
+    long pending_tiles = -1;
 };
 
 // Three short lines: timings, geometry and state, position and sun.

@@ -140,6 +140,12 @@ TEST(HudText, TheStatusLinesAreTheTitlesContent) {
     EXPECT_EQ(lines[2], "45.1234N 5.7234E 2310 m  hdg 045  16:52 solar  sun 35 deg");
     for (const std::string& l : lines) EXPECT_LE(l.size(), 64u);
     EXPECT_EQ(hud_title(s), "terrashade fly | " + lines[0] + " | " + lines[1] + " | " + lines[2]);
+    // A streamed DEM adds its resident tiles, with a + while some load.
+    s.tiles = 14, s.pending_tiles = 3;
+    EXPECT_EQ(hud_lines(s)[1], "812 patches  210345 tris  tiles 14+  chase  REC");
+    s.pending_tiles = 0;
+    EXPECT_EQ(hud_lines(s)[1], "812 patches  210345 tris  tiles 14  chase  REC");
+    EXPECT_LE(hud_lines(s)[1].size(), 64u);
 }
 
 }  // namespace

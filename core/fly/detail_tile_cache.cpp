@@ -18,10 +18,15 @@ DetailTileCache::DetailTileCache(const dem::DemSource& source, const TerrainOver
     const std::size_t window = std::size_t(layout_.tile_texels + 1 + 2 * options.shading.halo);
     const std::size_t samples = std::size_t(layout_.tile_texels + 1) * std::size_t(layout_.tile_texels + 1);
     tile_bytes_ = window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3)) + samples * (4 + 8 + 8) * 2;
-    slots_ = int(std::min<std::size_t>(options.budget_bytes / tile_bytes_, std::size_t(layout_.tiles_x) * std::size_t(layout_.tiles_y)));
-    if (slots_ < 4)
-        throw InputError("--memory-budget: " + std::to_string(options.budget_bytes >> 20) + " MB holds fewer than 4 detail tiles of " +
-                         std::to_string(tile_bytes_ >> 20) + " MB; give it at least " + std::to_string((4 * tile_bytes_ >> 20) + 1) + " MB");
+    const std::size_t tiles = std::size_t(layout_.tiles_x) * std::size_t(layout_.tiles_y);
+    slots_ = int(std::min(options.budget_bytes / tile_bytes_, tiles));
+    // Four tiles: the corner of four tiles under the eye (or every tile of a smaller DEM).
+    const int needed = int(std::min<std::size_t>(4, tiles));
+    if (slots_ < needed)
+        throw InputError("--memory-budget: the detail tiles' share (" + std::to_string(options.budget_bytes >> 20) +
+                         " MB after the overview and far field) holds fewer than " + std::to_string(needed) +
+                         " tiles of " + std::to_string(tile_bytes_ >> 20) + " MB; give it " +
+                         std::to_string(((std::size_t(needed) * tile_bytes_ - options.budget_bytes) >> 20) + 1) + " MB more");
     for (int s = slots_ - 1; s >= 0; --s) free_slots_.push_back(s);
     worker_ = std::thread([this] { worker_loop(); });
 }

@@ -21,14 +21,11 @@ layout(std430, set = 0, binding = 0) readonly buffer Frame {
     vec4 aircraft_bound;   // the aircraft's spheres' bound: eye-relative centre, radius (0: no shadows)
     vec4 aircraft_shadow;  // node count, sky footprint radius (m), sun angular radius (rad), self-shadow (1)
     vec4 aircraft_sky;     // x: far share of the bound's sky cover, y: bound cover above which each sphere counts
-    // The terrain's heights and radiance (Heights, Radiance, TerrainSun) hold every
-    // overview.z-th level-0 texel: overview.xy texels; a DEM in memory has them all (z = 1). A
-    // streamed DEM's finer levels, below overview.w, read their tile in the atlas (TileHeights,
-    // TileRadiance, TileSun; core/fly/detail_tile_cache.hpp) of atlas.x samples a side.
+    // The overview at the start of Heights, Radiance and TerrainSun (gpu/fly/fly_patch.glsl):
+    // every overview.z-th level-0 texel, overview.xy of them; a DEM in memory has them all.
     vec4 overview;         // width, height, level-0 texels per texel, CDLOD levels read from tiles
-    vec4 atlas;            // samples per tile side (tile texels + 1)
 } frame;
-layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // [row][col]
+layout(std430, set = 0, binding = 1) readonly buffer Heights { float heights[]; };     // overview, then atlas slots
 layout(std430, set = 0, binding = 2) readonly buffer Rows { vec2 rows[]; };            // dx_m, north_m
 layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]; };   // rgb fp16 per texel
 layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
@@ -43,10 +40,6 @@ layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec2 terrain_
 // afar). A walk goes on to i + 1 from a node it accepts and to the skip index from one it
 // refuses.
 layout(std430, set = 0, binding = 7) readonly buffer Spheres { vec4 sphere_nodes[]; };
-// The detail tiles: per slot atlas.x^2 samples, [slot][row][col].
-layout(std430, set = 0, binding = 8) readonly buffer TileHeights { float tile_heights[]; };
-layout(std430, set = 0, binding = 9) readonly buffer TileRadiance { uvec2 tile_radiance[]; };
-layout(std430, set = 0, binding = 10) readonly buffer TileSun { uvec2 tile_sun[]; };
 
 // Whether the cone of directions within `sun_radius` of the sun seen from a receiver meets a
 // sphere `v` (centre minus receiver) away: the sphere then hides part of the disc. A cheap

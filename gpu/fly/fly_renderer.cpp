@@ -9,20 +9,41 @@
 #include "gpu/vk_check.hpp"
 
 namespace ts::gpu {
+
+// fly_patch.glsl's Patch block: the patch, and where its heights and radiance are read (the
+// overview's texels first in each buffer, then the atlas's slots).
+struct PatchPush {
+    float col0, row0, spacing, morph_start_m, morph_end_m;
+    std::uint32_t quads;
+    std::int32_t base, stride;
+    float origin_col, origin_row, inv_scale;
+    std::int32_t fade;
+    std::int32_t dims_x, dims_y;
+};
+static_assert(sizeof(PatchPush) == 56, "fly_patch.glsl's Patch block");
+
 namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr int kBindings = 11;
+constexpr int kBindings = 8;
 
-struct PatchPush {
-    float col0, row0, spacing, morph_start_m, morph_end_m;
-    std::uint32_t quads;
-    std::int32_t slot, level;
-    float tile_col0, tile_row0;
-};
-static_assert(sizeof(PatchPush) == 40, "fly_patch.glsl's Patch block");
+
+
+// Copies `bytes` into a device-local buffer at `offset` (the device idle: one submit and wait).
+void copy_into(const Context& ctx, const Buffer& target, std::size_t offset, const void* data, std::size_t bytes) {
+    Buffer staging = ctx.create_buffer(bytes, MemoryKind::host_visible);
+    std::memcpy(staging.mapped(), data, bytes);
+    CommandPool pool(ctx.vk_device(), ctx.device().queue_family());
+    CommandBuffer cmd(ctx.vk_device(), pool);
+    cmd.begin();
+    VkBufferCopy region{0, VkDeviceSize(offset), VkDeviceSize(bytes)};
+    vkCmdCopyBuffer(cmd.get(), staging.get(), target.get(), 1, &region);
+    cmd.end();
+    Fence fence(ctx.vk_device());
+    submit_and_wait(ctx.device().queue(), cmd.get(), fence);
+}
 
 Buffer zeroed(const Context& ctx, std::size_t bytes) {
     Buffer b = ctx.create_buffer(std::max<std::size_t>(bytes, 16), MemoryKind::host_visible);
@@ -129,23 +150,29 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
       grid_height_(terrain.height),
       patch_quads_(terrain.patch_quads),
       overview_texels_(terrain.overview_width * terrain.overview_height),
+      overview_width_(terrain.overview_width),
+      overview_height_(terrain.overview_height),
+      overview_scale_(terrain.overview_scale),
+      detail_levels_(terrain.detail_levels),
       atlas_samples_(terrain.atlas_samples),
       atlas_slots_(terrain.atlas_slots),
       width_(width),
       height_(height) {
     const VkDevice device = context.vk_device();
-    heights_ = upload(context, terrain.heights.data(), terrain.heights.size_bytes(), 0);
+    const std::size_t atlas = std::size_t(atlas_slots_) * std::size_t(atlas_samples_) * std::size_t(atlas_samples_);
+    {
+        // The overview's heights, then the atlas's slots (filled by set_tile).
+        std::vector<float> all(std::size_t(overview_texels_) + atlas, 0.0f);
+        std::copy(terrain.heights.begin(), terrain.heights.end(), all.begin());
+        heights_ = upload(context, all.data(), all.size() * sizeof(float), 0);
+    }
     rows_ = upload(context, terrain.rows.data(), terrain.rows.size_bytes(), 0);
     const std::vector<std::uint32_t> indices = patch_indices(patch_quads_);
     quadrant_indices_ = std::uint32_t(indices.size() / 4);
     indices_ = upload(context, indices.data(), indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
-    radiance_ = zeroed(context, std::size_t(overview_texels_) * 8);
+    radiance_ = zeroed(context, (std::size_t(overview_texels_) + atlas) * 8);
     sun_radiance_ = zeroed(context, radiance_.size());
-    const std::size_t atlas = std::size_t(atlas_slots_) * std::size_t(atlas_samples_) * std::size_t(atlas_samples_);
-    tile_heights_ = zeroed(context, atlas * 4);
-    tile_radiance_ = zeroed(context, atlas * 8);
-    tile_sun_ = zeroed(context, atlas * 8);
     spheres_ = context.create_buffer(16, MemoryKind::host_visible);
     std::memset(spheres_.mapped(), 0, spheres_.size());
     sky_ = context.create_buffer(16, MemoryKind::host_visible);
@@ -165,6 +192,8 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     terrain_pipeline_ =
         make_graphics_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert", "fly_terrain.frag",
                                PipelineDepth::nearest);
+    terrain_fade_pipeline_ = make_graphics_pipeline(device, terrain_layout_.get(), render_pass_.get(), "fly_terrain.vert",
+                                                    "fly_terrain_fade.frag", PipelineDepth::nearest);
     aircraft_layout_ = PipelineLayout(device, set_layout_.get(), sizeof(glm::mat4), VK_SHADER_STAGE_VERTEX_BIT);
     aircraft_pipeline_ = make_graphics_pipeline(device, aircraft_layout_.get(), render_pass_.get(), "fly_aircraft.vert",
                                                 "fly_aircraft.frag", PipelineDepth::nearest);
@@ -178,10 +207,8 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
 FlyRenderer::~FlyRenderer() { context_.device().wait_idle(); }
 
 void FlyRenderer::write_descriptors() {
-    const VkBuffer buffers[kBindings] = {frame_.get(),        heights_.get(),      rows_.get(),
-                                         radiance_.get(),     sky_.get(),          aircraft_.get(),
-                                         sun_radiance_.get(), spheres_.get(),      tile_heights_.get(),
-                                         tile_radiance_.get(), tile_sun_.get()};
+    const VkBuffer buffers[kBindings] = {frame_.get(), heights_.get(),  rows_.get(),         radiance_.get(),
+                                         sky_.get(),   aircraft_.get(), sun_radiance_.get(), spheres_.get()};
     write_storage_buffers(context_.vk_device(), set_, buffers);
 }
 
@@ -215,6 +242,28 @@ void FlyRenderer::resize(int width, int height) {
     create_targets();
 }
 
+PatchPush FlyRenderer::patch_push(const fly::CdlodPatch& p) const {
+    PatchPush push{};
+    push.col0 = p.col0, push.row0 = p.row0, push.spacing = p.spacing;
+    push.morph_start_m = p.morph_start_m, push.morph_end_m = p.morph_end_m;
+    push.quads = std::uint32_t(patch_quads_);
+    if (p.slot >= 0) {
+        push.base = overview_texels_ + p.slot * atlas_samples_ * atlas_samples_;
+        push.stride = atlas_samples_;
+        push.origin_col = p.tile_col0, push.origin_row = p.tile_row0, push.inv_scale = 1.0f;
+        push.fade = p.level + 1 == detail_levels_ ? 1 : 0;
+        // An edge tile holds fewer samples: up to the grid's last texel.
+        push.dims_x = std::min(atlas_samples_, grid_width_ - int(p.tile_col0));
+        push.dims_y = std::min(atlas_samples_, grid_height_ - int(p.tile_row0));
+    } else {
+        push.base = 0;
+        push.stride = overview_width_;
+        push.inv_scale = 1.0f / float(overview_scale_);
+        push.dims_x = overview_width_, push.dims_y = overview_height_;
+    }
+    return push;
+}
+
 void FlyRenderer::set_tile(int slot, int sx, int sy, std::span<const float> heights,
                            std::span<const std::uint32_t> radiance, std::span<const std::uint32_t> sun) {
     if (slot < 0 || slot >= atlas_slots_ || sx > atlas_samples_ || sy > atlas_samples_ ||
@@ -222,25 +271,27 @@ void FlyRenderer::set_tile(int slot, int sx, int sy, std::span<const float> heig
         sun.size() != radiance.size())
         throw std::logic_error("FlyRenderer::set_tile: wrong slot or size");
     const std::size_t stride = std::size_t(atlas_samples_);
-    const std::size_t base = std::size_t(slot) * stride * stride;
-    auto* h = reinterpret_cast<float*>(tile_heights_.mapped());
-    auto* l = reinterpret_cast<std::uint32_t*>(tile_radiance_.mapped());
-    auto* s = reinterpret_cast<std::uint32_t*>(tile_sun_.mapped());
+    const std::size_t base = std::size_t(overview_texels_) + std::size_t(slot) * stride * stride;
+    std::vector<float> rows(stride * std::size_t(sy), 0.0f);
+    auto* l = reinterpret_cast<std::uint32_t*>(radiance_.mapped());
+    auto* s = reinterpret_cast<std::uint32_t*>(sun_radiance_.mapped());
     for (int r = 0; r < sy; ++r) {
-        const std::size_t to = base + std::size_t(r) * stride, from = std::size_t(r) * std::size_t(sx);
-        std::memcpy(h + to, heights.data() + from, std::size_t(sx) * sizeof(float));
-        std::memcpy(l + 2 * to, radiance.data() + 2 * from, std::size_t(sx) * 8);
-        std::memcpy(s + 2 * to, sun.data() + 2 * from, std::size_t(sx) * 8);
+        const std::size_t to = std::size_t(r) * stride, from = std::size_t(r) * std::size_t(sx);
+        std::copy_n(heights.data() + from, sx, rows.data() + to);
+        std::memcpy(l + 2 * (base + to), radiance.data() + 2 * from, std::size_t(sx) * 8);
+        std::memcpy(s + 2 * (base + to), sun.data() + 2 * from, std::size_t(sx) * 8);
     }
+    copy_into(context_, heights_, base * sizeof(float), rows.data(), rows.size() * sizeof(float));
 }
 
 void FlyRenderer::set_radiance(std::span<const std::uint32_t> packed) {
-    if (packed.size_bytes() != radiance_.size()) throw std::logic_error("FlyRenderer::set_radiance: wrong size");
+    if (packed.size_bytes() != std::size_t(overview_texels_) * 8) throw std::logic_error("FlyRenderer::set_radiance: wrong size");
     std::memcpy(radiance_.mapped(), packed.data(), packed.size_bytes());
 }
 
 void FlyRenderer::set_sun_radiance(std::span<const std::uint32_t> packed) {
-    if (packed.size_bytes() != sun_radiance_.size()) throw std::logic_error("FlyRenderer::set_sun_radiance: wrong size");
+    if (packed.size_bytes() != std::size_t(overview_texels_) * 8)
+        throw std::logic_error("FlyRenderer::set_sun_radiance: wrong size");
     std::memcpy(sun_radiance_.mapped(), packed.data(), packed.size_bytes());
 }
 
@@ -295,13 +346,17 @@ void FlyRenderer::record(VkCommandBuffer cmd, const FlyFrameUniforms& frame, con
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_pipeline_.get());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_layout_.get(), 0, 1, &set_, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, indices_.get(), 0, VK_INDEX_TYPE_UINT32);
-    for (const fly::CdlodPatch& p : patches) {
-        const PatchPush push{p.col0,    p.row0,       p.spacing,   p.morph_start_m, p.morph_end_m, std::uint32_t(patch_quads_),
-                             p.slot,    p.level,      p.tile_col0, p.tile_row0};
-        vkCmdPushConstants(cmd, terrain_layout_.get(), kStages, 0, sizeof push, &push);
-        const std::uint32_t first = p.quadrant < 0 ? 0 : std::uint32_t(p.quadrant) * quadrant_indices_;
-        const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
-        vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);
+    // The patches of a tile's coarsest level last, with the pipeline that fades to the overview.
+    for (int fade = 0; fade < 2; ++fade) {
+        if (fade == 1) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, terrain_fade_pipeline_.get());
+        for (const fly::CdlodPatch& p : patches) {
+            const PatchPush push = patch_push(p);
+            if (push.fade != fade) continue;
+            vkCmdPushConstants(cmd, terrain_layout_.get(), kStages, 0, sizeof push, &push);
+            const std::uint32_t first = p.quadrant < 0 ? 0 : std::uint32_t(p.quadrant) * quadrant_indices_;
+            const std::uint32_t count = p.quadrant < 0 ? 4 * quadrant_indices_ : quadrant_indices_;
+            vkCmdDrawIndexed(cmd, count, 1, first, 0, 0);
+        }
     }
     if (draw_aircraft_) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, aircraft_pipeline_.get());

@@ -48,10 +48,11 @@ struct FlyFrameUniforms {
     // cover above which the spheres are summed one by one (FlySettings::aircraft_sky_detail).
     glm::vec4 aircraft_sky{0.0f};
     // The overview's width and height, level-0 texels per overview texel, the CDLOD levels
-    // drawn from detail tiles; the atlas's samples per tile side (fly_frame.glsl).
+    // drawn from detail tiles (fly_frame.glsl).
     glm::vec4 overview{0.0f};
-    glm::vec4 atlas{0.0f};
 };
+
+struct PatchPush;
 
 struct FlyTerrain {
     int width = 0, height = 0;          // level-0 texels
@@ -61,8 +62,9 @@ struct FlyTerrain {
     int overview_width = 0, overview_height = 0, overview_scale = 1;
     std::span<const float> heights;
     int patch_quads = 16;
-    // A streamed DEM's detail tiles (core/fly/detail_tile_cache.hpp): slots and samples a side.
-    int atlas_slots = 0, atlas_samples = 0;
+    // A streamed DEM's detail tiles (core/fly/detail_tile_cache.hpp): slots and samples a side,
+    // and the CDLOD levels they draw (those below the overview's).
+    int atlas_slots = 0, atlas_samples = 0, detail_levels = 0;
 };
 
 class FlyRenderer {
@@ -115,21 +117,23 @@ public:
 
 private:
     void create_targets();
+    PatchPush patch_push(const fly::CdlodPatch& p) const;
     void write_descriptors();
 
     const Context& context_;
     int grid_width_ = 0, grid_height_ = 0, patch_quads_ = 16;
-    int overview_texels_ = 0, atlas_samples_ = 0, atlas_slots_ = 0;
+    int overview_texels_ = 0, overview_width_ = 0, overview_height_ = 0, overview_scale_ = 1, detail_levels_ = 0;
+    int atlas_samples_ = 0, atlas_slots_ = 0;
     int width_ = 0, height_ = 0;
     std::uint32_t quadrant_indices_ = 0;
+    // Heights, radiance and its sun part: the overview's texels, then the atlas's slots.
     Buffer heights_, rows_, indices_, frame_, radiance_, sun_radiance_, sky_, spheres_;
-    Buffer tile_heights_, tile_radiance_, tile_sun_;
     DescriptorSetLayout set_layout_;
     DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     PipelineLayout sky_layout_, terrain_layout_, aircraft_layout_;
     DeviceHandle<VkRenderPass> render_pass_;
-    DeviceHandle<VkPipeline> sky_pipeline_, terrain_pipeline_, aircraft_pipeline_;
+    DeviceHandle<VkPipeline> sky_pipeline_, terrain_pipeline_, terrain_fade_pipeline_, aircraft_pipeline_;
     Buffer aircraft_;
     std::uint32_t aircraft_vertices_ = 0;
     glm::mat4 aircraft_transform_{1.0f};

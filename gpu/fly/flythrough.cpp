@@ -119,6 +119,7 @@ void Flythrough::init_renderer() {
     if (cache_) {
         terrain.atlas_slots = cache_->slots();
         terrain.atlas_samples = cache_->layout().tile_texels + 1;
+        terrain.detail_levels = tree_->stored_level();
     }
     renderer_ = std::make_unique<FlyRenderer>(context_, terrain, settings_.width, settings_.height);
     render::PointTerrainLightOptions light_options;
@@ -418,7 +419,6 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     }
     u.overview = glm::vec4(float(scene_->grid().width), float(scene_->grid().height),
                            overview_ ? float(1 << overview_->level) : 1.0f, float(tree_->stored_level()));
-    u.atlas = glm::vec4(cache_ ? float(cache_->layout().tile_texels + 1) : 0.0f, 0.0f, 0.0f, 0.0f);
     u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
                             float(sky_table_.highest_rad));
 }

@@ -12,17 +12,12 @@ layout(location = 0) out vec2 v_texel;  // level-0 texel-centre coordinates
 layout(location = 1) out vec3 v_haze;      // the sky's horizon radiance in this azimuth
 layout(location = 2) out float v_transmittance;
 layout(location = 3) out vec3 v_rel;    // eye-relative grid-frame metres, before the curvature drop
-// 1 where the fragment takes its tile's radiance, 0 the overview's: a tile's coarsest level fades
-// to the overview's across its morph band, where its geometry becomes the overview's.
-layout(location = 4) out float v_detail;
+// The overview's share of the fragment's radiance: a tile's coarsest level fades to the
+// overview's across its morph band, where its geometry becomes the overview's; 0 elsewhere.
+layout(location = 4) out float v_overview;
 
 float height_at(vec2 t) {
-    if (patch_.slot >= 0) {
-        TerrainCorners c = tile_corners(t);
-        return bilinear(vec4(tile_heights[c.index.x], tile_heights[c.index.y], tile_heights[c.index.z],
-                             tile_heights[c.index.w]), c.f);
-    }
-    TerrainCorners c = overview_corners(t);
+    TerrainCorners c = patch_corners(t);
     return bilinear(vec4(heights[c.index.x], heights[c.index.y], heights[c.index.z], heights[c.index.w]), c.f);
 }
 
@@ -47,7 +42,7 @@ void main() {
     rel.z -= ts_curvature_drop(dot(rel.xy, rel.xy));
     gl_Position = frame.view_projection * vec4(rel, 1.0);
     v_texel = tm;
-    v_detail = patch_.slot < 0 ? 0.0 : (patch_.level + 1 == int(frame.overview.w) ? 1.0 - m : 1.0);
+    v_overview = float(patch_.fade) * m;
     // Aerial perspective per vertex (it varies slowly over a triangle; the fragment shader
     // would pay the sky lookup for every pixel).
     float dist = length(rel);

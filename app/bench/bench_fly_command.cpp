@@ -14,6 +14,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
+#include "app/job_memory.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/dem/dem_source.hpp"
@@ -43,6 +44,7 @@ struct BenchFlyArgs {
     // The first run again with the DEM streamed by tile within this budget (MB; 0: not run).
     double stream_budget_mb = 0;
     int overview_level = 0;
+    double stream_speed_mps = 0;  // the streamed run's ground speed (0: the whole track)
 };
 
 struct Figures {
@@ -56,13 +58,18 @@ struct Figures {
 // behind, 15 m above), so its sky shadow's footprint (about 100 m across for a Cessna) fills
 // the lower part of the frame: the shadows' worst case. Terrain-only runs of it keep the
 // camera and draw no aircraft.
-Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft, bool low) {
+// speed_mps > 0: the same track at that ground speed, a frame every 1/30 s, from its start.
+Figures fly_once(gpu::Flythrough& flight, int frames, bool with_aircraft, bool low, double speed_mps = 0) {
     // Across the DEM from its south-west quarter to its north-east, at 1.4x its top height
     // over the ground at the start, looking ahead and down a little.
     const auto& frame = flight.frame();
     double top = 0;
     for (float z : flight.scene().grid().z) top = std::max(top, double(z));
+    const glm::dvec2 a = frame.to_metric(0.2 * (frame.width() - 1), 0.8 * (frame.height() - 1));
+    const glm::dvec2 b = frame.to_metric(0.8 * (frame.width() - 1), 0.2 * (frame.height() - 1));
+    const double track_m = glm::length(b - a);
     auto pose_at = [&](double f) {
+        if (speed_mps > 0) f = std::min(1.0, f * (frames - 1) * speed_mps / 30.0 / track_m);
         const glm::dvec2 m = frame.to_metric((0.2 + 0.6 * f) * (frame.width() - 1), (0.8 - 0.6 * f) * (frame.height() - 1));
         fly::CameraPose p;
         p.eye = {m.x, m.y, std::max(top * 0.8, flight.ground_height_m({m.x, m.y, 0}) + 400.0)};
@@ -115,10 +122,29 @@ void run_bench_fly(const BenchFlyArgs& a) {
     if (std::sscanf(a.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || w < 16 || h < 16)
         throw InputError("--size " + a.size + ": give WIDTHxHEIGHT");
     if (a.frames < 2) throw InputError("--frames must be >= 2");
-    const dem::Dem dem = load_dem_input(a.dem);
+    // A DEM too large to fly whole (fly --stream off would refuse it) runs streamed only.
+    bool whole_fits = true;
+    {
+        const std::vector<std::filesystem::path> files(a.dem.files.begin(), a.dem.files.end());
+        const dem::DemSource source(files);
+        const std::uint64_t bytes = gpu::whole_fly_bytes(std::int64_t(source.layout().width) * source.layout().height);
+        try {
+            check_job_memory("flown whole", bytes, "");
+        } catch (const InputError&) {
+            whole_fits = false;
+        }
+        if (!whole_fits && !(a.stream_budget_mb > 0))
+            throw InputError("bench fly: the DEM takes ~" + std::to_string(bytes >> 30) +
+                             " GB flown whole, more than is available: give --stream-budget MB");
+    }
+    const dem::Dem dem = whole_fits ? load_dem_input(a.dem) : dem::Dem{};
     gpu::Context context;
-    std::printf("bench fly: %s, %dx%d texels, %d frames at %dx%d on %s\n", a.dem.files.front().c_str(), dem.width,
-                dem.height, a.frames, w, h, context.device_info().name.c_str());
+    if (whole_fits)
+        std::printf("bench fly: %s, %dx%d texels, %d frames at %dx%d on %s\n", a.dem.files.front().c_str(), dem.width,
+                    dem.height, a.frames, w, h, context.device_info().name.c_str());
+    else
+        std::printf("bench fly: %s, %d frames at %dx%d on %s; too large to fly whole: streamed only\n",
+                    a.dem.files.front().c_str(), a.frames, w, h, context.device_info().name.c_str());
     std::printf("lod_goal_px,lod_quantile,fps_mean,frame_ms_mean,frame_ms_p99,select_ms,triangles_per_frame,"
                 "screen_error_px,screen_error_worst_texel_px\n");
     struct Run {
@@ -152,6 +178,7 @@ void run_bench_fly(const BenchFlyArgs& a) {
         a.sphere_cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.sphere_cache_dir);
     const double yaw = a.mesh_forward == "-x" ? -90.0 : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 0.0;
     double whole_start_ms = 0;
+    if (!whole_fits) runs.clear();
     for (const Run& run : runs) {
         const double goal = run.goal;
         gpu::FlySettings s;
@@ -200,9 +227,11 @@ void run_bench_fly(const BenchFlyArgs& a) {
         gpu::Flythrough flight(source, s, context);
         flight.set_time(light::parse_utc_time(a.time));
         const double start_ms = start.milliseconds();
-        const Figures f = fly_once(flight, a.frames, false, false);
-        std::printf("streamed(overview level %d, %d tile slots, %.0f MB) %.2f,0.99,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n",
-                    flight.overview()->level, flight.detail_tiles()->slots(), a.stream_budget_mb, a.pixel_error, f.fps,
+        const Figures f = fly_once(flight, a.frames, false, false, a.stream_speed_mps);
+        std::printf("streamed(overview level %d, %d tile slots, %.0f MB%s) %.2f,0.99,%.2f,%.2f,%.2f,%.3f,%.0f,%.3f,%.3f\n",
+                    flight.overview()->level, flight.detail_tiles()->slots(), a.stream_budget_mb,
+                    a.stream_speed_mps > 0 ? (", " + std::to_string(int(a.stream_speed_mps)) + " m/s").c_str() : "",
+                    a.pixel_error, f.fps,
                     f.mean_ms, f.p99_ms, f.select_ms, f.tris, f.error_px, f.error_max_px);
         std::printf("start_ms_whole,start_ms_streamed,tiles_loaded,tiles_resident,coarse_fallbacks_all_frames,"
                     "tile_ms_per_frame,tile_bytes_resident_peak\n%.0f,%.0f,%llu,%zu,%zu,%.2f,%zu\n",
@@ -232,6 +261,9 @@ void add_bench_fly_command(CLI::App& bench) {
                     "also fly the DEM streamed by tile within this many MB (fly --memory-budget)");
     cmd->add_option("--overview-level", a->overview_level, "with --stream-budget: fly --overview-level")
         ->capture_default_str();
+    cmd->add_option("--stream-speed", a->stream_speed_mps,
+                    "with --stream-budget: fly the track at this ground speed (m/s, 30 frames a second) instead "
+                    "of across the whole DEM in --frames frames");
     cmd->callback([a] { run_bench_fly(*a); });
 }
 

@@ -34,14 +34,6 @@ void expect_error(const fs::path& path, const std::string& problem) {
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;  // one line
 }
 
-void write_zip(const fs::path& path, const std::string& entry, const std::string& content) {
-    int err = 0;
-    zip_t* z = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
-    zip_source_t* src = zip_source_buffer(z, content.data(), content.size(), 0);
-    zip_file_add(z, entry.c_str(), src, ZIP_FL_OVERWRITE);
-    zip_close(z);
-}
-
 }  // namespace
 
 TEST(BadInput, EachCaseIsOneLineNamingTheFile) {
@@ -60,7 +52,7 @@ TEST(BadInput, EachCaseIsOneLineNamingTheFile) {
     test_files::write_bytes(dir / "tile.hgt", tile);  // no corner in the name
     expect_error(dir / "tile.hgt", "south-west corner");
 
-    write_zip(dir / "N03E010.hgt.zip", "readme.txt", "no tile here");
+    test_files::write_zip(dir / "N03E010.hgt.zip", "readme.txt", "no tile here");
     expect_error(dir / "N03E010.hgt.zip", "no .hgt");
 
     test_files::TiffSpec rgb;

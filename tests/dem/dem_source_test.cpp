@@ -189,15 +189,6 @@ void write_blocks(const fs::path& path, const TiffLayout& s, const std::vector<s
 // Heights with structure at every scale, so a misplaced block or row shows.
 float height_at(int c, int r) { return float((c * 7 + r * 13) % 3001) - 100.0f + 0.25f * float((c + r) % 4); }
 
-int sparse_blocks(const fs::path& path) {
-    ts::raster::TiffFile file(path, "r");
-    TIFF* tif = file.get();
-    const std::uint32_t n = TIFFIsTiled(tif) ? TIFFNumberOfTiles(tif) : TIFFNumberOfStrips(tif);
-    int sparse = 0;
-    for (std::uint32_t i = 0; i < n; ++i) sparse += TIFFGetStrileByteCount(tif, i) == 0;
-    return sparse;
-}
-
 // A striped int16 file of width x height cells, `rows` rows per strip, deflate.
 fs::path striped_int16(const fs::path& dir, int width, int height, int rows) {
     std::vector<std::int16_t> v(std::size_t(width) * std::size_t(height));
@@ -252,14 +243,6 @@ void expect_same_error(const std::vector<fs::path>& paths, const std::string& pr
     EXPECT_EQ(streamed, whole);
     EXPECT_NE(streamed.find(problem), std::string::npos) << streamed;
     EXPECT_EQ(streamed.find('\n'), std::string::npos) << streamed;
-}
-
-void write_zip(const fs::path& path, const std::string& entry, const std::string& content) {
-    int err = 0;
-    zip_t* z = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
-    zip_source_t* src = zip_source_buffer(z, content.data(), content.size(), 0);
-    zip_file_add(z, entry.c_str(), src, ZIP_FL_OVERWRITE);
-    zip_close(z);
 }
 
 }  // namespace
@@ -346,7 +329,7 @@ TEST(DemSource, TiledAndStripedGeoTiffsMatch) {
     tiled.nodata = "-9999";
     tiled.skip = {6};  // second row of tiles, second tile
     write_blocks(dir / "tiled.tif", tiled, test_files::as_bytes(f));
-    ASSERT_EQ(sparse_blocks(dir / "tiled.tif"), 1);
+    ASSERT_EQ(test_files::sparse_blocks(dir / "tiled.tif"), 1);
 
     // int16, 7 rows per strip (the last one short), LZW with the horizontal predictor; one
     // strip never written and no nodata value (sparse: zeros).
@@ -360,7 +343,7 @@ TEST(DemSource, TiledAndStripedGeoTiffsMatch) {
     striped.predictor = PREDICTOR_HORIZONTAL;
     striped.skip = {3};
     write_blocks(dir / "striped.tif", striped, test_files::as_bytes(s));
-    ASSERT_EQ(sparse_blocks(dir / "striped.tif"), 1);
+    ASSERT_EQ(test_files::sparse_blocks(dir / "striped.tif"), 1);
 
     // uint8, one row per strip, uncompressed, nodata 0.
     std::vector<std::uint8_t> u(f.size());
@@ -505,9 +488,9 @@ TEST(DemSource, BadInputFailsAsReadDemAndMosaicDo) {
     expect_same_error({dir / "tile.hgt"}, "south-west corner");
     test_files::write_bytes(dir / "empty.tif", "");
     expect_same_error({dir / "empty.tif"}, "empty file");
-    write_zip(dir / "N00E012.hgt.zip", "readme.txt", "no tile");
+    test_files::write_zip(dir / "N00E012.hgt.zip", "readme.txt", "no tile");
     expect_same_error({dir / "N00E012.hgt.zip"}, "holds no .hgt");
-    write_zip(dir / "N00E013.hgt.zip", "N00E013.hgt", tile.substr(0, 1000));
+    test_files::write_zip(dir / "N00E013.hgt.zip", "N00E013.hgt", tile.substr(0, 1000));
     expect_same_error({dir / "N00E013.hgt.zip"}, "truncated?");
     test_files::write_bytes(dir / "N00E014.hgt", tile);
     expect_same_error({dir / "N00E014.hgt", dir / "missing.tif"}, "no such file");  // the second file

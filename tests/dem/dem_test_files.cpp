@@ -6,6 +6,7 @@
 #include <geotiff.h>
 #include <geovalues.h>
 #include <xtiffio.h>
+#include <zip.h>
 
 #include "core/raster/tiff_file.hpp"
 
@@ -14,6 +15,23 @@ namespace ts::dem::test_files {
 void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary);
     out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+void write_zip(const std::filesystem::path& path, const std::string& entry, const std::string& content) {
+    int err = 0;
+    zip_t* z = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
+    zip_source_t* src = zip_source_buffer(z, content.data(), content.size(), 0);
+    zip_file_add(z, entry.c_str(), src, ZIP_FL_OVERWRITE);
+    zip_close(z);
+}
+
+int sparse_blocks(const std::filesystem::path& path) {
+    ts::raster::TiffFile file(path, "r");
+    TIFF* tif = file.get();
+    const std::uint32_t n = TIFFIsTiled(tif) ? TIFFNumberOfTiles(tif) : TIFFNumberOfStrips(tif);
+    int sparse = 0;
+    for (std::uint32_t i = 0; i < n; ++i) sparse += TIFFGetStrileByteCount(tif, i) == 0;
+    return sparse;
 }
 
 std::string synthetic_hgt(const std::vector<std::pair<int, int>>& voids) {

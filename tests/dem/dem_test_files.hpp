@@ -28,6 +28,12 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
 
 void write_bytes(const std::filesystem::path& path, const std::string& bytes);
 
+// A zip archive holding one entry `entry` with `content` (libzip).
+void write_zip(const std::filesystem::path& path, const std::string& entry, const std::string& content);
+
+// How many of a TIFF's tiles or strips have no bytes (sparse).
+int sparse_blocks(const std::filesystem::path& path);
+
 // A 1201x1201 SRTM3 tile of big-endian int16 where height = col + row, with `voids` cells set to -32768.
 std::string synthetic_hgt(const std::vector<std::pair<int, int>>& voids = {});
 

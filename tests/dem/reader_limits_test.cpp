@@ -59,16 +59,6 @@ struct MemoryCap {
     ~MemoryCap() { ts::set_memory_cap(0); }
 };
 
-// How many of the file's tiles or strips have no bytes (sparse).
-int sparse_blocks(const fs::path& path) {
-    ts::raster::TiffFile file(path, "r");
-    TIFF* tif = file.get();
-    const std::uint32_t n = TIFFIsTiled(tif) ? TIFFNumberOfTiles(tif) : TIFFNumberOfStrips(tif);
-    int sparse = 0;
-    for (std::uint32_t i = 0; i < n; ++i) sparse += TIFFGetStrileByteCount(tif, i) == 0;
-    return sparse;
-}
-
 int run(const std::string& command) { return std::system(command.c_str()); }
 
 }  // namespace
@@ -175,7 +165,7 @@ TEST(SparseGeoTiff, BlocksGdalLeftOutReadAsVoids) {
         ASSERT_EQ(run("gdal_translate -q -co SPARSE_OK=TRUE " + options + " '" + (dir / "source.tif").string() + "' '" +
                       out.string() + "'"),
                   0);
-        EXPECT_GT(sparse_blocks(out), 0) << name << ": gdal_translate wrote no sparse block";
+        EXPECT_GT(test_files::sparse_blocks(out), 0) << name << ": gdal_translate wrote no sparse block";
         const Dem d = read_dem(out);
         ASSERT_EQ(d.width, w);
         ASSERT_EQ(d.height, h);
@@ -204,7 +194,7 @@ TEST(SparseGeoTiff, WithoutNodataLeftOutBlocksReadAsZero) {
     ASSERT_EQ(run("gdal_translate -q -co SPARSE_OK=TRUE -co TILED=YES -co BLOCKXSIZE=16 -co BLOCKYSIZE=16 '" +
                   (dir / "source.tif").string() + "' '" + out.string() + "'"),
               0);
-    EXPECT_EQ(sparse_blocks(out), 2);
+    EXPECT_EQ(test_files::sparse_blocks(out), 2);
     const Dem d = read_dem(out);
     EXPECT_EQ(d.void_count(), 0u);
     EXPECT_EQ(d.at(3, 3), 0.0f);

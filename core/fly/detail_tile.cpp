@@ -132,10 +132,10 @@ void DetailTile::light(const render::SunState& sun, std::vector<glm::vec3>& radi
         }
 }
 
-std::size_t DetailTile::bytes() const {
-    // The shading state dominates: ~200 bytes a window texel (docs/tiles.md), plus what is here.
-    const std::size_t window = std::size_t(window_->width) * std::size_t(window_->height);
-    return window * (200 + sizeof(float) * 2 + 1 + sizeof(glm::vec3)) + heights_.size() * sizeof(float);
+std::size_t detail_tile_bytes(int tile_texels, int halo) {
+    const std::size_t window = std::size_t(tile_texels + 1 + 2 * halo);
+    const std::size_t samples = std::size_t(tile_texels + 1) * std::size_t(tile_texels + 1);
+    return window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3)) + samples * (4 + 8 + 8) * 2;
 }
 
 }  // namespace ts::fly

@@ -86,7 +86,6 @@ public:
     // open-sky fraction (once per tile).
     void light(const render::SunState& sun, std::vector<glm::vec3>& radiance, std::vector<glm::vec3>& sun_part,
                std::vector<float>& open_sky);
-    std::size_t bytes() const;
 
 private:
     DetailTileKey key_;
@@ -102,6 +101,11 @@ private:
     std::vector<float> open_sky_;  // per window texel
     render::LinearImage image_;
 };
+
+// What one resident tile of `tile_texels` shaded with `halo` holds: its window's shading state
+// on the CPU (~200 bytes a window texel, docs/tiles.md, and the window's heights, fill flags and
+// frame) and its samples on the device (height, radiance, sun part) with their upload copies.
+std::size_t detail_tile_bytes(int tile_texels, int halo);
 
 // The overview's filled height at a level-0 position (bilinear between its points).
 float overview_height(const TerrainOverview& overview, double col, double row);

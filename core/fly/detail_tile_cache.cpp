@@ -13,11 +13,7 @@ DetailTileCache::DetailTileCache(const dem::DemSource& source, const TerrainOver
                                  const DetailCacheOptions& options)
     : source_(source), overview_(overview), far_(far), frame_(frame),
       layout_(detail_tile_layout(overview, patch_quads)), options_(options) {
-    // A tile's bytes: its window's shading state on the CPU and its samples on the device
-    // (height 4 B, radiance and sun part 8 B each).
-    const std::size_t window = std::size_t(layout_.tile_texels + 1 + 2 * options.shading.halo);
-    const std::size_t samples = std::size_t(layout_.tile_texels + 1) * std::size_t(layout_.tile_texels + 1);
-    tile_bytes_ = window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3)) + samples * (4 + 8 + 8) * 2;
+    tile_bytes_ = detail_tile_bytes(layout_.tile_texels, options.shading.halo);
     const std::size_t tiles = std::size_t(layout_.tiles_x) * std::size_t(layout_.tiles_y);
     slots_ = int(std::min(options.budget_bytes / tile_bytes_, tiles));
     // Four tiles: the corner of four tiles under the eye (or every tile of a smaller DEM).

@@ -10,6 +10,7 @@
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/visibility/far_field_horizons.hpp"
 
 namespace ts::fly {
 namespace {
@@ -107,8 +108,10 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
         const int last = std::min(row0 + band, H - 1);  // inclusive: the next band's first row too
         const int rows = last - row0 + 1;
         source.read(0, row0, W, rows, z);
-        out.void_texels += std::uint64_t(std::count_if(z.begin(), z.begin() + std::ptrdiff_t(std::size_t(rows - (last < H - 1)) * std::size_t(W)),
-                                                       [](float v) { return std::isnan(v); }));
+        // The band's own rows: its last is the next band's first, except at the end.
+        const int own = last < H - 1 ? rows - 1 : rows;
+        const auto own_end = z.begin() + std::ptrdiff_t(std::size_t(own) * std::size_t(W));
+        out.void_texels += std::uint64_t(std::count_if(z.begin(), own_end, [](float v) { return std::isnan(v); }));
         for (float v : z)
             if (v == v) z_top = std::max(z_top, double(v));
         // The points on this band's rows (its last row is the next band's first, except at the end).
@@ -120,8 +123,7 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
         }
         // The far field's mean level over the band's own rows.
         {
-            const int own = last < H - 1 ? rows - 1 : rows;
-            std::vector<float> m(z.begin(), z.begin() + std::ptrdiff_t(std::size_t(own) * std::size_t(W)));
+            std::vector<float> m(z.begin(), own_end);
             int w = W, h = own;
             for (int k = 0; k < out.far_shift; ++k) {
                 m = terrain::downsample_2x2(m.data(), w, h, false, 1);
@@ -180,9 +182,8 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
                 node_z_l[std::size_t(first_node_row + iy) * std::size_t(nodes_l.x) + std::size_t(ix)] =
                     nz[std::size_t(L)][std::size_t(iy) * std::size_t(nx[std::size_t(L)]) + std::size_t(ix)];
         // Mesh errors of levels 1..L over the band's own rows.
-        const int own_last = last < H - 1 ? last - 1 : last;
         std::vector<std::vector<ErrorHistogram>> local(std::size_t(workers), std::vector<ErrorHistogram>(std::size_t(L + 1)));
-        parallel_for(own_last - row0 + 1, workers, [&](int i, int worker) {
+        parallel_for(own, workers, [&](int i, int worker) {
             const int r = row0 + i;
             for (int k = 1; k <= L; ++k)
                 for (int c = 0; c < W; ++c) {
@@ -192,7 +193,7 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
         });
         for (const auto& l : local)
             for (int k = 1; k <= L; ++k) hist[std::size_t(k)].merge(l[std::size_t(k)]);
-        if (progress) progress->advance(std::uint64_t(own_last - row0 + 1) * std::uint64_t(W));
+        if (progress) progress->advance(std::uint64_t(own) * std::uint64_t(W));
     }
     if (!std::isfinite(z_top)) throw input_error(layout.source, "has no valid height");
     out.z_top = z_top;
@@ -213,19 +214,9 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
     dem::fill_voids(out.points);
 
     out.far_mean = std::move(far_rows);
-    // The level's row spacing as the far field's coarse copy sums it: two rows a step, an odd
-    // last row counted twice.
+    // The level's row spacing as the far field's coarse copy sums it.
     out.far_dx_m = out.dx0_m, out.far_dy_m = out.dy0_m;
-    for (int k = 0; k < out.far_shift; ++k) {
-        const int h = int(out.far_dx_m.size()), half = (h + 1) / 2;
-        std::vector<double> dx(static_cast<std::size_t>(half)), dy(static_cast<std::size_t>(half));
-        for (int r = 0; r < half; ++r) {
-            const int r0 = 2 * r, r1 = std::min(2 * r + 1, h - 1);
-            dx[std::size_t(r)] = out.far_dx_m[std::size_t(r0)] + out.far_dx_m[std::size_t(r1)];
-            dy[std::size_t(r)] = out.far_dy_m[std::size_t(r0)] + out.far_dy_m[std::size_t(r1)];
-        }
-        out.far_dx_m = std::move(dx), out.far_dy_m = std::move(dy);
-    }
+    for (int k = 0; k < out.far_shift; ++k) visibility::halve_row_spacing(out.far_dx_m, out.far_dy_m);
 
     // The summary: errors up to L from the histograms, beyond from the points (the level-k mesh
     // against the level-0 texels the points keep); node ranges from L up.

@@ -47,15 +47,8 @@ CoarseCopy coarse_copy(const terrain::HeightGrid& from, int steps, int threads) 
     if (steps == 0) c.z.assign(from.z.begin(), from.z.end());
     for (int k = 0; k < steps; ++k) {
         c.z = terrain::downsample_2x2(k == 0 ? from.z.data() : c.z.data(), c.width, c.height, false, threads);
-        const int h = (c.height + 1) / 2;
-        std::vector<double> dx(std::size_t(h), 0.0), dy(std::size_t(h), 0.0);
-        for (int r = 0; r < h; ++r) {
-            const int r0 = 2 * r, r1 = std::min(2 * r + 1, c.height - 1);
-            dx[std::size_t(r)] = c.dx_m[std::size_t(r0)] + c.dx_m[std::size_t(r1)];
-            dy[std::size_t(r)] = c.dy_m[std::size_t(r0)] + c.dy_m[std::size_t(r1)];
-        }
-        c.width = (c.width + 1) / 2, c.height = h;
-        c.dx_m = std::move(dx), c.dy_m = std::move(dy);
+        halve_row_spacing(c.dx_m, c.dy_m);
+        c.width = (c.width + 1) / 2, c.height = int(c.dx_m.size());
     }
     return c;
 }
@@ -79,6 +72,17 @@ int FarField::coarse_shift_for(const FarFieldOptions& options, int width0, int h
     int shift = shared::ts_pyramid_sample_level(options.start_texels, std::exp2(1.0 / densest), kAnyLevels);
     while (shift > 0 && (std::max(width0, height0) >> shift) < 2) --shift;
     return shift;
+}
+
+void halve_row_spacing(std::vector<double>& dx_m, std::vector<double>& dy_m) {
+    const int h = int(dx_m.size()), half = (h + 1) / 2;
+    std::vector<double> dx(static_cast<std::size_t>(half)), dy(static_cast<std::size_t>(half));
+    for (int r = 0; r < half; ++r) {
+        const int r0 = 2 * r, r1 = std::min(2 * r + 1, h - 1);
+        dx[std::size_t(r)] = dx_m[std::size_t(r0)] + dx_m[std::size_t(r1)];
+        dy[std::size_t(r)] = dy_m[std::size_t(r0)] + dy_m[std::size_t(r1)];
+    }
+    dx_m = std::move(dx), dy_m = std::move(dy);
 }
 
 FarField::FarField(const terrain::HeightGrid& grid, const FarFieldOptions& options)

@@ -49,6 +49,10 @@ struct WindowOrigin {
     int col0 = 0, row0 = 0;
 };
 
+// One 2x2 step of a grid's row spacing, as its mean level takes it: row r of the coarser level
+// spans rows 2r and 2r + 1 (the last row of an odd count twice), its spacing their sum.
+void halve_row_spacing(std::vector<double>& dx_m, std::vector<double>& dy_m);
+
 class FarField {
 public:
     // Reads `grid` (heights, voids, spacing) now; keeps only its coarse copy and row spacing.

@@ -52,17 +52,8 @@ Buffer zeroed(const Context& ctx, std::size_t bytes) {
 }
 
 Buffer upload(const Context& ctx, const void* data, std::size_t bytes, VkBufferUsageFlags usage) {
-    Buffer staging = ctx.create_buffer(bytes, MemoryKind::host_visible);
-    std::memcpy(staging.mapped(), data, bytes);
     Buffer target(ctx.device(), bytes, MemoryKind::device_local, usage);
-    CommandPool pool(ctx.vk_device(), ctx.device().queue_family());
-    CommandBuffer cmd(ctx.vk_device(), pool);
-    cmd.begin();
-    VkBufferCopy region{0, 0, bytes};
-    vkCmdCopyBuffer(cmd.get(), staging.get(), target.get(), 1, &region);
-    cmd.end();
-    Fence fence(ctx.vk_device());
-    submit_and_wait(ctx.device().queue(), cmd.get(), fence);
+    copy_into(ctx, target, 0, data, bytes);
     return target;
 }
 
@@ -173,12 +164,9 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
     radiance_ = zeroed(context, (std::size_t(overview_texels_) + atlas) * 8);
     sun_radiance_ = zeroed(context, radiance_.size());
-    spheres_ = context.create_buffer(16, MemoryKind::host_visible);
-    std::memset(spheres_.mapped(), 0, spheres_.size());
-    sky_ = context.create_buffer(16, MemoryKind::host_visible);
-    std::memset(sky_.mapped(), 0, sky_.size());
-    aircraft_ = context.create_buffer(16, MemoryKind::host_visible);
-    std::memset(aircraft_.mapped(), 0, aircraft_.size());
+    spheres_ = zeroed(context, 16);
+    sky_ = zeroed(context, 16);
+    aircraft_ = zeroed(context, 16);
 
     set_layout_ = DescriptorSetLayout(device, kBindings, kStages);
     pool_ = DescriptorPool(device, 1, kBindings);

@@ -54,8 +54,7 @@ struct Streamed {
         DetailCacheOptions c;
         c.shading.halo = 32;
         c.shading.directions = 8;
-        const std::size_t window = std::size_t(256 + 1 + 2 * 32);
-        const std::size_t tile = window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3)) + 257 * 257 * 40;
+        const std::size_t tile = detail_tile_bytes(256, 32);
         c.budget_bytes = tile * std::size_t(slots) + tile / 2;
         return c;
     }

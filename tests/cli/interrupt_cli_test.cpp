@@ -111,7 +111,7 @@ TEST(InterruptCli, RelightLeavesCompleteFramesOnlyAndSaysHowMany) {
         std::vector<std::string> args = {"relight"};
         args.insert(args.end(), base.begin(), base.end());
         args.insert(args.end(), {"--out", out.string()});
-        const auto delay = std::chrono::milliseconds(150 + 110 * attempt);
+        const auto delay = std::chrono::milliseconds(100 + 75 * attempt);
         const Interrupted r = run_and_signal(args, sig, delay, root / ("err" + std::to_string(attempt)));
         ASSERT_TRUE(WIFEXITED(r.status)) << "attempt " << attempt << ": killed by signal " << WTERMSIG(r.status);
         const int code = WEXITSTATUS(r.status);

@@ -8,8 +8,6 @@ namespace ts::app {
 
 void add_info_command(CLI::App& root);
 void add_hillshade_command(CLI::App& root);
-// `bench` with its subcommands (bench sh, bench visibility, ...): app/bench/bench_command.cpp.
-void add_bench_command(CLI::App& root);
 void add_visibility_command(CLI::App& root);
 // Only in a GPU build (TERRASHADE_HAS_GPU): the Vulkan devices and a compute self-test.
 void add_devices_command(CLI::App& root);
@@ -29,6 +27,9 @@ void add_merge_command(CLI::App& root);
 
 // `terrashade spheres`: the bounding sphere decomposition of a mesh (app/spheres_command.cpp).
 void add_spheres_command(CLI::App& root);
+
+// `terrashade insolation`: clear-sky irradiation and hours of sun per texel (app/insolation_command.cpp).
+void add_insolation_command(CLI::App& root);
 
 // `terrashade fly`: the flythrough window or its frames offscreen (app/fly_command.cpp; GPU build only).
 void add_fly_command(CLI::App& root);

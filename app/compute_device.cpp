@@ -5,6 +5,7 @@
 #include <exception>
 #include <string>
 
+#include "app/options/verbose_option.hpp"
 #include "core/util/error.hpp"
 #ifdef TERRASHADE_HAS_GPU
 #include "gpu/context.hpp"
@@ -34,7 +35,7 @@ void add_device_options(CLI::App& cmd, DeviceArgs& a) {
                                   "device index as `terrashade devices` lists it")
                        ->capture_default_str();
     cmd.add_flag("--cpu", a.cpu, "The same as --device cpu")->excludes(device);
-    cmd.add_flag("-v,--verbose", a.verbose, "Say where each stage ran and why that device was chosen");
+    add_verbose_flag(cmd, a.verbose);
 }
 
 #ifdef TERRASHADE_HAS_GPU

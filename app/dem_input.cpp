@@ -21,10 +21,19 @@ void add_dem_input_options(CLI::App& cmd, DemInput& in, bool with_fill_option) {
     if (with_fill_option)
         cmd.add_flag("!--no-fill", in.fill_voids,
                      "Leave voids (nodata) as NaN instead of filling them from their rim");
+    if (with_fill_option)
+        cmd.add_option("--fill-max-distance", in.fill_max_distance,
+                       "Fill a hole enclosed by data only if each of its texels is within N texels of a measured one "
+                       "(as gdal_fillnodata -md); wider holes and nodata touching the DEM's border stay outside the "
+                       "terrain (transparent)")
+            ->type_name("N")
+            ->capture_default_str();
 }
 
 ts::dem::Dem load_dem_input(const DemInput& in) {
     if (in.files.empty()) throw InputError("no DEM file given");
+    if (in.fill_max_distance < 0)
+        throw InputError("--fill-max-distance must be >= 0 texels (got " + std::to_string(in.fill_max_distance) + ")");
     std::vector<dem::Dem> parts;
     parts.reserve(in.files.size());
     for (const auto& f : in.files) parts.push_back(dem::read_dem(f));
@@ -33,7 +42,7 @@ ts::dem::Dem load_dem_input(const DemInput& in) {
         if (in.crop.size() != 4) throw InputError("--crop needs W,S,E,N (four numbers)");
         d = dem::crop(d, {in.crop[0], in.crop[1], in.crop[2], in.crop[3]});
     }
-    if (in.fill_voids) dem::fill_voids(d);
+    if (in.fill_voids) dem::fill_voids(d, {in.fill_max_distance});
     return d;
 }
 

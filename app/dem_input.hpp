@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/dem/dem.hpp"
+#include "core/dem/fill_voids.hpp"
 
 namespace ts::app {
 
@@ -13,12 +14,15 @@ struct DemInput {
     std::vector<std::string> files;
     std::vector<double> crop;  // W,S,E,N degrees, or empty
     bool fill_voids = true;
+    int fill_max_distance = ts::dem::kDefaultFillMaxDistance;  // texels; holes wider stay outside
 };
 
-// Adds `DEM...` (required), `--crop W,S,E,N` and, when with_fill_option, `--no-fill`.
+// Adds `DEM...` (required), `--crop W,S,E,N` and, when with_fill_option, `--no-fill` and
+// `--fill-max-distance N`.
 void add_dem_input_options(CLI::App& cmd, DemInput& in, bool with_fill_option = true);
 
-// Reads every file, mosaics them, crops, fills voids (void_mask keeps the record).
+// Reads every file, mosaics them, crops, fills the holes enclosed by data (void_mask keeps the
+// record; border-connected nodata and holes wider than the max distance stay NaN: outside).
 // Throws ts::InputError naming the file on bad input.
 ts::dem::Dem load_dem_input(const DemInput& in);
 

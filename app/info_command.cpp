@@ -10,6 +10,7 @@
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
+#include "core/dem/fill_voids.hpp"
 #include "core/dem/statistics.hpp"
 
 namespace ts::app {
@@ -66,6 +67,10 @@ void print_json(const dem::Dem& d, const InfoOptions& opts, const dem::HeightSta
     j["height_max"] = number_or_null(s.max);
     j["height_mean"] = number_or_null(s.mean);
     j["nodata_count"] = s.void_count;
+    const dem::VoidKinds kinds = dem::classify_voids(d);  // docs/terrain.md, "Outside the terrain"
+    j["nodata_outside_count"] = kinds.outside_texels;
+    j["nodata_hole_count"] = kinds.hole_texels;
+    j["nodata_holes"] = kinds.holes;
     j["vertical_datum"] = d.vertical_datum;
     std::cout << j.dump(2) << "\n";
 }
@@ -99,6 +104,12 @@ void print_text(const dem::Dem& d, const dem::HeightStats& s) {
         std::printf("  heights      none (every cell is a void)\n");
     const double total = double(d.width) * double(d.height);
     std::printf("  voids        %zu of %.0f cells (%.3f %%)\n", s.void_count, total, 100.0 * double(s.void_count) / total);
+    if (s.void_count && s.valid_count) {
+        // Outside: connected to the border, never filled; holes: enclosed by data (docs/terrain.md).
+        const dem::VoidKinds k = dem::classify_voids(d);
+        std::printf("               %zu outside the terrain (touching the border), %zu in %zu enclosed hole%s\n",
+                    k.outside_texels, k.hole_texels, k.holes, k.holes == 1 ? "" : "s");
+    }
 }
 
 }  // namespace

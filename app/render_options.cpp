@@ -9,6 +9,10 @@
 #include <string_view>
 
 #include "app/mesh_max_error.hpp"
+#include "app/options/directions_option.hpp"
+#include "app/options/max_error_option.hpp"
+#include "app/options/sky_option.hpp"
+#include "app/options/threads_option.hpp"
 #include "core/geo/crs.hpp"
 #include "core/quality/blocker_quality.hpp"
 #include "core/quality/radiance_quality.hpp"
@@ -18,6 +22,7 @@
 #include "core/sh/exp_method.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/sun_visibility.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -37,10 +42,7 @@ void parse_size(const std::string& text, int& w, int& h) {
 
 void add_render_options(CLI::App& cmd, RenderArgs& a) {
     add_dem_input_options(cmd, a.dem);
-    cmd.add_option("--sky", a.sky,
-                   "Sky: clear[:turbidity=T,albedo=A] | overcast[:brightness=B] | PATH.exr|PATH.hdr "
-                   "(or hdr:PATH[,rotation=DEG,scale=S]) (docs/lighting.md)")
-        ->capture_default_str();
+    add_sky_option(cmd, a.sky);
     cmd.add_option("--view", a.view, "map: top-down on the DEM grid; perspective: a camera view")
         ->capture_default_str()
         ->check(CLI::IsMember({"map", "perspective"}));
@@ -80,16 +82,13 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "How much of the land albedos' contrast (brightness and tint) to keep, 0..1: 1 = physical "
                    "albedos (a land-cover map under soft light), 0 = land all of one colour; snow and water keep theirs")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1.0));
-    cmd.add_option("--directions", a.directions, "Horizon azimuths for the sky visibility (exact sweep)")
-        ->capture_default_str()
-        ->check(CLI::Range(4, 1024))
-        ->each([&a](const std::string&) { a.quality_flags_given.push_back("--directions"); });
+        ->check(within(0.0, 1.0));
+    add_directions_option(cmd, a.directions)->each([&a](const std::string&) { a.quality_flags_given.push_back("--directions"); });
     cmd.add_flag("--no-curvature", a.no_curvature, "Ignore Earth curvature (default: d^2/(2 R_eff) with refraction)");
     cmd.add_option("--haze-km", a.haze_km,
                    "Perspective: aerial haze distance (transmittance exp(-d/haze)); 0 = none")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(within(0.0, 1e6));
     cmd.add_option("--exp-method", a.exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
@@ -101,22 +100,14 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str()
         ->check(CLI::IsMember({"sweep", "exact"}))
         ->each([&a](const std::string&) { a.quality_flags_given.push_back("--sun-shadows"); });
-    cmd.add_option("--max-error", a.max_error,
-                   "Adaptive quality: choose --directions and --sun-shadows, the cheapest predicted to keep the "
-                   "relative radiance error (RMSE / mean against the ray-traced reference) under E for this "
-                   "terrain and sun, e.g. 0.05; prints what it chose and why (docs/accuracy.md)");
-    cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 256));
+    add_max_error_option(cmd, a.max_error);
+    add_threads_option(cmd, a.threads);
     add_mesh_options(cmd, a.meshes);
 }
 
 render::SceneOptions scene_options(const RenderArgs& a) {
     if (a.max_error) {
-        if (!(*a.max_error > 0))
-            throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
-        if (!a.quality_flags_given.empty())
-            throw InputError("--max-error chooses " + a.quality_flags_given.front() + " itself; drop one of them");
+        check_max_error(a.max_error, a.quality_flags_given.empty() ? "" : a.quality_flags_given.front());
         if (!a.meshes.spheres.empty())
             throw InputError("--max-error chooses --spheres itself; drop one of them");
     }
@@ -191,7 +182,7 @@ void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOp
 }
 
 void attach_meshes(const RenderArgs& a, const dem::Dem& dem, render::SceneOptions& o) {
-    o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes, a.max_error.has_value());
+    o.meshes = load_scene_meshes(parse_mesh_specs(a.meshes), dem, a.meshes, a.max_error.has_value(), a.device.verbose);
 }
 
 void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector<render::SunState>& suns,
@@ -215,7 +206,7 @@ void apply_max_error(const RenderArgs& a, const dem::Dem& dem, const std::vector
     const quality::RadianceChoice c = quality::choose_radiance(*a.max_error, scene, meshes_fit);
     o.renderer.directions = c.directions;
     o.renderer.sun_method = c.exact_sun ? visibility::SunMethod::exact : visibility::SunMethod::sweep;
-    std::printf("%s\n", c.reason.c_str());
+    std::printf("%s\n", max_error_line(c.reason).c_str());
     if (meshes) {
         const double budget = *a.max_error - c.predicted_error;
         const quality::SphereCountChoice n = count_for(budget);

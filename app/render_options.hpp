@@ -58,8 +58,6 @@ render::Exposure exposure_of(const RenderArgs& args);
 render::ReliefContrast parse_relief_contrast(const std::string& text);
 // Adds the files these options read (DEMs, an HDR sky, a land-cover map, an orthophoto) to `plan`.
 void plan_render_inputs(IoPlan& plan, const RenderArgs& args, const render::SceneOptions& options);
-// The picture formats render::write_image writes.
-inline const std::vector<std::string> kImageExtensions = {".png", ".tif", ".tiff", ".exr"};
 // After the DEM is read: the meshes of --mesh placed on it, imported, their spheres from the
 // cache, into options.meshes (InputError for a mesh off the DEM or a bad mesh file).
 void attach_meshes(const RenderArgs& args, const dem::Dem& dem, render::SceneOptions& options);

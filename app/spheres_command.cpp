@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command.hpp"
+#include "app/io_plan.hpp"
+#include "app/options/threads_option.hpp"
 #include "app/sphere_preview.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
@@ -64,6 +66,9 @@ void run_spheres(const SpheresArgs& a) {
     blockers::validate(a.decomposition);
     check_output(a.out, ".json", "--out");
     if (!a.preview.empty()) check_output(a.preview, ".png", "--preview");
+    IoPlan plan;
+    plan.input("mesh", a.mesh).output("--out", a.out, {".json"}).output("--preview", a.preview, {".png"});
+    plan.check();
     mesh::ImportOptions import;
     import.up = mesh::parse_up_axis(a.up);
     const mesh::TriangleMesh mesh = mesh::import_mesh(a.mesh, import);
@@ -99,7 +104,7 @@ void add_spheres_command(CLI::App& root) {
     cmd->add_option("--up", a->up, "The file's up axis: auto (header, else by format), x, y, z")->capture_default_str();
     cmd->add_option("--resolution", a->decomposition.resolution, "Voxel cells along the mesh's longest side, 16..512")
         ->capture_default_str();
-    cmd->add_option("--threads", a->decomposition.threads, "Worker threads (0 = one per core)")->capture_default_str();
+    add_threads_option(*cmd, a->decomposition.threads);
     cmd->add_option("--cache-dir", a->cache_dir,
                     "Sphere cache folder (default $XDG_CACHE_HOME/terrashade/spheres or ~/.cache/terrashade/spheres)");
     cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the cache");

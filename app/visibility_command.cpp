@@ -15,6 +15,8 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/options/max_error_option.hpp"
+#include "app/options/threads_option.hpp"
 #include "app/job_memory.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
@@ -32,6 +34,8 @@
 #include "core/visibility/visibility_backend.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/raster/image_writer_registry.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -49,9 +53,7 @@ struct VisibilityOptions {
     DeviceArgs device;
 };
 
-bool is_png(const std::string& path) {
-    return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
-}
+bool is_png(const std::string& path) { return raster::written_as(path, raster::ImageWriter::png); }
 
 // A fraction in [0, 1] (svf, sky_visible) as an 8-bit grey quick-look, to look at without a
 // GIS: a linear stretch from the 1st to the 99th percentile of the valid values to grey 1..255
@@ -59,7 +61,9 @@ bool is_png(const std::string& path) {
 // 0.99), so mapping 0..1 left the picture in the top half of the grey range with a fifth of it
 // pure white; the stretch gives the relief the whole range and is printed, and the GeoTIFF
 // output keeps the values themselves.
-void write_fraction_png(const std::string& path, const dem::Dem& dem, const float* data) {
+// `path` is the staged temporary file; `name` the output the user asked for, which the printed
+// line names.
+void write_fraction_png(const std::string& path, const std::string& name, const dem::Dem& dem, const float* data) {
     const std::size_t n = std::size_t(dem.width) * dem.height;
     std::vector<float> valid;
     valid.reserve(n);
@@ -83,7 +87,7 @@ void write_fraction_png(const std::string& path, const dem::Dem& dem, const floa
     }
     raster::write_u8_image(path, dem.width, dem.height, 1, grey.data(), nullptr);
     std::printf("%s: grey 1..255 = %.4f..%.4f (the 1st to 99th percentile, stretched linearly; 0 = void)\n",
-                path.c_str(), lo, hi);
+                name.c_str(), lo, hi);
 }
 
 // Stages one output (committed with the others at the end) and notes its "wrote" line.
@@ -91,7 +95,7 @@ void write_raster(StagedOutputs& outputs, std::vector<std::string>& wrote, const
                   const dem::Dem& dem, int bands, const float* data, const std::vector<std::string>& names) {
     outputs.stage(path, [&](const std::filesystem::path& tmp) {
         if (is_png(path))
-            write_fraction_png(tmp.string(), dem, data);
+            write_fraction_png(tmp.string(), path, dem, data);
         else
             raster::write_float_raster(tmp, dem.width, dem.height, bands, data, dem.georef, names);
     });
@@ -109,7 +113,10 @@ void run_visibility(VisibilityOptions& o) {
     if ((!o.sh.empty() || !o.log_sh.empty()) && o.horizon.directions < 4)
         throw InputError("--sh/--log-sh: need at least 4 --directions");
     const auto rule = o.wedges == "constant" ? visibility::WedgeRule::constant : visibility::WedgeRule::linear;
-    const std::vector<std::string> extensions = {".tif", ".tiff", ".png"};
+    // Georeferenced float rasters, or an 8-bit quick-look of a fraction (write_fraction_png).
+    const std::vector<std::string> extensions = raster::image_extensions([](const raster::ImageFormat& f) {
+        return (f.float32 && f.georeferenced && f.multi_band) || f.writer == raster::ImageWriter::png;
+    });
     IoPlan plan;
     plan.inputs("DEM", o.dem.files);
     plan.output("--svf", o.svf, extensions).output("--sky-visible", o.sky_visible, extensions);
@@ -137,7 +144,7 @@ void run_visibility(VisibilityOptions& o) {
             quality::choose_visibility(o.max_error, quality::mean_tan_slope(grid.view()));
         o.horizon.directions = choice.setting.directions;
         o.horizon.exact_near_field_texels = choice.setting.near_field_texels;
-        std::fprintf(stderr, "terrashade: %s\n", choice.reason.c_str());
+        std::fprintf(stderr, "terrashade: %s\n", max_error_line(choice.reason).c_str());
     }
 
     const ComputeDevice device(o.device);
@@ -218,7 +225,7 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--directions", o->horizon.directions,
                     "Azimuths D, evenly spaced (--horizons bands: clockwise from north, from the smallest azimuth)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 4096));
+        ->check(within(1, 4096));
     cmd->add_option("--method", o->method,
                     "exact: convex-hull sweep (fast, exact up to sweep-line interpolation); pyramid: the slides' "
                     "multi-resolution marching (approximate); raymarch: brute force reference (slow)")
@@ -231,7 +238,7 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--exact-lines-per-texel", o->horizon.exact_lines_per_texel,
                     "exact: sweep lines per texel across each azimuth (2 halves the interpolation distance, 2x time)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 4));
+        ->check(within(1, 4));
     cmd->add_option("--max-error", o->max_error,
                     "Adaptive quality: the cheapest --directions and --exact-near-field whose predicted svf RMSE "
                     "stays under this for the DEM's roughness (e.g. 0.001); prints what it chose and why")
@@ -239,7 +246,7 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--exact-near-field", o->horizon.exact_near_field_texels,
                     "exact: march each receiver's first N texels from the texel centre itself (0 = pure sweep)")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 64.0));
+        ->check(within(0.0, 64.0));
     cmd->add_flag_callback(
         "--exact-scalar", [o] { o->horizon.exact_simd_lines = false; },
         "exact: sweep one line at a time even where the CPU has AVX-512 (bit-identical, slower; for comparisons)");
@@ -262,10 +269,8 @@ void add_visibility_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--log-eps", o->log_eps, "log of the visibility floor below the horizon")
         ->capture_default_str()
-        ->check(CLI::Range(-50.0, -1e-3));
-    cmd->add_option("--threads", o->horizon.threads, "Worker threads (0 = one per core)")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 256));
+        ->check(within(-50.0, -1e-3));
+    add_threads_option(*cmd, o->horizon.threads);
     add_device_options(*cmd, o->device);
     cmd->callback([o] { run_visibility(*o); });
 }

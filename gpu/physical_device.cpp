@@ -2,6 +2,7 @@
 
 #include "gpu/instance.hpp"
 #include "gpu/vk_check.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::gpu {
 namespace {
@@ -111,13 +112,12 @@ const PhysicalDeviceInfo& choose_device(std::span<const PhysicalDeviceInfo> devi
     if (devices.empty()) throw no_vulkan_device_error("no Vulkan device found");
     if (requested) {
         if (*requested >= devices.size()) {
-            throw InputError("--device " + std::to_string(*requested) + ": no such Vulkan device, indices go from 0 to " +
+            throw QuantityError(Quantity::device, std::to_string(*requested), "no such Vulkan device, indices go from 0 to " +
                              std::to_string(devices.size() - 1) + " (see terrashade devices)");
         }
         const PhysicalDeviceInfo& device = devices[*requested];
         if (!device.usable()) {
-            throw InputError("--device " + std::to_string(*requested) + ": " + device.name + " " +
-                             device.unusable_reason);
+            throw QuantityError(Quantity::device, std::to_string(*requested), device.name + " " + device.unusable_reason);
         }
         return device;
     }
@@ -139,7 +139,7 @@ AutoPath choose_auto_path(std::span<const PhysicalDeviceInfo> devices) {
                                 std::to_string(d.index) + "): the Vulkan path"};
     return {std::nullopt, "the best Vulkan device, " + d.name + ", is a " + device_type_name(d.type) +
                               " implementation that runs on the same cores as the CPU path, which is faster there: "
-                              "the CPU path (--device vulkan forces it)"};
+                              "the CPU path (asking for the Vulkan device forces it)"};
 }
 
 }  // namespace ts::gpu

@@ -10,6 +10,7 @@
 #include "core/blockers/voxel_solid.hpp"
 #include "core/mesh/surface_sampling.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -17,10 +18,10 @@ namespace ts::blockers {
 
 void validate(const DecompositionOptions& o) {
     if (o.count < kMinSpheres || o.count > kMaxSpheres)
-        throw InputError("--count must be in " + std::to_string(kMinSpheres) + ".." + std::to_string(kMaxSpheres) +
-                         " (got " + std::to_string(o.count) + ")");
+        throw QuantityError(Quantity::sphere_count, "", "must be in " + std::to_string(kMinSpheres) + ".." +
+                                                          std::to_string(kMaxSpheres) + " (got " + std::to_string(o.count) + ")");
     if (o.resolution < 16 || o.resolution > 512)
-        throw InputError("--resolution must be in 16..512 (got " + std::to_string(o.resolution) + ")");
+        throw QuantityError(Quantity::sphere_resolution, "", "must be in 16..512 (got " + std::to_string(o.resolution) + ")");
     if (o.refine_passes < 0 || o.coverage_samples < 0 || o.volume_samples < 0)
         throw InputError("sphere decomposition: negative pass or sample count");
 }

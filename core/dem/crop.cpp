@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::dem {
 
@@ -13,7 +14,7 @@ Dem crop(const Dem& dem, const LonLatBox& box) {
     std::ostringstream text;
     text << box.west << "," << box.south << "," << box.east << "," << box.north;
     if (!(box.west < box.east) || !(box.south < box.north) || box.south < -90 || box.north > 90)
-        throw InputError("--crop " + text.str() + ": need W,S,E,N with W < E, S < N, latitudes within +-90");
+        throw QuantityError(Quantity::crop, text.str(), "need W,S,E,N with W < E, S < N, latitudes within +-90");
 
     // Walk the box outline (32 steps a side) in pixel space: projected grids bend its edges.
     constexpr int kSteps = 32;

@@ -16,7 +16,7 @@ void require_memory_for(const std::string& source, const std::string& what, std:
     // --crop (app/dem_input.cpp) crops after the whole raster is read, so it cannot help here.
     throw input_error(source, what + " " + std::to_string(width) + "x" + std::to_string(height) + " cells needs " +
                                   format_bytes(needed) + " of memory but only " + format_bytes(available) +
-                                  " is available; cut a smaller window out of it first (--crop reads the whole "
+                                  " is available; cut a smaller window out of it first (a crop reads the whole "
                                   "raster before cropping)");
 }
 

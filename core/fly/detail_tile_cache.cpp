@@ -5,6 +5,7 @@
 
 #include "core/fly/radiance_pack.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::fly {
 
@@ -19,7 +20,7 @@ DetailTileCache::DetailTileCache(const dem::DemSource& source, const TerrainOver
     // Four tiles: the corner of four tiles under the eye (or every tile of a smaller DEM).
     const int needed = int(std::min<std::size_t>(4, tiles));
     if (slots_ < needed)
-        throw InputError("--memory-budget: the detail tiles' share (" + std::to_string(options.budget_bytes >> 20) +
+        throw QuantityError(Quantity::memory_budget, "", "the detail tiles' share (" + std::to_string(options.budget_bytes >> 20) +
                          " MB after the overview and far field) holds fewer than " + std::to_string(needed) +
                          " tiles of " + std::to_string(tile_bytes_ >> 20) + " MB; give it " +
                          std::to_string(((std::size_t(needed) * tile_bytes_ - options.budget_bytes) >> 20) + 1) + " MB more");

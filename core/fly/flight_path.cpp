@@ -6,9 +6,28 @@
 #include <sstream>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::fly {
 namespace {
+
+// At most 24 characters of a field, anything outside printable ASCII as \xNN: a binary file
+// must not write its raw bytes to the terminal.
+std::string excerpt(const std::string& field) {
+    std::string out;
+    for (std::size_t i = 0; i < field.size() && i < 24; ++i) {
+        const unsigned char c = static_cast<unsigned char>(field[i]);
+        if (c >= 0x20 && c < 0x7f && c != '\\') {
+            out += char(c);
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        }
+    }
+    if (field.size() > 24) out += "...";
+    return out;
+}
 
 double lerp_angle_deg(double a, double b, double f) {
     double d = std::fmod(b - a, 360.0);
@@ -50,7 +69,7 @@ FlightPose FlightPath::at(double t) const {
 
 FlightPath read_flight_path(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw InputError("--path " + path + ": cannot open the file");
+    if (!in) throw QuantityError(Quantity::flight_path, path, "cannot open the file");
     std::vector<FlightPose> poses;
     std::string line;
     int number = 0;
@@ -69,22 +88,22 @@ FlightPath read_flight_path(const std::string& path) {
             v[n] = std::strtod(field.c_str(), &end);
             while (end != nullptr && (*end == ' ' || *end == '\t')) ++end;
             if (end == field.c_str() || (end != nullptr && *end != '\0') || !std::isfinite(v[n]))
-                throw InputError("--path " + path + " line " + std::to_string(number) + ": '" + field +
-                                 "' is not a number");
+                throw QuantityError(Quantity::flight_path, path + " line " + std::to_string(number),
+                                    "'" + excerpt(field) + "' is not a number");
             ++n;
         }
         if (n != 7 || std::getline(fields, field, ','))
-            throw InputError("--path " + path + " line " + std::to_string(number) +
-                             ": give t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg (7 numbers)");
+            throw QuantityError(Quantity::flight_path, path + " line " + std::to_string(number),
+                                "give t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg (7 numbers)");
         if (v[2] < -90 || v[2] > 90)
-            throw InputError("--path " + path + " line " + std::to_string(number) + ": latitude must be in [-90, 90]");
+            throw QuantityError(Quantity::flight_path, path + " line " + std::to_string(number), "latitude must be in [-90, 90]");
         poses.push_back({v[0], v[1], v[2], v[3], v[4], v[5], v[6]});
     }
-    if (poses.empty()) throw InputError("--path " + path + ": no poses in the file");
+    if (poses.empty()) throw QuantityError(Quantity::flight_path, path, "no poses in the file");
     try {
         return FlightPath(std::move(poses));
     } catch (const InputError& e) {
-        throw InputError("--path " + path + ": " + e.what());
+        throw QuantityError(Quantity::flight_path, path, e.what());
     }
 }
 

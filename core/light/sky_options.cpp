@@ -9,6 +9,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::light {
 
@@ -18,8 +19,8 @@ const char* const kGrammar =
     "expected clear[:turbidity=T,albedo=A], overcast[:brightness=B,albedo=A], PATH.exr, PATH.hdr or "
     "hdr:PATH[,rotation=DEG,scale=S]";
 
-InputError sky_error(const std::string& problem) {
-    return InputError("--sky: " + problem);
+QuantityError sky_error(const std::string& problem) {
+    return QuantityError(Quantity::sky, "", problem);
 }
 
 std::string lower(std::string_view s) {

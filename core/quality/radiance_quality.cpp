@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::quality {
 namespace {
@@ -27,7 +28,7 @@ std::vector<RadianceSetting> group_rows() {
 
 void check_max_error(double max_error) {
     if (!(max_error > 0))
-        throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
+        throw QuantityError(Quantity::max_error, "", "must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
 }
 
 }  // namespace
@@ -88,7 +89,7 @@ RadianceChoice choose_radiance(double max_error, const RadianceScene& scene,
     if (c.worst_sun_elevation_deg < lo) std::snprintf(held, sizeof held, ", held at the fitted %.0f", lo);
     char line[384];
     std::snprintf(line, sizeof line,
-                  "--max-error %g: %d directions, sun shadows %s (predicted relative radiance error %.3g for mean "
+                  "%g: %d directions, sun shadows %s (predicted relative radiance error %.3g for mean "
                   "slope %.2g = %.1f degrees, sun %.1f degrees up%s%s)",
                   max_error, c.directions, c.exact_sun ? "exact" : "sweep", c.predicted_error, scene.roughness,
                   std::atan(scene.roughness) * 180.0 / 3.14159265358979323846, c.worst_sun_elevation_deg, held,

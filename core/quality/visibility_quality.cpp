@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::quality {
 
@@ -35,7 +36,7 @@ const std::vector<VisibilitySetting>& visibility_settings() {
 }
 
 VisibilityChoice choose_visibility(double max_error, double roughness) {
-    if (!(max_error > 0)) throw InputError("--max-error must be > 0 (an svf RMSE, e.g. 0.001)");
+    if (!(max_error > 0)) throw QuantityError(Quantity::max_error, "", "must be > 0 (an svf RMSE, e.g. 0.001)");
     const auto& table = visibility_settings();
     VisibilityChoice choice;
     choice.roughness = roughness;
@@ -50,7 +51,7 @@ VisibilityChoice choose_visibility(double max_error, double roughness) {
     choice.predicted_error = choice.setting.error_per_roughness * roughness;
     char line[256];
     std::snprintf(line, sizeof line,
-                  "--max-error %g: %d directions, near field %g texels (predicted svf RMSE %.2g for mean slope "
+                  "%g: %d directions, near field %g texels (predicted svf RMSE %.2g for mean slope "
                   "%.2g = %.1f degrees%s)",
                   max_error, choice.setting.directions, choice.setting.near_field_texels, choice.predicted_error,
                   roughness, std::atan(roughness) * 180.0 / 3.14159265358979323846,

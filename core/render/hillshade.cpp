@@ -9,6 +9,7 @@
 #include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::render {
 using geo::azimuth_cw_from_north_to_phi;
@@ -23,21 +24,14 @@ std::string number(double v) {
 }  // namespace
 
 void validate(const HillshadeOptions& o) {
-    if (!std::isfinite(o.azimuth_deg)) throw InputError("--azimuth: must be a finite number of degrees");
+    if (!(o.azimuth_deg >= 0.0 && o.azimuth_deg <= 360.0))
+        throw QuantityError(Quantity::sun_azimuth, "", "must be in [0, 360] degrees, got " + number(o.azimuth_deg));
     if (!(o.altitude_deg >= 0.0 && o.altitude_deg <= 90.0)) {
-        throw InputError("--altitude: must be in [0, 90] degrees, got " + number(o.altitude_deg));
+        throw QuantityError(Quantity::sun_elevation, "", "must be in [0, 90] degrees, got " + number(o.altitude_deg));
     }
     if (!(o.z_factor > 0.0) || !std::isfinite(o.z_factor)) {
-        throw InputError("--z-factor: must be a finite number > 0, got " + number(o.z_factor));
+        throw QuantityError(Quantity::z_factor, "", "must be a finite number > 0, got " + number(o.z_factor));
     }
-}
-
-std::uint8_t shade_value(double dz_de, double dz_dn, double light_e, double light_n, double light_u) {
-    // n . s with n = (-dz/dE, -dz/dN, 1) / sqrt(1 + |grad|^2).
-    const double cosine = (light_u - dz_de * light_e - dz_dn * light_n) / std::sqrt(1.0 + dz_de * dz_de + dz_dn * dz_dn);
-    if (!(cosine > 0.0)) return 1;
-    // gdaldem stores 1 + 254 cos as float and GDAL rounds to nearest when writing bytes.
-    return std::uint8_t(std::lround(std::min(255.0, 1.0 + 254.0 * cosine)));
 }
 
 namespace {
@@ -77,9 +71,8 @@ bool edge_window(const terrain::HeightGrid& g, int r, int c, float win[9]) {
 }
 
 std::uint8_t shade_window(const float v[9], double kx, double ky, const glm::dvec3& light) {
-    const double dz_de = (double(v[2]) + 2.0 * v[5] + v[8] - (double(v[0]) + 2.0 * v[3] + v[6])) * kx;
-    const double dz_dn = (double(v[0]) + 2.0 * v[1] + v[2] - (double(v[6]) + 2.0 * v[7] + v[8])) * ky;
-    return shade_value(dz_de, dz_dn, light.x, light.y, light.z);
+    const HornGradient g = horn_gradient(v, v + 3, v + 6, kx, ky);
+    return shade_value(g.dz_de, g.dz_dn, light.x, light.y, light.z);
 }
 
 }  // namespace

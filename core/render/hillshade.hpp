@@ -1,5 +1,5 @@
 #pragma once
-// Classic local hillshade: Horn (1981) gradients on a 3x3 window, lit by a distant light, as
+// Classic local hillshade: Horn (1981) gradients on a 3x3 window (horn.hpp), lit by a distant light, as
 // `gdaldem hillshade` computes it, but with the true ground spacing of each row (so geographic
 // DEMs need no -s scale and their east-west spacing shrinks with latitude as it should).
 //
@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/render/horn.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {
@@ -41,9 +42,5 @@ void validate(const HillshadeOptions& options);
 
 // Row-major width x height bytes.
 std::vector<std::uint8_t> hillshade(const terrain::HeightGrid& grid, const HillshadeOptions& options);
-
-// The shading of one window, 1..255 (exposed for tests). dz_de, dz_dn: gradients in m/m
-// including the z-factor; light: unit ENU vector towards the light.
-std::uint8_t shade_value(double dz_de, double dz_dn, double light_e, double light_n, double light_u);
 
 }  // namespace ts::render

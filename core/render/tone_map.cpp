@@ -14,6 +14,7 @@
 #include "core/raster/display_shared.hpp"
 #include "core/raster/srgb.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::render {
 
@@ -24,7 +25,7 @@ Exposure parse_exposure(std::string_view text) {
     const auto* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, ev);
     if (ec != std::errc() || ptr != end || !std::isfinite(ev) || ev < -10 || ev > 30)
-        throw InputError("--exposure " + std::string(text) + ": give auto or an EV100 number in -10..30");
+        throw QuantityError(Quantity::exposure, std::string(text), "give auto or an EV100 number in -10..30");
     e.automatic = false;
     e.ev100 = ev;
     return e;

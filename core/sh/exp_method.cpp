@@ -1,6 +1,7 @@
 #include "core/sh/exp_method.hpp"
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::sh {
 
@@ -23,7 +24,7 @@ std::string_view to_string(ExpMethod m) {
 ExpMethod parse_exp_method(std::string_view name) {
     for (ExpMethod m : kAllExpMethods)
         if (to_string(m) == name) return m;
-    throw InputError("--exp-method: unknown method '" + std::string(name) + "' (choose " + exp_method_choices() + ")");
+    throw QuantityError(Quantity::exp_method, "", "unknown method '" + std::string(name) + "' (choose " + exp_method_choices() + ")");
 }
 
 std::string exp_method_choices() {

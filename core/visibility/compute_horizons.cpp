@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::visibility {
 
@@ -23,7 +24,7 @@ HorizonSet compute_horizons(const terrain::HeightGrid& grid, const HorizonOption
     if (grid.width < 1 || grid.height < 1 || grid.z.size() != std::size_t(grid.width) * std::size_t(grid.height))
         throw InputError("height grid: empty or inconsistent size");
     if (options.directions < 1 || options.directions > 4096)
-        throw InputError("--directions: must be between 1 and 4096, got " + std::to_string(options.directions));
+        throw QuantityError(Quantity::directions, "", "must be between 1 and 4096, got " + std::to_string(options.directions));
     HorizonSet set;
     switch (options.method) {
         case HorizonMethod::exact:

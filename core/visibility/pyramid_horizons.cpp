@@ -13,6 +13,7 @@
 
 #include "core/terrain/height_pyramid.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
@@ -27,7 +28,7 @@ namespace ts::visibility {
 
 HorizonSet pyramid_horizons(const terrain::HeightGrid& grid, const HorizonOptions& options) {
     const PyramidSchedule* schedule = find_pyramid_schedule(options.pyramid_schedule);
-    if (!schedule) throw InputError("--pyramid-schedule: unknown schedule '" + options.pyramid_schedule + "'");
+    if (!schedule) throw QuantityError(Quantity::pyramid_schedule, "", "unknown schedule '" + options.pyramid_schedule + "'");
     const RowMetrics metrics(grid);
     terrain::PyramidOptions pyramid_options;
     pyramid_options.threads = options.threads;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/visibility/blocker_log_sh.hpp"
 #include "core/visibility/earth_curvature.hpp"
 #include "core/visibility/compute_horizons.hpp"
@@ -35,10 +36,10 @@ const std::string& VisibilityResult::path() const { return stages.empty() ? kCpu
 
 void check_request(const VisibilityRequest& request) {
     if (request.horizon.directions < 1 || request.horizon.directions > 4096)
-        throw InputError("--directions: must be between 1 and 4096, got " + std::to_string(request.horizon.directions));
+        throw QuantityError(Quantity::directions, "", "must be between 1 and 4096, got " + std::to_string(request.horizon.directions));
     if (request.log_sh && request.horizon.directions < 4)
-        throw InputError("log-SH visibility needs at least 4 --directions, got " +
-                         std::to_string(request.horizon.directions));
+        throw QuantityError(Quantity::directions, "", "log-SH visibility needs at least 4, got " +
+                                                                  std::to_string(request.horizon.directions));
 }
 
 void complete_on_cpu(const terrain::HeightGrid& grid, const VisibilityRequest& request, VisibilityResult& result) {

@@ -9,6 +9,7 @@
 #include "core/sh/sh_shared.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/small_angle_trig.hpp"
 
@@ -159,7 +160,7 @@ VisibilityProducts visibility_products(const HorizonSet& set, const ProductReque
 
 void visibility_products_into(const HorizonSet& set, const ProductRequest& r, const ProductOutputs& out) {
     if (r.log_sh && set.directions < 4)
-        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(set.directions));
+        throw QuantityError(Quantity::sh_output, "", "needs at least 4 directions, got " + std::to_string(set.directions));
     const std::size_t texels = set.texels();
     if (set.directions < 1) {  // no azimuth to average over: as 0 / 0 in the per-texel code
         if (r.svf) std::fill(out.svf, out.svf + texels, std::numeric_limits<float>::quiet_NaN());

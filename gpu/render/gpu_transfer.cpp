@@ -11,6 +11,7 @@
 #include "core/sh/sh_exp_shared.hpp"
 #include "core/sh/sh_exp_squaring_shared.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "gpu/batch.hpp"
 #include "gpu/render/shade_recording.hpp"
@@ -110,8 +111,8 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
       kernels_(kernels ? std::move(kernels) : own_kernels(context)),
       texels_(in.texels) {
     if (!runs_on_gpu(in.method))
-        throw InputError("--exp-method " + std::string(sh::to_string(in.method)) +
-                         ": only hybrid and scaling_squaring run on the GPU (use --cpu)");
+        throw QuantityError(Quantity::exp_method, std::string(sh::to_string(in.method)),
+                            "only hybrid and scaling_squaring run on the GPU (compute on the CPU)");
     if (texels_ == 0) return;
     if (!in.log_visibility || !in.lobe_axis || !in.lobe_log_zh)
         throw std::invalid_argument("gpu::render::TransferField: null input array");

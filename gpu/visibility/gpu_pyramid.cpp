@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
@@ -67,7 +68,7 @@ PyramidLayout plan_pyramid(const terrain::HeightGrid& grid, VkDeviceSize range, 
     if (p.rows_per_part < 1 || (grid.height + p.rows_per_part - 1) / p.rows_per_part > kMaxHeightParts)
         throw InputError("height grid: " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
                          " needs more than " + std::to_string(kMaxHeightParts) + " GPU storage buffers of " +
-                         std::to_string(height_range >> 20) + " MiB; crop it or use --cpu");
+                         std::to_string(height_range >> 20) + " MiB; crop it or compute on the CPU");
     p.parts = (grid.height + p.rows_per_part - 1) / p.rows_per_part;
     // terrain::HeightPyramid's sizes: halve (rounding up) down to one texel.
     int w = grid.width, h = grid.height;
@@ -87,7 +88,7 @@ PyramidLayout plan_pyramid(const terrain::HeightGrid& grid, VkDeviceSize range, 
     if (std::max(p.level1_floats, p.levels2_floats) * sizeof(float) > range)
         throw InputError("height grid: " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
                          ": its pyramid's level 1 exceeds one GPU storage buffer of " + std::to_string(range >> 20) +
-                         " MiB; crop it or use --cpu");
+                         " MiB; crop it or compute on the CPU");
     return p;
 }
 
@@ -169,14 +170,14 @@ Result compute_pyramid(const Context& context, const terrain::HeightGrid& grid, 
     const auto& ho = options.horizon;
     check_grid(grid);
     if (ho.method != vis::HorizonMethod::pyramid)
-        throw InputError("gpu pyramid horizons: asked for --method " + std::string(vis::method_name(ho.method)));
+        throw InputError("gpu pyramid horizons: asked for the " + std::string(vis::method_name(ho.method)) + " method");
     if (ho.directions < 1 || ho.directions > kMaxGpuDirections)
-        throw InputError("--directions: the GPU path takes 1 to " + std::to_string(kMaxGpuDirections) + ", got " +
-                         std::to_string(ho.directions) + " (use --cpu)");
+        throw QuantityError(Quantity::directions, "", "the GPU path takes 1 to " + std::to_string(kMaxGpuDirections) + ", got " +
+                                                          std::to_string(ho.directions) + " (compute on the CPU)");
     if (options.log_sh && ho.directions < 4)
-        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(ho.directions));
+        throw QuantityError(Quantity::sh_output, "", "needs at least 4 directions, got " + std::to_string(ho.directions));
     const vis::PyramidSchedule* schedule = vis::find_pyramid_schedule(ho.pyramid_schedule);
-    if (!schedule) throw InputError("--pyramid-schedule: unknown schedule '" + ho.pyramid_schedule + "'");
+    if (!schedule) throw QuantityError(Quantity::pyramid_schedule, "", "unknown schedule '" + ho.pyramid_schedule + "'");
     const VkDeviceSize range = context.limits().maxStorageBufferRange;
     const PyramidLayout layout = plan_pyramid(grid, range, options.max_height_buffer_bytes);
 

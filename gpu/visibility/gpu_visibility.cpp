@@ -9,6 +9,7 @@
 
 #include "core/util/progress_bar.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/visibility/bilinear_march.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/earth_curvature.hpp"
@@ -183,17 +184,17 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
         throw InputError("height grid: empty or inconsistent size");
     if (ho.method == vis::HorizonMethod::pyramid) return compute_pyramid(context, grid, options);  // gpu_pyramid.cpp
     if (ho.method != vis::HorizonMethod::exact)
-        throw InputError("--method " + std::string(vis::method_name(ho.method)) +
-                         ": only exact runs on the GPU so far (use --cpu)");
+        throw QuantityError(Quantity::visibility_method, std::string(vis::method_name(ho.method)),
+                            "only exact runs on the GPU so far (compute on the CPU)");
     if (ho.directions < 1 || ho.directions > 4096)
-        throw InputError("--directions: must be between 1 and 4096, got " + std::to_string(ho.directions));
+        throw QuantityError(Quantity::directions, "", "must be between 1 and 4096, got " + std::to_string(ho.directions));
     // The log-SH shader loops ~17 times per direction, and llvmpipe ends an invocation's loops
     // after 65535 iterations in all.
     if (ho.directions > kMaxGpuDirections)
-        throw InputError("--directions: the GPU path takes at most " + std::to_string(kMaxGpuDirections) + ", got " +
-                         std::to_string(ho.directions) + " (use --cpu)");
+        throw QuantityError(Quantity::directions, "", "the GPU path takes at most " + std::to_string(kMaxGpuDirections) +
+                                                          ", got " + std::to_string(ho.directions) + " (compute on the CPU)");
     if (options.log_sh && ho.directions < 4)
-        throw InputError("--sh: needs at least 4 directions, got " + std::to_string(ho.directions));
+        throw QuantityError(Quantity::sh_output, "", "needs at least 4 directions, got " + std::to_string(ho.directions));
     const VkDeviceSize range = context.limits().maxStorageBufferRange;
     const VkDeviceSize height_range =
         options.max_height_buffer_bytes > 0 ? std::min<VkDeviceSize>(range, options.max_height_buffer_bytes) : range;
@@ -204,7 +205,7 @@ Result compute(const Context& context, const terrain::HeightGrid& grid, const Op
     if (hp.rows_per_part < 1 || (grid.height + hp.rows_per_part - 1) / hp.rows_per_part > kMaxHeightParts)
         throw InputError("height grid: " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
                          " needs more than " + std::to_string(kMaxHeightParts) + " GPU storage buffers of " +
-                         std::to_string(height_range >> 20) + " MiB; crop it or use --cpu");
+                         std::to_string(height_range >> 20) + " MiB; crop it or compute on the CPU");
     hp.parts = (grid.height + hp.rows_per_part - 1) / hp.rows_per_part;
 
     const vis::RowMetrics metrics(grid);

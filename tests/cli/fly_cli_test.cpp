@@ -208,7 +208,8 @@ TEST(FlyCli, BadInputExitsTwoBeforeWork) {
     const Result size = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --size 12"));
     EXPECT_EQ(size.exit_code, 2);
     EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
-    const auto bad = dir / "bad.csv";
+    // The path lies beside the output folder: one inside it is refused as an input the output could clear.
+    const auto bad = temp_dir("fly_bad_path") / "bad.csv";
     std::ofstream(bad) << "0,5.6,45.1,2000,0,0\n";
     const Result path = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --path " +
                                    quote(bad.string())));

@@ -43,7 +43,7 @@ TEST(MessagesCli, AWordForANumberSaysNotANumberInEveryCommand) {
     // A number out of range still gives the range.
     const Result range = run(ts_cmd("visibility " + dem + " --directions 0 --svf " + out));
     EXPECT_EQ(range.exit_code, 2);
-    EXPECT_NE(range.err.find("range"), std::string::npos) << range.err;
+    EXPECT_NE(range.err.find("must be within 1..4096, got 0"), std::string::npos) << range.err;
     EXPECT_EQ(std::count(range.err.begin(), range.err.end(), '\n'), 1) << range.err;
 }
 

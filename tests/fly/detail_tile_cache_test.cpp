@@ -161,7 +161,7 @@ TEST(DetailTileCache, ABudgetBelowFourTilesSaysWhatItNeeds) {
         DetailTileCache cache(s.source, s.overview, *s.far, s.frame, 16, s.options(2));
         FAIL() << "two tiles' budget accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("--memory-budget"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("memory budget: "), std::string::npos) << e.what();
     }
 }
 

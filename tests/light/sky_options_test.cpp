@@ -44,7 +44,7 @@ void expect_error(const char* text, const char* needle) {
         const std::string what = e.what();
         EXPECT_NE(what.find(needle), std::string::npos) << text << " -> " << what;
         EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-        EXPECT_EQ(what.rfind("--sky: ", 0), 0u) << what;
+        EXPECT_EQ(what.rfind("sky: ", 0), 0u) << what;
     }
 }
 

@@ -22,7 +22,7 @@
 #include "core/render/reference_shading.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/terrain/terrain_normals.hpp"
-#include "core/tiles/reference_relief.hpp"
+#include "app/bench/study/reference_relief.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/visibility_grid.hpp"
@@ -106,7 +106,7 @@ TEST_P(RadianceMaxError, TheChosenSettingMeetsTheBoundAgainstTheReference) {
 TEST_P(RadianceMaxError, TheTilesReliefMeetsTheBoundAgainstItsReference) {
     const dem::Dem d = shared_crop(GetParam());
     tiles::TileShading shading;
-    shading.style = tiles::TileStyle::relief;
+    shading.style = tiles::find_tile_style("relief");
     const tiles::LevelWindow window{18, 18, 12, 12};
     const std::vector<float> ref = tiles::reference_relief(d, shading, 0, 1.0, window);
     quality::RadianceScene scene;

@@ -1,0 +1,12 @@
+#include "app/options/sky_option.hpp"
+
+namespace ts::app {
+
+void add_sky_option(CLI::App& cmd, std::string& sky) {
+    cmd.add_option("--sky", sky,
+                   "Sky: clear[:turbidity=T,albedo=A] | overcast[:brightness=B] | PATH.exr|PATH.hdr "
+                   "(or hdr:PATH[,rotation=DEG,scale=S]) (docs/lighting.md)")
+        ->capture_default_str();
+}
+
+}  // namespace ts::app

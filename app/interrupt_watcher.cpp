@@ -22,6 +22,9 @@ namespace {
 std::atomic<const char*> g_unit{nullptr};
 std::atomic<std::uint64_t> g_total{0};
 std::atomic<std::uint64_t> g_committed_before{0};
+// What an interrupt keeps on purpose (report_kept): written before it is published.
+char g_kept_text[1024];
+std::atomic<bool> g_kept{false};
 
 // Threads that reached the freeze handler.
 std::atomic<int> g_frozen{0};
@@ -91,7 +94,7 @@ void flush_stdout() {
 
 void print_summary() {
     const std::uint64_t committed = temp_files::committed_count() - g_committed_before.load();
-    char line[256];
+    char line[1400];
     const char* unit = g_unit.load();
     // A progress bar may own the current line of a terminal.
     const char* lead = ::isatty(STDERR_FILENO) ? "\n" : "";
@@ -106,8 +109,66 @@ void print_summary() {
         std::snprintf(line, sizeof line, "%sterrashade: interrupted; %llu file%s written\n", lead,
                       static_cast<unsigned long long>(committed), committed == 1 ? "" : "s");
     }
-    write_all(STDERR_FILENO, line, std::strlen(line));
+    std::size_t n = std::strlen(line);
+    if (g_kept.load() && n > 0) {
+        std::snprintf(line + n - 1, sizeof line - (n - 1), "; %s\n", g_kept_text);
+        n = std::strlen(line);
+    }
+    write_all(STDERR_FILENO, line, n);
 }
+
+}  // namespace
+
+struct InterruptIndex::Item {
+    std::string file, line;
+    std::atomic<bool> ready{false};
+};
+
+namespace {
+std::atomic<InterruptIndex*> g_index{nullptr};
+}  // namespace
+
+InterruptIndex& index_on_interrupt(const std::string& path, const std::string& header, std::size_t items) {
+    static InterruptIndex* index = new InterruptIndex;  // never freed: the watcher may read it at exit
+    g_index.store(nullptr);
+    delete[] index->items_;
+    index->path_ = path, index->tmp_ = path + ".interrupted-tmp", index->header_ = header;
+    index->items_ = new InterruptIndex::Item[items];
+    index->count_ = items;
+    g_index.store(index);
+    return *index;
+}
+
+void InterruptIndex::set(std::size_t k, const std::string& file, const std::string& line) {
+    if (k >= count_) return;
+    items_[k].file = file, items_[k].line = line;
+    items_[k].ready.store(true, std::memory_order_release);
+}
+
+void InterruptIndex::forget() { g_index.store(nullptr); }
+
+void write_index() {
+    const InterruptIndex* x = g_index.load();
+    if (!x) return;
+    bool any = false;
+    for (std::size_t k = 0; k < x->count_ && !any; ++k)
+        any = x->items_[k].ready.load(std::memory_order_acquire) && ::access(x->items_[k].file.c_str(), F_OK) == 0;
+    if (!any) return;
+    const int fd = ::open(x->tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) return;
+    write_all(fd, x->header_.data(), x->header_.size());
+    for (std::size_t k = 0; k < x->count_; ++k) {
+        const InterruptIndex::Item& it = x->items_[k];
+        if (it.ready.load(std::memory_order_acquire) && ::access(it.file.c_str(), F_OK) == 0)
+            write_all(fd, it.line.data(), it.line.size());
+    }
+    const bool ok = ::fsync(fd) == 0;
+    ::close(fd);
+    if (ok) ::rename(x->tmp_.c_str(), x->path_.c_str());
+    else ::unlink(x->tmp_.c_str());
+}
+
+namespace {
 
 void watch(sigset_t set) {
     int sig = 0;
@@ -115,6 +176,7 @@ void watch(sigset_t set) {
     }
     temp_files::hold_for_exit();
     freeze_other_threads();
+    write_index();  // before remove_held: an index that lists frames keeps their created folder
     temp_files::remove_held();
     flush_stdout();
     print_summary();
@@ -136,11 +198,17 @@ void start() {
 
     sigset_t set;
     sigemptyset(&set);
-    for (int sig : {SIGINT, SIGTERM})
+    for (int sig : {SIGINT, SIGTERM, SIGHUP})
         if (!ignored_at_start(sig)) sigaddset(&set, sig);
     if (sigisemptyset(&set)) return;
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
     std::thread(watch, set).detach();
+}
+
+void report_kept(const std::string& kept) {
+    g_kept.store(false);
+    std::snprintf(g_kept_text, sizeof g_kept_text, "%s", kept.c_str());
+    g_kept.store(true);
 }
 
 void report_progress(const char* unit, std::uint64_t total) {

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <optional>
+#include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
 
@@ -83,6 +85,59 @@ bool same_file(const std::string& a, const std::string& b) {
     return ca == cb;
 }
 
+// A file or folder as the file system knows it: the same (device, inode) is the same file
+// whatever path names it (a symlink, "..", a hard link).
+struct FileId {
+    dev_t dev = 0;
+    ino_t ino = 0;
+    bool operator==(const FileId&) const = default;
+};
+
+std::optional<FileId> file_id(const fs::path& p) {
+    struct stat st {};
+    if (::stat(p.c_str(), &st) != 0) return std::nullopt;
+    return FileId{st.st_dev, st.st_ino};
+}
+
+// `p` and the folders holding it, innermost first, after symlinks and "..". A path that does not
+// exist yet is represented by its nearest existing folder.
+std::vector<FileId> self_and_folders(const fs::path& p) {
+    std::error_code ec;
+    fs::path at = fs::absolute(p, ec).lexically_normal();
+    while (!fs::exists(at, ec) && at.has_relative_path()) at = at.parent_path();
+    fs::path c = fs::canonical(at, ec);
+    if (ec) c = at;
+    std::vector<FileId> ids;
+    for (;;) {
+        if (const auto id = file_id(c)) ids.push_back(*id);
+        if (!c.has_relative_path()) break;
+        c = c.parent_path();
+    }
+    return ids;
+}
+
+bool contains(const std::vector<FileId>& ids, const FileId& id) {
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+// Refuses an output that is an input, a folder an output is written into (or cleared) that holds
+// an input, and an output inside a folder read as an input: a user's data is never written over.
+void check_not_over_input(const std::string& out_what, const std::string& out, bool out_is_folder,
+                          const std::string& in_what, const std::string& in, bool in_is_folder) {
+    const std::optional<FileId> in_id = file_id(in);
+    if (!in_id) return;  // check_input reported it
+    const std::vector<FileId> out_chain = self_and_folders(out);
+    const std::optional<FileId> out_id = file_id(out);
+    const bool same = out_id && *out_id == *in_id;
+    if (same)
+        fail(out, "is the input " + in + ", which would be overwritten; write elsewhere", out_what + " and " + in_what);
+    if (out_is_folder && out_id && contains(self_and_folders(in), *out_id))
+        fail(out, "holds the input " + in + ", which writing or clearing it could overwrite; write elsewhere",
+             out_what + " and " + in_what);
+    if (in_is_folder && contains(out_chain, *in_id))
+        fail(out, "is inside the input " + in + ", which would be changed; write elsewhere", out_what + " and " + in_what);
+}
+
 }  // namespace
 
 IoPlan& IoPlan::input(std::string what, std::string path) {
@@ -92,6 +147,11 @@ IoPlan& IoPlan::input(std::string what, std::string path) {
 
 IoPlan& IoPlan::inputs(const std::string& what, const std::vector<std::string>& paths) {
     for (const auto& p : paths) input(what, p);
+    return *this;
+}
+
+IoPlan& IoPlan::input_directory(std::string what, std::string path) {
+    if (!path.empty()) input_directories_.push_back({std::move(what), std::move(path), {}});
     return *this;
 }
 
@@ -107,6 +167,17 @@ IoPlan& IoPlan::output_directory(std::string what, std::string path) {
 
 void IoPlan::check() const {
     for (const Entry& e : inputs_) check_input(e.what, e.path);
+    for (const Entry& e : input_directories_) {
+        std::error_code ec;
+        if (!fs::is_directory(e.path, ec)) fail(e.path, "no such folder", e.what);
+    }
+    // No output over an input, before anything else is said about the outputs.
+    for (const auto* outs : {&outputs_, &directories_})
+        for (const Entry& o : *outs) {
+            for (const Entry& i : inputs_) check_not_over_input(o.what, o.path, outs == &directories_, i.what, i.path, false);
+            for (const Entry& i : input_directories_)
+                check_not_over_input(o.what, o.path, outs == &directories_, i.what, i.path, true);
+        }
     for (const Entry& e : directories_) check_output_directory(e.what, e.path);
     for (std::size_t i = 0; i < outputs_.size(); ++i) {
         check_output(outputs_[i].what, outputs_[i].path, outputs_[i].extensions);

@@ -11,6 +11,9 @@
 // Inputs: exist, are files, are readable. Outputs: the directory exists and is writable, the
 // path is not a directory, its extension is one the writer supports, no two outputs are the
 // same file. Output directories (relight): exist and are writable, or their parent does.
+// No output may be an input, and no output folder (written into, or cleared by --overwrite)
+// may hold one: compared as the same file (device and inode, after symlinks and ".."), so
+// `hillshade G.tif --out G.tif`, a symlink to G.tif or `dir/../G.tif` are refused before any work.
 #include <string>
 #include <vector>
 
@@ -22,6 +25,8 @@ public:
     // An empty path is skipped (an option not given).
     IoPlan& input(std::string what, std::string path);
     IoPlan& inputs(const std::string& what, const std::vector<std::string>& paths);
+    // A folder the command reads (merge's shards): no output may be it or lie inside it.
+    IoPlan& input_directory(std::string what, std::string path);
     // A file the command writes, with the extensions its writer supports (lower case, with the
     // dot; matched case-insensitively; none = any). An empty path is skipped.
     IoPlan& output(std::string what, std::string path, std::vector<std::string> extensions);
@@ -36,7 +41,7 @@ private:
         std::string what, path;
         std::vector<std::string> extensions;
     };
-    std::vector<Entry> inputs_, outputs_, directories_;
+    std::vector<Entry> inputs_, input_directories_, outputs_, directories_;
 };
 
 }  // namespace ts::app

@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/io_plan.hpp"
 #include "core/render/frame_series_merge.hpp"
 #include "core/tiles/tile_merge.hpp"
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/raster/image_writer_registry.hpp"
 
 namespace ts::app {
 namespace {
@@ -27,7 +29,7 @@ enum class ShardKind { mbtiles, xyz, frames };
 
 ShardKind kind_of(const std::string& input) {
     std::error_code ec;
-    if (input.ends_with(".mbtiles")) return ShardKind::mbtiles;
+    if (raster::written_as(input, raster::ImageWriter::mbtiles)) return ShardKind::mbtiles;
     if (!fs::is_directory(input, ec)) throw input_error(input, "no such shard (an .mbtiles file or a folder)");
     if (fs::exists(fs::path(input) / "times.csv", ec)) return ShardKind::frames;
     return ShardKind::xyz;
@@ -45,9 +47,17 @@ void run_merge(const MergeArgs& a) {
             throw input_error(in, std::string("is not like ") + a.inputs.front() + ": give only " + kind_name(kind));
         shards.emplace_back(in);
     }
-    if ((kind == ShardKind::mbtiles) != a.out.ends_with(".mbtiles"))
+    if ((kind == ShardKind::mbtiles) != raster::written_as(a.out, raster::ImageWriter::mbtiles))
         throw input_error(a.out, kind == ShardKind::mbtiles ? "MBTiles shards merge into an .mbtiles file"
                                                             : "folders merge into a folder, not an .mbtiles file");
+    IoPlan plan;
+    for (const std::string& in : a.inputs)
+        kind == ShardKind::mbtiles ? plan.input("shard", in) : plan.input_directory("shard", in);
+    if (kind == ShardKind::mbtiles)
+        plan.output("--out", a.out, raster::tile_set_extensions());
+    else
+        plan.output_directory("--out", a.out);
+    plan.check();
     const Stopwatch watch;
     if (kind == ShardKind::frames) {
         const render::FrameMergeStats s = render::merge_frame_series(shards, a.out);

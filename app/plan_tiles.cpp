@@ -54,10 +54,10 @@ void run_plan_tiles(const PlanTilesArgs& a) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
     }
-    const tiles::LonLatBox box = tiles::dem_footprint(dem.georef);
+    const tiles::LonLatBox box = tiles::terrain_footprint(dem);  // as tiles plans them
     std::int64_t total = 0;
     std::printf("tiles of %s, zoom %d-%d, %d px, %s:\n  zoom        tiles\n", a.dem.files.front().c_str(), job.z0,
-                job.z1, job.tile_size, std::string(tiles::tile_style_name(job.shading.style)).c_str());
+                job.z1, job.tile_size, std::string(job.shading.style->name()).c_str());
     for (int z = job.z0; z <= job.z1; ++z) {
         const std::int64_t n = tiles::count_tiles_covering(box, z);
         std::printf("  %4d %12lld\n", z, static_cast<long long>(n));

@@ -20,6 +20,7 @@
 #include "app/shard_option.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/render/background_writer.hpp"
+#include "core/render/frame_folder.hpp"
 #include "core/render/sequence_exposure.hpp"
 #include "core/light/time_interval.hpp"
 #include "core/light/utc_time.hpp"
@@ -28,6 +29,8 @@
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/util/temp_files.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -41,6 +44,7 @@ struct RelightArgs {
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
     bool skip_night = false;
+    bool overwrite = false;  // replace the series already in out_dir
     std::string shard;  // K/N
     std::string mesh_path;  // the first --mesh follows this flight path (CSV, core/fly/flight_path.hpp)
 };
@@ -106,18 +110,26 @@ struct MeshMotion {
     std::size_t moves = 0;
 };
 
+constexpr const char* kTimesHeader = "frame,file,time_utc,sun_azimuth_deg,sun_elevation_deg,ev100\n";
+
+std::string times_csv_row(const Frame& fr, bool linear) {
+    char row[256];
+    std::snprintf(row, sizeof row, "%zu,%s,%s,%.4f,%.4f,", fr.index, fr.file.c_str(),
+                  light::format_utc_time(fr.time).c_str(), fr.sun.azimuth_deg, fr.sun.elevation_deg);
+    std::string s = row;
+    if (!linear) {  // EXR frames are linear: no exposure applied
+        std::snprintf(row, sizeof row, "%.3f", fr.ev100);
+        s += row;
+    }
+    return s + "\n";
+}
+
 void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>& frames, bool linear) {
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         std::FILE* f = std::fopen(tmp.c_str(), "w");
         if (!f) throw input_error(path.string(), "cannot write");
-        std::fprintf(f, "frame,file,time_utc,sun_azimuth_deg,sun_elevation_deg,ev100\n");
-        for (std::size_t k = 0; k < frames.size(); ++k) {
-            const Frame& fr = frames[k];
-            std::fprintf(f, "%zu,%s,%s,%.4f,%.4f,", fr.index, fr.file.c_str(), light::format_utc_time(fr.time).c_str(),
-                         fr.sun.azimuth_deg, fr.sun.elevation_deg);
-            if (linear) std::fprintf(f, "\n");  // EXR frames are linear: no exposure applied
-            else std::fprintf(f, "%.3f\n", fr.ev100);
-        }
+        std::fputs(kTimesHeader, f);
+        for (const Frame& fr : frames) std::fputs(times_csv_row(fr, linear).c_str(), f);
         if (std::fclose(f) != 0) throw input_error(path.string(), "cannot write (disk full?)");
     });
 }
@@ -148,7 +160,7 @@ void run_relight(const RelightArgs& a) {
     const render::Exposure exposure = exposure_of(render_args);
     IoPlan plan;
     plan_render_inputs(plan, render_args, options);
-    plan.input("--times-file", a.times_file).output_directory("--out", a.out_dir);
+    plan.input("--times-file", a.times_file).input("--mesh-path", a.mesh_path).output_directory("--out", a.out_dir);
     plan.check();
     const Shard shard = shard_of_process(a.shard);
     if (!shard.whole() && exposure.automatic && a.format != "exr")
@@ -181,11 +193,12 @@ void run_relight(const RelightArgs& a) {
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions, !options.meshes.empty()),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
     // The output directory only once the inputs are known good: a refused DEM leaves nothing.
+    // One series per folder: a folder that is not empty is refused, or its old series removed.
+    // A folder made here is known to the interrupt before it exists (else a signal between the
+    // two would leave it empty).
     std::error_code ec;
-    std::filesystem::create_directories(a.out_dir, ec);
-    if (ec || !std::filesystem::is_directory(a.out_dir))
-        throw input_error(a.out_dir, "cannot create the output directory");
-    remove_shard_marker(a.out_dir);
+    if (!std::filesystem::exists(a.out_dir, ec)) temp_files::track_created_directory(a.out_dir);
+    render::claim_frame_folder(a.out_dir, a.overwrite);
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;
@@ -228,6 +241,10 @@ void run_relight(const RelightArgs& a) {
         }
     }
     interrupt::report_progress("frames", frames.size());
+    // An interrupt leaves times.csv listing exactly the frames on disk.
+    interrupt::InterruptIndex& index_of_frames =
+        interrupt::index_on_interrupt((std::filesystem::path(a.out_dir) / "times.csv").string(), kTimesHeader,
+                                      frames.size());
 
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
@@ -288,13 +305,15 @@ void run_relight(const RelightArgs& a) {
             }
             fr.ev100 = frame_exposure.automatic ? 0.0 : frame_exposure.ev100;
             ev_min = std::min(ev_min, fr.ev100), ev_max = std::max(ev_max, fr.ev100);
-            writer.write((std::filesystem::path(a.out_dir) / fr.file).string(), image, frame_exposure,
-                         scene->target().georef());
+            const std::string frame_path = (std::filesystem::path(a.out_dir) / fr.file).string();
+            index_of_frames.set(std::size_t(&fr - frames.data()), frame_path, times_csv_row(fr, linear));
+            writer.write(frame_path, image, frame_exposure, scene->target().georef());
             bar.advance();
         }
         writer.finish();
     }
     write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, linear);
+    index_of_frames.forget();
     if (!shard.whole()) write_shard_marker(a.out_dir, shard);
     const double total_s = t1.seconds();
     if (per_frame_auto)
@@ -332,18 +351,20 @@ void add_relight_command(CLI::App& root) {
     add_render_options(*cmd, a->render);
     cmd->add_option("--times", a->times, "START/END/STEP, ISO 8601 (e.g. 2025-06-21T04:00Z/2025-06-21T20:00Z/PT1H)");
     cmd->add_option("--times-file", a->times_file, "A file with one ISO 8601 instant per line (# comments)");
-    cmd->add_option("-o,--out", a->out_dir, "Output directory (created if missing)")->required();
+    cmd->add_option("-o,--out", a->out_dir, "Output directory (created if missing; one series per folder)")->required();
+    cmd->add_flag("--overwrite", a->overwrite,
+                  "Replace the frame series already in --out (its frames and times.csv; other files stay)");
     cmd->add_option("--format", a->format, "Frame format: png, tif (8-bit sRGB, georeferenced for maps) or exr (linear)")
         ->capture_default_str()
         ->check(CLI::IsMember({"png", "tif", "exr"}));
     cmd->add_option("--write-queue", a->write_queue,
                     "Frames that may wait for the writer threads (they encode frame k while frame k+1 renders)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(within(1, 64));
     cmd->add_option("--writer-threads", a->writer_threads,
                     "Threads encoding and writing frames, each its own frame (frames may then land out of order)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(within(1, 64));
     add_shard_option(*cmd, a->shard);
     cmd->add_option("--mesh-path", a->mesh_path,
                     "The first --mesh follows this flight path (CSV t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg; "

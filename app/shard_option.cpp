@@ -13,7 +13,7 @@ void add_shard_option(CLI::App& cmd, std::string& text) {
 
 Shard shard_of_process(const std::string& text) {
     const Shard s = resolve_shard(text, [](const char* name) { return std::getenv(name); });
-    if (!s.whole()) std::printf("shard %s (from %s)\n", shard_text(s).c_str(), s.source.c_str());
+    if (!s.whole()) std::printf("shard %s (from %s)\n", shard_text(s).c_str(), s.source.empty() ? "--shard" : s.source.c_str());
     return s;
 }
 

@@ -12,6 +12,7 @@
 
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
+#include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/shard_option.hpp"
 #include "app/tiles_options.hpp"
@@ -25,6 +26,8 @@
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/util/temp_files.hpp"
+#include "core/raster/image_writer_registry.hpp"
 
 namespace ts::app {
 namespace {
@@ -34,6 +37,7 @@ struct TilesCommandArgs {
     TilesArgs tiles;
     std::string out;
     bool resume = false;
+    bool overwrite = false;
     std::string name, attribution;
     std::string debug_heights;  // Z/X/Y
     std::string shard;          // K/N
@@ -47,7 +51,7 @@ void write_debug_heights(const dem::Dem& dem, const tiles::TileJob& job, const s
     if (std::sscanf(zxy.c_str(), "%d/%d/%d", &t.z, &t.x, &t.y) != 3)
         throw InputError("--debug-heights " + zxy + ": give Z/X/Y");
     const tiles::TileHeights h = tiles::tile_heights(dem, job, t);
-    const std::filesystem::path dir = out.ends_with(".mbtiles") ? std::filesystem::path(out).parent_path()
+    const std::filesystem::path dir = raster::written_as(out, raster::ImageWriter::mbtiles) ? std::filesystem::path(out).parent_path()
                                                                 : std::filesystem::path(out);
     const std::string name =
         std::to_string(t.z) + "-" + std::to_string(t.x) + "-" + std::to_string(t.y) + "-heights.tif";
@@ -58,28 +62,45 @@ void write_debug_heights(const dem::Dem& dem, const tiles::TileJob& job, const s
 void run_tiles(const TilesCommandArgs& a) {
     // Every check that needs no DEM first.
     tiles::TileJob job = tile_job(a.tiles);
-    const bool mbtiles = a.out.ends_with(".mbtiles");
+    const bool mbtiles = raster::written_as(a.out, raster::ImageWriter::mbtiles);
     if (a.out.empty()) throw InputError("tiles: --out DIR or FILE.mbtiles");
+    if (a.resume && a.overwrite) throw InputError("tiles: --resume keeps the tiles, --overwrite replaces them: give one");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
     if (mbtiles) {
-        plan.output("--out", a.out, {".mbtiles"});
+        plan.output("--out", a.out, raster::tile_set_extensions());
     } else {
         std::error_code ec;
         if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
             throw input_error(a.out, "is a file; --out takes a directory (XYZ tiles) or FILE.mbtiles");
+        // `--out t.png` means a picture, not a folder of tiles named t.png: a new folder takes no
+        // file extension (an existing folder is taken as it is).
+        const std::string ext = std::filesystem::path(a.out).extension().string();
+        if (!ext.empty() && !std::filesystem::exists(a.out, ec))
+            throw InputError("--out " + a.out + ": tiles go to a folder (no file extension) or a .mbtiles file, not " +
+                             ext);
         plan.output_directory("--out", a.out);
     }
     plan.check();
     job.shard = shard_of_process(a.shard);
 
     const dem::Dem dem = load_dem_input(a.dem);
+    job.dem = tiles::dem_identity(dem);
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
     }
-    if (tiles::uses_visibility(job.shading.style)) choose_tile_directions(a.tiles, dem, job);
+    if (job.shading.style->uses_visibility()) choose_tile_directions(a.tiles, dem, job);
     const std::vector<tiles::TileId> tile_plan = tiles::plan_tiles(dem, job);
+    if (a.tiles.verbose) {
+        std::printf("sun: azimuth %.2f deg, elevation %.2f deg\n", job.shading.sun_azimuth_deg, job.shading.sun_elevation_deg);
+        for (int z = job.z0; z <= job.z1; ++z) {
+            const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, z + tiles::tile_size_shift(job.tile_size));
+            std::printf("zoom %d: DEM level %d (1 in %d texels a side), heights x %.3g, %d directions\n", z, zs.level,
+                        1 << zs.level, zs.vertical_scale, tiles::shading_of_zoom(job, z).directions);
+        }
+        std::fflush(stdout);
+    }
     if (tile_plan.empty() && job.shard.whole())
         throw input_error(dem.source, "covers no Web Mercator tile (it lies beyond +-85.05 deg latitude?)");
 
@@ -87,14 +108,14 @@ void run_tiles(const TilesCommandArgs& a) {
     const std::string job_text = tiles::describe_job(job);
     std::unique_ptr<tiles::TileSink> sink;
     if (mbtiles) {
-        const tiles::LonLatBox box = tiles::dem_footprint(dem.georef);
+        const tiles::LonLatBox box = tiles::terrain_footprint(dem);  // the terrain, not a nodata collar
         char bounds[128], center[128];
         std::snprintf(bounds, sizeof bounds, "%.7f,%.7f,%.7f,%.7f", box.west, box.south, box.east, box.north);
         std::snprintf(center, sizeof center, "%.7f,%.7f,%d", 0.5 * (box.west + box.east), 0.5 * (box.south + box.north),
                       (job.z0 + job.z1) / 2);
         const std::string stem = std::filesystem::path(a.dem.files.front()).stem().string();
         std::map<std::string, std::string> metadata = {
-            {"name", a.name.empty() ? stem + " " + std::string(tiles::tile_style_name(job.shading.style)) : a.name},
+            {"name", a.name.empty() ? stem + " " + std::string(job.shading.style->name()) : a.name},
             {"format", "png"},
             {"bounds", bounds},
             {"center", center},
@@ -103,14 +124,30 @@ void run_tiles(const TilesCommandArgs& a) {
             {"attribution", a.attribution.empty() ? "terrashade; elevation: " + stem : a.attribution},
             {"type", "baselayer"},
             {"version", "1"},
-            {"description", "terrashade " + std::string(tiles::tile_style_name(job.shading.style)) + ", " +
+            {"description", "terrashade " + std::string(job.shading.style->name()) + ", " +
                                 std::to_string(job.tile_size) + "-px tiles"},
         };
         if (!job.shard.whole()) metadata["terrashade_shard"] = shard_text(job.shard);
-        sink = std::make_unique<tiles::MbtilesFile>(a.out, std::move(metadata), job_text, a.resume);
+        using E = tiles::MbtilesFile::Existing;
+        sink = std::make_unique<tiles::MbtilesFile>(a.out, std::move(metadata), job_text,
+                                                    a.resume ? E::resume : a.overwrite ? E::overwrite : E::refuse);
+        // An interrupt keeps the committed tiles (FILE.partial and its -wal log) for --resume;
+        // the -shm index is rebuilt by the next open, so it goes.
+        const std::string partial = tiles::MbtilesFile::partial_path(a.out).string();
+        temp_files::track(partial + "-shm");
+        interrupt::report_kept("the tiles made so far are kept in " + partial + " (and its -wal) for --resume; " +
+                               "delete them to drop them");
     } else {
-        sink = std::make_unique<tiles::XyzDirectory>(a.out, job_text, a.resume, job.z0, job.z1);
+        using E = tiles::XyzDirectory::Existing;
+        // A folder made here is known to the interrupt before it exists: one before the first
+        // tile removes it (with its job file) instead of leaving it behind.
+        std::error_code ec;
+        if (!std::filesystem::exists(a.out, ec)) temp_files::track_created_directory(a.out, tiles::XyzDirectory::kJobFile);
+        sink = std::make_unique<tiles::XyzDirectory>(a.out, job_text,
+                                                     a.resume ? E::resume : a.overwrite ? E::overwrite : E::refuse,
+                                                     job.z0, job.z1);
         remove_shard_marker(a.out);
+        interrupt::report_kept("any tiles written stay in " + a.out + " for --resume");
     }
 
     const Stopwatch watch;
@@ -125,7 +162,7 @@ void run_tiles(const TilesCommandArgs& a) {
     const std::size_t made = stats.written + stats.empty;
     std::printf("tiles: %zu written, %zu resumed, %zu without data (zoom %d-%d, %d px, %s)\n", stats.written,
                 stats.resumed, stats.empty, job.z0, job.z1, job.tile_size,
-                std::string(tiles::tile_style_name(job.shading.style)).c_str());
+                std::string(job.shading.style->name()).c_str());
     std::printf("time: %.3f s (shading %.3f s, tiles %.3f s: %.0f tiles/s)\n", total, stats.source_seconds,
                 stats.tile_seconds, stats.tile_seconds > 0 ? made / stats.tile_seconds : 0.0);
     // --max-error: what each level shaded in blocks chose per block.
@@ -155,6 +192,8 @@ void add_tiles_command(CLI::App& root) {
     cmd->add_option("-o,--out", a->out, "Output: a directory (XYZ tiles DIR/z/x/y.png) or FILE.mbtiles")->required();
     cmd->add_flag("--resume", a->resume,
                   "Continue an interrupted run with the same options: finished tiles are kept, the rest made");
+    cmd->add_flag("--overwrite", a->overwrite,
+                  "Replace the tiles of another job in --out (only those: other files in the folder stay)");
     add_shard_option(*cmd, a->shard);
     cmd->add_option("--name", a->name, "MBTiles metadata name (default: the DEM file's name and the style)");
     cmd->add_option("--attribution", a->attribution, "MBTiles metadata attribution");

@@ -1,5 +1,12 @@
 #include "app/tiles_options.hpp"
 
+#include "app/options/directions_option.hpp"
+#include "app/options/max_error_option.hpp"
+#include "app/options/sky_option.hpp"
+#include "app/options/sun_options.hpp"
+#include "app/options/threads_option.hpp"
+#include "app/options/verbose_option.hpp"
+
 #include <charconv>
 #include <cstdio>
 #include <map>
@@ -36,24 +43,16 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
     cmd.add_option("--tile-size", a.tile_size, "Tile size in pixels: 256 or 512 (a 512-px tile at z shows the "
                                                "pixels of four 256-px tiles at z+1)")
         ->capture_default_str();
-    cmd.add_option("--style", a.style, "relief | hillshade | multidirectional | svf | color (docs/tiles.md)")
+    cmd.add_option("--style", a.style, tiles::tile_style_names(" | ") + " (docs/tiles.md)")
         ->capture_default_str();
-    cmd.add_option("--time", a.time, "Sun for this UTC instant (ISO 8601 with a zone) at the DEM's centre, instead "
-                                     "of --sun-azimuth/--sun-elevation");
-    cmd.add_option("--sun-azimuth", a.sun_azimuth, "Light azimuth, degrees clockwise from north (default 315)");
-    cmd.add_option("--sun-elevation", a.sun_elevation, "Light elevation, degrees (default 45)");
-    cmd.add_option("--sky", a.sky, "relief/color: the sky (as render --sky: clear[:turbidity=T] | overcast | ...)")
-        ->capture_default_str();
+    add_sun_options(cmd, a.time, a.sun_azimuth, a.sun_elevation);  // neither: azimuth 315, elevation 45
+    add_sky_option(cmd, a.sky);  // relief and color
     cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
     cmd.add_option("--exaggeration", a.exaggeration,
                    "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
         ->capture_default_str();
-    cmd.add_option("--directions", a.directions, "relief/svf/color: horizon azimuths of the visibility")
-        ->capture_default_str()
-        ->each([&a](const std::string&) { a.directions_given = true; });
-    cmd.add_option("--max-error", a.max_error,
-                   "relief/color: adaptive quality: each zoom's --directions, the cheapest predicted to keep the "
-                   "relative radiance error under E for that zoom's terrain and the sun, e.g. 0.05 (docs/accuracy.md)");
+    add_directions_option(cmd, a.directions, &a.directions_given);  // relief, svf, color
+    add_max_error_option(cmd, a.max_error);                          // relief, color: per zoom
     cmd.add_option("--block-texels", a.block_texels,
                    "relief/svf/color: levels larger than this many texels a side are shaded in blocks of it, "
                    "bounding memory (0 = whole levels; docs/tiles.md)")
@@ -78,7 +77,8 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "relief/svf/color in blocks: the sky's terrain beyond the halo, exact (the whole level swept per "
                    "block: slow) or marched over coarser levels: fast, balanced, fine, finest")
         ->capture_default_str();
-    cmd.add_option("--threads", a.threads, "Worker threads (0 = one per core)")->capture_default_str()->check(CLI::Range(0, 256));
+    add_threads_option(cmd, a.threads);
+    add_verbose_flag(cmd, a.verbose);
 }
 
 tiles::TileJob tile_job(const TilesArgs& a) {
@@ -86,7 +86,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     if (!a.zoom.empty()) parse_zoom_range(a.zoom, job.z0, job.z1);
     job.tile_size = a.tile_size;
     tiles::TileShading& s = job.shading;
-    s.style = tiles::parse_tile_style(a.style);
+    s.style = &tiles::parse_tile_style(a.style);
     const bool by_angles = a.sun_azimuth || a.sun_elevation;
     if (!a.time.empty() && by_angles) throw InputError("tiles: give --time or --sun-azimuth/--sun-elevation, not both");
     if (!a.time.empty()) light::parse_utc_time(a.time);  // a malformed time fails before any work
@@ -102,10 +102,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
         s.exaggeration = e;
     }
     if (a.max_error) {
-        if (!(*a.max_error > 0))
-            throw InputError("--max-error must be > 0 (a relative radiance error, e.g. 0.05 for 5%)");
-        if (a.directions_given) throw InputError("--max-error chooses --directions itself; drop one of them");
-        if (s.style != tiles::TileStyle::relief && s.style != tiles::TileStyle::color)
+        check_max_error(a.max_error, a.directions_given ? "--directions" : "");
+        if (!s.style->takes_max_error())
             throw InputError("--max-error bounds the radiance of --style relief or color, not " + a.style);
     }
     s.directions = a.directions;
@@ -145,8 +143,9 @@ void choose_tile_directions(const TilesArgs& a, const dem::Dem& dem, tiles::Tile
         else groups.push_back({z, z, c});
     }
     for (const Group& g : groups) {
-        if (g.z0 == g.z1) std::printf("zoom %d: %s\n", g.z0, g.choice.reason.c_str());
-        else std::printf("zooms %d-%d: %s\n", g.z0, g.z1, g.choice.reason.c_str());
+        const std::string line = max_error_line(g.choice.reason);
+        if (g.z0 == g.z1) std::printf("zoom %d: %s\n", g.z0, line.c_str());
+        else std::printf("zooms %d-%d: %s\n", g.z0, g.z1, line.c_str());
     }
     std::fflush(stdout);
 }

@@ -28,6 +28,7 @@ struct TilesArgs {
     double relief_contrast = 1.0;
     int level_bias = 0;
     int threads = 0;
+    bool verbose = false;  // -v: what each zoom was shaded from
     // --max-error E: each zoom's --directions chosen for a relative radiance error E
     // (core/quality/radiance_quality.hpp); --directions given too conflicts.
     std::optional<double> max_error;

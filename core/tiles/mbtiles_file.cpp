@@ -4,8 +4,10 @@
 
 #include <chrono>
 #include <system_error>
+#include <vector>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::tiles {
 namespace fs = std::filesystem;
@@ -25,14 +27,61 @@ void remove_with_journal(const fs::path& p) {
 
 fs::path MbtilesFile::partial_path(const fs::path& file) { return file.string() + ".partial"; }
 
+namespace {
+
+// Whether an SQLite file has a row in `tiles` (false if it cannot be read or has no such table).
+bool holds_tiles(const fs::path& file) {
+    sqlite3* db = nullptr;
+    bool any = false;
+    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX, nullptr) == SQLITE_OK) {
+        sqlite3_stmt* q = nullptr;
+        sqlite3_prepare_v2(db, "SELECT 1 FROM tiles LIMIT 1", -1, &q, nullptr);
+        any = q && sqlite3_step(q) == SQLITE_ROW;
+        sqlite3_finalize(q);
+    }
+    sqlite3_close(db);
+    return any;
+}
+
+}  // namespace
+
+std::optional<std::string> MbtilesFile::job_of(const fs::path& file) {
+    sqlite3* db = nullptr;
+    std::optional<std::string> job;
+    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX, nullptr) == SQLITE_OK) {
+        sqlite3_stmt* q = nullptr;
+        sqlite3_prepare_v2(db, "SELECT value FROM metadata WHERE name = 'terrashade_job'", -1, &q, nullptr);
+        if (q && sqlite3_step(q) == SQLITE_ROW)
+            if (const auto* text = sqlite3_column_text(q, 0)) job = reinterpret_cast<const char*>(text);
+        sqlite3_finalize(q);
+    }
+    sqlite3_close(db);
+    return job;
+}
+
 MbtilesFile::MbtilesFile(fs::path file, std::map<std::string, std::string> metadata, const std::string& job,
-                         bool resume)
+                         Existing existing)
     : file_(std::move(file)), partial_(partial_path(file_)), metadata_(std::move(metadata)) {
     metadata_["terrashade_job"] = job;
     const fs::path dir = file_.parent_path().empty() ? fs::path(".") : file_.parent_path();
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) throw input_error(file_.string(), "output directory does not exist");
     if (fs::is_directory(file_, ec)) throw input_error(file_.string(), "is a directory, expected an .mbtiles file");
+    // One job per output, decided before anything is written.
+    const bool resume = existing == Existing::resume;
+    // --resume continues FILE.partial, else adds to FILE: that one must hold this job. A new run
+    // replaces both.
+    std::vector<fs::path> checked = {partial_, file_};
+    if (resume) checked = {fs::exists(partial_, ec) ? partial_ : file_};
+    for (const fs::path& p : checked) {
+        if (!fs::exists(p, ec) || job_of(p) == job) continue;
+        // FILE.partial of a run killed before its first commit: ours, and nothing in it.
+        if (p == partial_ && !job_of(p) && !holds_tiles(p)) continue;
+        const std::string holds = fs::exists(p, ec) && job_of(p) ? "holds tiles of another job (other options)"
+                                                                  : "holds no terrashade tile job that can be read";
+        if (resume) throw OccupiedOutputError({p.string(), holds, true, "it", "file"});
+        if (existing == Existing::refuse) throw OccupiedOutputError({p.string(), holds, false, "it", "file"});
+    }
     if (!resume) remove_with_journal(partial_);
     if (resume && !fs::exists(partial_) && fs::exists(file_)) {
         // Add to a finished file through a copy: FILE stays whole until the rename.
@@ -67,7 +116,7 @@ MbtilesFile::MbtilesFile(fs::path file, std::map<std::string, std::string> metad
             sqlite3_finalize(q);
             if (found && previous != job)
                 throw input_error(file_.string(),
-                                  "--resume: these tiles were made with other options; use them again or drop --resume");
+                                  "these tiles were made with other options; use them again or start afresh instead of resuming");
         }
         {
             sqlite3_stmt* q = nullptr;

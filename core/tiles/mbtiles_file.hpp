@@ -8,10 +8,15 @@
 // FILE is never half-overwritten. A run killed at any moment leaves FILE.partial with whole
 // committed batches; --resume reopens it (or copies a finished FILE to it to add tiles) and
 // redoes only the tiles not committed. The metadata row `terrashade_job` records the job.
+//
+// One job per output: FILE or FILE.partial that holds another job (or none that can be read)
+// is refused unless the caller allows replacing it (FILE is then replaced only when the new
+// file is complete); --resume continues only a FILE.partial (or FILE) of the same job.
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -27,14 +32,17 @@ class MbtilesFile final : public TileSink {
 public:
     // `metadata`: name -> value, written at creation (and again by finish). Throws
     // ts::InputError when FILE cannot be written, or with `resume` when the job differs.
+    enum class Existing { refuse, resume, overwrite };
     MbtilesFile(std::filesystem::path file, std::map<std::string, std::string> metadata, const std::string& job,
-                bool resume);
+                Existing existing);
     ~MbtilesFile() override;
     bool has(const TileId& t) const override;
     void put(const TileId& t, std::vector<std::uint8_t> png) override;
     void finish() override;
 
     static std::filesystem::path partial_path(const std::filesystem::path& file);
+    // The `terrashade_job` of an MBTiles file; nullopt if it has none or cannot be read.
+    static std::optional<std::string> job_of(const std::filesystem::path& file);
     // Tiles per committed batch (also committed after kBatchSeconds).
     static constexpr int kBatchTiles = 64;
     static constexpr double kBatchSeconds = 1.0;

@@ -17,6 +17,7 @@
 #include "core/tiles/tile_shard.hpp"
 #include "core/tiles/zoom_exaggeration.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
@@ -37,29 +38,29 @@ std::string number(double v) {
 
 void check_tile_job(const TileJob& job) {
     if (job.z0 < 0 || job.z1 > kMaxZoom || job.z0 > kMaxZoom || job.z1 < 0)
-        throw InputError("--zoom: zooms are 0.." + std::to_string(kMaxZoom));
-    if (job.z1 < job.z0) throw InputError("--zoom Z0-Z1: Z1 must not be below Z0");
-    if (job.tile_size != 256 && job.tile_size != 512) throw InputError("--tile-size: 256 or 512");
+        throw QuantityError(Quantity::zoom, "", "zooms are 0.." + std::to_string(kMaxZoom));
+    if (job.z1 < job.z0) throw QuantityError(Quantity::zoom, "Z0-Z1", "Z1 must not be below Z0");
+    if (job.tile_size != 256 && job.tile_size != 512) throw QuantityError(Quantity::tile_size, "", "256 or 512");
     if (job.z1 + tile_size_shift(job.tile_size) > kMaxZoom + 1)
-        throw InputError("--zoom: 512-px tiles go to zoom " + std::to_string(kMaxZoom - 1));
+        throw QuantityError(Quantity::zoom, "", "512-px tiles go to zoom " + std::to_string(kMaxZoom - 1));
     const TileShading& s = job.shading;
-    if (!(s.z_factor > 0) || !std::isfinite(s.z_factor)) throw InputError("--z-factor: must be a finite number > 0");
+    if (!(s.z_factor > 0) || !std::isfinite(s.z_factor)) throw QuantityError(Quantity::z_factor, "", "must be a finite number > 0");
     if (s.exaggeration && (!(*s.exaggeration > 0) || !std::isfinite(*s.exaggeration)))
-        throw InputError("--exaggeration: must be a finite number > 0");
-    if (!(s.sun_elevation_deg >= -90 && s.sun_elevation_deg <= 90)) throw InputError("--sun-elevation: -90..90 degrees");
-    if (!std::isfinite(s.sun_azimuth_deg)) throw InputError("--sun-azimuth: a number of degrees");
-    if (s.directions < 4) throw InputError("--directions: at least 4");
-    if (s.block_texels != 0 && s.block_texels < 64) throw InputError("--block-texels: 0 (never) or at least 64");
-    if (s.block_halo_texels < 1) throw InputError("--block-halo: at least 1 texel");
-    if (job.level_bias < -4 || job.level_bias > 4) throw InputError("--level-bias: -4..4 levels");
+        throw QuantityError(Quantity::exaggeration, "", "must be a finite number > 0");
+    if (!(s.sun_elevation_deg >= -90 && s.sun_elevation_deg <= 90)) throw QuantityError(Quantity::sun_elevation, "", "-90..90 degrees");
+    if (!(s.sun_azimuth_deg >= 0 && s.sun_azimuth_deg <= 360)) throw QuantityError(Quantity::sun_azimuth, "", "0..360 degrees");
+    if (s.directions < 4) throw QuantityError(Quantity::directions, "", "at least 4");
+    if (s.block_texels != 0 && s.block_texels < 64) throw QuantityError(Quantity::block_texels, "", "0 (never) or at least 64");
+    if (s.block_halo_texels < 1) throw QuantityError(Quantity::block_halo, "", "at least 1 texel");
+    if (job.level_bias < -4 || job.level_bias > 4) throw QuantityError(Quantity::level_bias, "", "-4..4 levels");
     if (!(s.relief_contrast >= 0.25 && s.relief_contrast <= 4))
-        throw InputError("--relief-contrast: a number from 0.25 to 4 (1 = the physical shading)");
-    if (s.relief_contrast != 1.0 && s.style != TileStyle::relief)
-        throw InputError("--relief-contrast: only --style relief has it");
+        throw QuantityError(Quantity::relief_contrast, "", "a number from 0.25 to 4 (1 = the physical shading)");
+    if (s.relief_contrast != 1.0 && !s.style->takes_relief_contrast())
+        throw QuantityError(Quantity::relief_contrast, "", "only the relief style has it");
 }
 
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job) {
-    return shard_tiles(tiles_covering(dem_footprint(dem.georef), job.z0, job.z1), job.shard);
+    return shard_tiles(tiles_covering(terrain_footprint(dem), job.z0, job.z1), job.shard);
 }
 
 std::string describe_job(const TileJob& job) {
@@ -72,8 +73,9 @@ std::string describe_job(const TileJob& job) {
     const std::string contrast = s.relief_contrast != 1.0 ? ",\"relief_contrast\":" + number(s.relief_contrast) : "";
     const std::string bias = job.level_bias != 0 ? ",\"level_bias\":" + std::to_string(job.level_bias) : "";
     const std::string max_error = s.max_error > 0 ? ",\"block_max_error\":" + number(s.max_error) : "";
+    const std::string dem = job.dem.empty() ? "" : ",\"dem\":\"" + job.dem + "\"";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
-    return std::string("{\"style\":\"") + std::string(tile_style_name(s.style)) + "\",\"tile_size\":" +
+    return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
            ",\"sun_elevation\":" + number(s.sun_elevation_deg) + ",\"z_factor\":" + number(s.z_factor) +
            ",\"exaggeration\":" + (s.exaggeration ? number(*s.exaggeration) : std::string("\"auto-native\"")) +
@@ -81,7 +83,15 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + max_error + "}\n";
+           by_zoom + max_error + dem + "}\n";
+}
+
+std::string dem_identity(const dem::Dem& dem) {
+    const LonLatBox b = dem_footprint(dem.georef);
+    char text[160];
+    std::snprintf(text, sizeof text, "%dx%d %.9f,%.9f,%.9f,%.9f", dem.width, dem.height, b.west, b.south, b.east,
+                  b.north);
+    return text;
 }
 
 TileShading shading_of_zoom(const TileJob& job, int z) {
@@ -117,7 +127,7 @@ TileHeights tile_heights(const dem::Dem& dem, const TileJob& job, const TileId& 
     const TileFrame f = tile_frame(t, job.tile_size);
     const ZoomShading zs = zoom_shading(dem, job, f.pixel_zoom);
     TileShading heights_only = job.shading;
-    heights_only.style = TileStyle::hillshade;
+    heights_only.style = find_tile_style("hillshade");  // a style shaded from heights
     const ShadeSource source = make_shade_source(dem, heights_only, zs.level, zs.vertical_scale);
     TileScratch scratch;
     sample_tile_heights(TilePixelMap(dem), source, f, scratch);

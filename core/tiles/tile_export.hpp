@@ -34,6 +34,9 @@ struct TileJob {
     // aliases). Clamped to the DEM's levels.
     int level_bias = 0;
     Shard shard;  // this process's part of the tile set (core/tiles/tile_shard.hpp); not in describe_job
+    // The DEM the tiles show (its size and footprint: dem_identity), so that tiles of another
+    // DEM are another job; in describe_job when set.
+    std::string dem;
 };
 
 struct TileExportStats {
@@ -55,6 +58,8 @@ void check_tile_job(const TileJob& job);
 // The tiles to make (of job.shard), in order, and the description of the job that --resume compares.
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job);
 std::string describe_job(const TileJob& job);
+// "WxH west,south,east,north": equal for the same DEM (and its shards' runs), different for another.
+std::string dem_identity(const dem::Dem& dem);
 
 // The DEM level and vertical scale a pixel zoom is shaded with.
 struct ZoomShading {

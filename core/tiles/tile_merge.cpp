@@ -149,7 +149,7 @@ MergeStats merge_mbtiles(const std::vector<fs::path>& shards, const fs::path& ou
     stats.shards = shards.size();
     try {
         {
-            MbtilesFile sink(tmp, metadata, job_text, false);
+            MbtilesFile sink(tmp, metadata, job_text, MbtilesFile::Existing::refuse);
             SeenTiles seen;
             for (std::size_t i = 0; i < readers.size(); ++i)
                 readers[i]->for_each_tile([&](const TileId& t, std::span<const std::uint8_t> png) {

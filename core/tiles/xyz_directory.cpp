@@ -1,12 +1,16 @@
 #include "core/tiles/xyz_directory.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
+#include "core/util/shard_marker.hpp"
 
 namespace ts::tiles {
 namespace fs = std::filesystem;
@@ -35,17 +39,52 @@ bool is_temporary(const fs::path& p) {
     return name.size() > 1 && name[0] == '.' && name.find(".tmp-") != std::string::npos;
 }
 
+bool is_number(const std::string& s) {
+    return !s.empty() && s.size() < 10 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The files a tile job made in DIR, and only those: Z/X/Y.png tiles and their temporaries, the
+// Z and X folders left empty, the shard marker, then the job file (last: until it goes, the
+// tiles still left are its job's). A user's other files stay, and so do the folders holding them.
+void remove_tile_job(const fs::path& dir) {
+    std::error_code ec;
+    for (const auto& zdir : fs::directory_iterator(dir, ec)) {
+        if (!zdir.is_directory(ec) || !is_number(zdir.path().filename().string())) continue;
+        for (const auto& xdir : fs::directory_iterator(zdir.path(), ec)) {
+            if (!xdir.is_directory(ec) || !is_number(xdir.path().filename().string())) continue;
+            for (const auto& f : fs::directory_iterator(xdir.path(), ec)) {
+                const fs::path& p = f.path();
+                const bool tile = p.extension() == ".png" && is_number(p.stem().string()) && f.is_regular_file(ec);
+                if (tile || is_temporary(p)) fs::remove(p, ec);
+            }
+            fs::remove(xdir.path(), ec);  // only if empty
+        }
+        fs::remove(zdir.path(), ec);
+    }
+    fs::remove(dir / kShardMarkerFile, ec);
+    fs::remove(dir / XyzDirectory::kJobFile, ec);
+}
+
 }  // namespace
 
-XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, bool resume, int z0, int z1) : dir_(std::move(dir)) {
+XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, Existing existing, int z0, int z1)
+    : dir_(std::move(dir)) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (!fs::is_directory(dir_)) throw input_error(dir_.string(), "cannot create the output directory");
     const fs::path job_file = dir_ / kJobFile;
-    if (resume && fs::exists(job_file)) {
-        if (read_text(job_file) != job)
-            throw input_error(dir_.string(), "--resume: these tiles were made with other options (" +
-                                                 job_file.string() + "); use them again or drop --resume");
+    const bool empty = fs::is_empty(dir_, ec);
+    const bool same_job = fs::is_regular_file(job_file, ec) && read_text(job_file) == job;
+    if (!empty && !same_job) {
+        const bool has_job = fs::exists(job_file, ec);
+        const std::string holds = has_job ? "holds tiles of another job (other options, " + std::string(kJobFile) + ")"
+                                          : "is not empty and holds no terrashade tile job";
+        if (existing == Existing::resume) throw OccupiedOutputError({dir_.string(), holds, true, "it", "folder"});
+        if (existing == Existing::refuse) throw OccupiedOutputError({dir_.string(), holds, false, "its tiles", "folder"});
+        remove_tile_job(dir_);
+    }
+    if (same_job) {
+        // A killed run's temporaries (this job's: the folder is this job's).
         for (int z = z0; z <= z1; ++z) {
             const fs::path zdir = dir_ / std::to_string(z);
             if (!fs::is_directory(zdir, ec)) continue;
@@ -56,7 +95,8 @@ XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, bool resume, in
     }
     // Also the writability probe: an unwritable DIR fails here, before any shading.
     try {
-        write_bytes(job_file, job.data(), job.size());
+        if (!same_job) write_bytes(job_file, job.data(), job.size());
+        else if (::access(dir_.c_str(), W_OK | X_OK) != 0) throw InputError("not writable");
     } catch (const InputError&) {
         throw input_error(dir_.string(), "the output directory is not writable");
     }

@@ -20,7 +20,7 @@ namespace ts {
 struct Shard {
     int index = 0;  // K
     int count = 1;  // N
-    std::string source = "--shard";  // what set it, for messages
+    std::string source;  // the environment variable that set it (empty: the command line), for messages
     bool whole() const { return count == 1; }
     friend bool operator==(const Shard& a, const Shard& b) { return a.index == b.index && a.count == b.count; }
 };
@@ -29,8 +29,9 @@ struct Shard {
 // a big array may be made of several arrays).
 inline constexpr int kMaxShards = 1000000;
 
-// "K/N" with 0 <= K < N <= kMaxShards; ts::InputError (one line, naming `flag`) otherwise.
-Shard parse_shard(std::string_view text, std::string_view flag = "--shard");
+// "K/N" with 0 <= K < N <= kMaxShards; ts::QuantityError (Quantity::shard) otherwise, or, when
+// the text comes from a file, ts::InputError naming `source` (e.g. "FILE:").
+Shard parse_shard(std::string_view text, std::string_view source = {});
 
 // The shard from the environment as described above, nullopt if none is set; ts::InputError
 // on a partial or inconsistent set (a task id without a count, an index >= the count).

@@ -23,6 +23,7 @@ struct Registry {
     std::mutex mutex;
     std::vector<fs::path> tracked;
     std::vector<fs::path> directories;
+    std::vector<std::pair<fs::path, std::string>> created;  // (folder, its own file)
     std::atomic<std::uint64_t> committed{0};
 };
 
@@ -75,6 +76,12 @@ void forget_directory(const fs::path& dir) {
     if (it != r.directories.end()) r.directories.erase(it);
 }
 
+void track_created_directory(const fs::path& dir, const std::string& own_file) {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    r.created.emplace_back(dir, own_file);
+}
+
 void commit(std::span<const std::pair<fs::path, fs::path>> moves) {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
@@ -118,6 +125,19 @@ std::size_t remove_held() {
         }
         ::close(fd);
         ::rmdir(dir.c_str());
+    }
+    // Created output folders with nothing of value in them (after their temporaries went above).
+    for (const auto& entry : registry().created) {
+        // Named apart, not a structured binding: clang 14 (the fuzz build) cannot capture one.
+        const auto& dir = entry.first;
+        const auto& own = entry.second;
+        const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd < 0) continue;
+        bool others = false;
+        for_each_directory_entry(fd, [&](const char* name) { others = others || own.empty() || own != name; });
+        if (!others && !own.empty()) ::unlinkat(fd, own.c_str(), 0);
+        ::close(fd);
+        ::rmdir(dir.c_str());  // fails, as it should, if anything is left
     }
     return removed;
 }

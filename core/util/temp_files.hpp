@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <utility>
 
 namespace ts::temp_files {
@@ -25,6 +26,11 @@ void forget(const std::filesystem::path& tmp);
 // directory itself are removed. forget_directory() once the command removed it.
 void track_directory(const std::filesystem::path& dir);
 void forget_directory(const std::filesystem::path& dir);
+
+// An output folder this command created: on an interrupt it is removed if it holds nothing but
+// `own_file` (a job description the command wrote first, removed with it; empty: none), so an
+// interrupt before the first output leaves no empty folder behind. A folder with outputs stays.
+void track_created_directory(const std::filesystem::path& dir, const std::string& own_file = "");
 
 // Renames each (tmp, target) pair in order and forgets the tmps, in one step as an interrupt
 // sees it. On a failed rename, the remaining tmps are removed and forgotten too, and

@@ -9,24 +9,12 @@
 
 #include <gtest/gtest.h>
 
-#include "cli_support.hpp"
+#include "tests/cli/reliability_support.hpp"
 
 namespace ts::cli_test {
 namespace {
 namespace fs = std::filesystem;
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";  // 101 x 101 texels
-const std::string kSun = " --sun-azimuth 135 --sun-elevation 30";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // Hidden files are what write_atomically and StagedOutputs name their temporaries.
 int hidden_files(const fs::path& dir) {

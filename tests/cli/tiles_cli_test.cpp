@@ -30,8 +30,10 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/mbtiles_probe.hpp"
 
 namespace fs = std::filesystem;
+using ts::cli_test::committed_tiles;
 using ts::cli_test::quote;
 using ts::cli_test::run;
 using ts::cli_test::temp_dir;
@@ -139,23 +141,6 @@ std::map<std::string, std::uint64_t> mbtiles_hashes(const fs::path& file) {
     sqlite3_finalize(q);
     sqlite3_close(db);
     return out;
-}
-
-// Tiles a concurrent reader sees committed in an MBTiles file being written (0 if it cannot open it).
-std::size_t committed_tiles(const std::string& file) {
-    if (!fs::exists(file)) return 0;
-    sqlite3* db = nullptr;
-    std::size_t n = 0;
-    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
-        sqlite3_busy_timeout(db, 100);
-        sqlite3_stmt* q = nullptr;
-        if (sqlite3_prepare_v2(db, "SELECT count(*) FROM tiles", -1, &q, nullptr) == SQLITE_OK &&
-            sqlite3_step(q) == SQLITE_ROW)
-            n = std::size_t(sqlite3_column_int64(q, 0));
-        sqlite3_finalize(q);
-    }
-    sqlite3_close(db);
-    return n;
 }
 
 std::string tiles_cmd(const std::string& dem, const std::string& args, const fs::path& out) {
@@ -438,8 +423,8 @@ TEST(TilesCli, AnExistingMbtilesIsNotTouchedUntilTheNewOneIsWhole) {
     const fs::path file = d / "t.mbtiles";
     ASSERT_EQ(run(tiles_cmd(kGrenoble, "--zoom 8 --style hillshade", file)).exit_code, 0);
     const std::string before = read_bytes(file);
-    const pid_t pid = spawn({terrashade(), "tiles", kAnatolia, "--zoom", "9-12", "--style", "hillshade", "--out",
-                             file.string()});
+    const pid_t pid = spawn({terrashade(), "tiles", kAnatolia, "--zoom", "9-12", "--style", "hillshade", "--overwrite",
+                             "--out", file.string()});
     const auto start = std::chrono::steady_clock::now();
     while (file_size_or_zero(file.string() + ".partial-wal") < 1'000'000 &&
            std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
@@ -467,7 +452,7 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
         {"--zoom 8 --resampling lanczos", "--resampling"},
         {"--zoom 8 --relief-contrast 9", "--relief-contrast"},
         {"--zoom 8 --relief-contrast 0", "--relief-contrast"},
-        {"--zoom 8 --style hillshade --relief-contrast 1.5", "only --style relief"},
+        {"--zoom 8 --style hillshade --relief-contrast 1.5", "--relief-contrast: only the relief style has it"},
         {"--zoom 8 --level-bias 5", "--level-bias"},
         {"--zoom 8 --level-bias x", "--level-bias"},
         {"--zoom 8 --z-factor 0", "--z-factor"},

@@ -48,7 +48,7 @@ std::vector<TileId> all_tiles() {
 void write_mbtiles(const fs::path& file, const std::vector<TileId>& tiles, const std::string& shard, int salt = 0,
                    std::map<std::string, std::string> metadata = kMetadata) {
     if (!shard.empty()) metadata["terrashade_shard"] = shard;
-    ts::tiles::MbtilesFile f(file, metadata, kJob, false);
+    ts::tiles::MbtilesFile f(file, metadata, kJob, ts::tiles::MbtilesFile::Existing::refuse);
     for (const TileId& t : tiles) f.put(t, bytes_of(t, salt));
     f.finish();
 }
@@ -124,7 +124,7 @@ TEST(TileMerge, MbtilesRefusesMissingConflictingAndForeignShards) {
 }
 
 void write_xyz(const fs::path& dir, const std::vector<TileId>& tiles, const ts::Shard* shard, int salt = 0) {
-    ts::tiles::XyzDirectory x(dir, kJob, false, 0, 3);
+    ts::tiles::XyzDirectory x(dir, kJob, ts::tiles::XyzDirectory::Existing::refuse, 0, 3);
     for (const TileId& t : tiles) x.put(t, bytes_of(t, salt));
     if (shard) ts::write_shard_marker(dir, *shard);
 }

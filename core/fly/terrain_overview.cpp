@@ -212,6 +212,9 @@ TerrainOverview build_terrain_overview(const dem::DemSource& source, const Terra
     out.points.vertical_datum = layout.vertical_datum;
     out.points.source = layout.source;
     dem::fill_voids(out.points);
+    // What stays NaN is outside the terrain (a reprojection's collar, a hole too wide to fill):
+    // the mesh needs a height, so it is drawn as a flat floor at the lowest height (docs/terrain.md).
+    dem::floor_outside(out.points);
 
     out.far_mean = std::move(far_rows);
     // The level's row spacing as the far field's coarse copy sums it.

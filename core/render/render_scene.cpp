@@ -12,26 +12,35 @@
 #include "core/raster/raster_writer.hpp"
 #include "core/material/material_sources.hpp"
 #include "core/render/open_sky_fraction.hpp"
+#include "core/raster/image_writer_registry.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/terrain/dem_height_grid.hpp"
+#include "core/terrain/outside_terrain.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::render {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
+// The joined list of the picture extensions, for the message of an unknown one.
+std::string picture_extensions_text() {
+    const std::vector<std::string> exts = raster::picture_extensions();
+    std::string text;
+    for (std::size_t i = 0; i < exts.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == exts.size() ? " or " : ", ") + exts[i];
+    return text;
 }
 
 }  // namespace
 
 geo::Georef extent_georef(const ExtentRequest& e, const geo::Georef& dem_georef) {
     if (!(e.x1 > e.x0 && e.y1 > e.y0) || !std::isfinite(e.x0 + e.x1 + e.y0 + e.y1))
-        throw InputError("--extent: give XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
-    if (e.width < 1 || e.height < 1) throw InputError("--extent: the picture needs at least 1x1 pixels");
+        throw QuantityError(Quantity::extent, "", "give XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
+    if (e.width < 1 || e.height < 1) throw QuantityError(Quantity::extent, "", "the picture needs at least 1x1 pixels");
     const std::shared_ptr<const geo::Crs> crs = e.crs.empty() ? dem_georef.crs_ptr() : geo::Crs::from_definition(e.crs);
+    if (crs->is_geographic() && (e.y0 < -90 || e.y1 > 90 || e.x0 < -360 || e.x1 > 360))
+        throw QuantityError(Quantity::extent, "", "latitudes must be within -90..90 and longitudes within -360..360 "
+                                                  "degrees in a geographic CRS (XMIN,YMIN,XMAX,YMAX is lon,lat,lon,lat)");
     geo::GeoTransform t;
     t.x0 = e.x0, t.dx_col = (e.x1 - e.x0) / e.width, t.dx_row = 0;
     t.y0 = e.y1, t.dy_col = 0, t.dy_row = -(e.y1 - e.y0) / e.height;
@@ -60,14 +69,15 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
     // the visibility is computed.
     switch (options_.view) {
         case ViewKind::map:
-            target_ = std::make_unique<GridTarget>(dem_.georef, options_.map_width, options_.map_height);
+            target_ = std::make_unique<GridTarget>(dem_.georef, options_.map_width, options_.map_height,
+                                                   terrain::outside_mask(grid_->z));
             break;
         case ViewKind::extent: {
             if (!options_.extent) throw InputError("render: an extent view needs an extent");
             auto extent = std::make_unique<ExtentTarget>(dem_, extent_georef(*options_.extent, dem_.georef),
                                                          options_.renderer.threads);
             if (extent->covered_pixels() == 0)
-                throw InputError("--extent: the extent does not overlap the DEM (check the bounds and --extent-crs)");
+                throw QuantityError(Quantity::extent, "", "the extent does not overlap the DEM (check the bounds and their CRS)");
             target_ = std::move(extent);
             break;
         }
@@ -80,11 +90,11 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
             // Either picture would be one colour: the terrain's from inside it, or the sky alone.
             const PerspectiveView& view = camera->view();
             if (view.camera_below_terrain())
-                throw InputError("--camera: the camera at " + std::to_string(int(std::lround(camera->camera().height_m))) +
+                throw QuantityError(Quantity::camera, "", "the camera at " + std::to_string(int(std::lround(camera->camera().height_m))) +
                                  " m is below the terrain there (" + std::to_string(int(std::lround(view.ground_height_m()))) +
                                  " m): raise its height");
             if (view.hit_count() == 0)
-                throw InputError("--camera: the camera sees no terrain (every ray misses the DEM): turn it towards "
+                throw QuantityError(Quantity::camera, "", "the camera sees no terrain (every ray misses the DEM): turn it towards "
                                  "the DEM or look further down");
             target_ = std::move(camera);
             break;
@@ -189,6 +199,7 @@ void Scene::render(const SunState& sun, LinearImage& image) {
         image.width = grid_->width;
         image.height = grid_->height;
         image.alpha.clear();
+        static_cast<const GridTarget&>(*target_).mark_outside(image);
         return;
     }
     renderer_->render(*sky_, sun, texel_radiance_);
@@ -208,9 +219,10 @@ void Scene::render(const SunState& sun, LinearImage& image) {
 }
 
 void check_image_extension(const std::string& path) {
-    const std::string ext = lower_extension(path);
-    if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr")
-        throw input_error(path, "unsupported output format '" + ext + "' (use .png, .tif or .exr)");
+    const raster::ImageFormat* f = raster::find_image_format(path);
+    if (!f || f->tile_set)
+        throw input_error(path, "unsupported output format '" + std::filesystem::path(path).extension().string() +
+                                    "' (use " + picture_extensions_text() + ")");
 }
 
 double image_exposure_scale(const LinearImage& image, const Exposure& exposure) {
@@ -225,9 +237,9 @@ double image_exposure_scale(const LinearImage& image, const Exposure& exposure) 
 double write_image(const std::string& path, const LinearImage& image, const Exposure& exposure,
                    const geo::Georef* georef) {
     check_image_extension(path);
-    const std::string ext = lower_extension(path);
+    const raster::ImageFormat& format = *raster::find_image_format(path);
     const bool rgba = !image.alpha.empty();
-    if (ext == ".exr") {
+    if (format.writer == raster::ImageWriter::exr) {
         if (!rgba) {
             raster::write_float_image_exr(path, image.width, image.height, 3, &image.rgb[0].x, true);
         } else {
@@ -251,7 +263,7 @@ double write_image(const std::string& path, const LinearImage& image, const Expo
         }
         bytes = std::move(with_alpha);
     }
-    const geo::Georef* geo = ext == ".png" ? nullptr : georef;
+    const geo::Georef* geo = format.georeferenced ? georef : nullptr;
     geo::Georef scaled;
     if (geo && (geo->width() != image.width || geo->height() != image.height)) {
         geo::GeoTransform t = geo->transform();
@@ -262,7 +274,7 @@ double write_image(const std::string& path, const LinearImage& image, const Expo
     }
     // A georeferenced map as a Cloud-Optimized GeoTIFF (tiled, with overviews): GIS and web
     // clients read any window or zoom of it without the whole file.
-    if (geo && geo->valid() && ext != ".png")
+    if (geo && geo->valid())
         raster::write_cog_u8(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), *geo);
     else
         raster::write_u8_image(path, image.width, image.height, rgba ? 4 : 3, bytes.data(), geo);

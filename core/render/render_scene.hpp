@@ -20,7 +20,7 @@
 #include "core/render/render_target.hpp"
 #include "core/render/scene_blockers.hpp"
 #include "core/render/shading_state.hpp"
-#include "core/render/sky_table.hpp"
+#include "core/light/sky_table.hpp"
 #include "core/render/view_shading.hpp"
 #include "core/render/relief_contrast.hpp"
 #include "core/render/tone_map.hpp"

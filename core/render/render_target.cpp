@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/util/error.hpp"
@@ -11,6 +12,8 @@ namespace ts::render {
 namespace {
 
 // Bilinear sample of a texel raster at texel-centre coordinates (x, y), clamped to the grid.
+// Texels outside the terrain hold NaN: the weights are then renormalised over the corners that
+// have radiance, so the terrain's edge keeps its own colour (NaN when no corner has any).
 glm::vec3 sample(const std::vector<glm::vec3>& src, int sw, int sh, double x, double y) {
     x = std::clamp(x, 0.0, double(sw - 1));
     y = std::clamp(y, 0.0, double(sh - 1));
@@ -18,7 +21,14 @@ glm::vec3 sample(const std::vector<glm::vec3>& src, int sw, int sh, double x, do
     const int y0 = std::min(int(y), sh - 1), y1 = std::min(y0 + 1, sh - 1);
     const float fx = float(x - x0), fy = float(y - y0);
     auto at = [&](int c, int r) { return src[std::size_t(r) * std::size_t(sw) + std::size_t(c)]; };
-    return (at(x0, y0) * (1 - fx) + at(x1, y0) * fx) * (1 - fy) + (at(x0, y1) * (1 - fx) + at(x1, y1) * fx) * fy;
+    const glm::vec3 a = at(x0, y0), b = at(x1, y0), c = at(x0, y1), d = at(x1, y1);
+    if (!std::isnan(a.x + b.x + c.x + d.x))  // every corner has radiance: the plain formula
+        return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+    glm::vec3 sum(0.0f);
+    float weight = 0;
+    for (auto [v, wt] : {std::pair{a, (1 - fx) * (1 - fy)}, {b, fx * (1 - fy)}, {c, (1 - fx) * fy}, {d, fx * fy}})
+        if (!std::isnan(v.x) && wt > 0) sum += v * wt, weight += wt;
+    return weight > 0 ? sum / weight : glm::vec3(std::numeric_limits<float>::quiet_NaN());
 }
 
 geo::Georef scaled_georef(const geo::Georef& g, int w, int h) {
@@ -31,12 +41,20 @@ geo::Georef scaled_georef(const geo::Georef& g, int w, int h) {
 
 }  // namespace
 
-GridTarget::GridTarget(const geo::Georef& dem_georef, int width, int height)
+GridTarget::GridTarget(const geo::Georef& dem_georef, int width, int height, std::vector<std::uint8_t> outside)
     : grid_width_(dem_georef.width()),
       grid_height_(dem_georef.height()),
       georef_(scaled_georef(dem_georef, width > 0 ? width : dem_georef.width(),
                             height > 0 ? height : dem_georef.height())),
-      same_size_(georef_.width() == grid_width_ && georef_.height() == grid_height_) {}
+      same_size_(georef_.width() == grid_width_ && georef_.height() == grid_height_),
+      outside_(std::move(outside)) {}
+
+void GridTarget::mark_outside(LinearImage& image) const {
+    if (outside_.empty() || !same_size_) return;
+    image.alpha.assign(outside_.size(), 255);
+    for (std::size_t k = 0; k < outside_.size(); ++k)
+        if (outside_[k]) image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
+}
 
 void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky&, LinearImage& image) {
     const int w = width(), h = height();
@@ -44,14 +62,23 @@ void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const lig
     image.alpha.clear();
     if (same_size_) {
         image.rgb = texel_radiance;
+        mark_outside(image);
         return;
     }
     image.rgb.resize(std::size_t(w) * std::size_t(h));
+    if (!outside_.empty()) image.alpha.assign(image.rgb.size(), 255);
     for (int j = 0; j < h; ++j) {
         const double y = (j + 0.5) * grid_height_ / h - 0.5;
-        for (int i = 0; i < w; ++i)
-            image.rgb[std::size_t(j) * w + i] =
-                sample(texel_radiance, grid_width_, grid_height_, (i + 0.5) * grid_width_ / w - 0.5, y);
+        for (int i = 0; i < w; ++i) {
+            const double x = (i + 0.5) * grid_width_ / w - 0.5;
+            const std::size_t k = std::size_t(j) * w + i;
+            image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, x, y);
+            if (outside_.empty()) continue;
+            // The texel under the pixel's centre decides, as ExtentTarget's coverage does.
+            const int c = std::clamp(int(x + 0.5), 0, grid_width_ - 1), r = std::clamp(int(y + 0.5), 0, grid_height_ - 1);
+            if (outside_[std::size_t(r) * std::size_t(grid_width_) + std::size_t(c)] || std::isnan(image.rgb[k].x))
+                image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
+        }
     }
 }
 
@@ -78,8 +105,8 @@ ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int t
                 // Edge coordinates: the DEM covers [0, width] x [0, height].
                 if (!(p.x >= 0 && p.y >= 0 && p.x <= dem.width && p.y <= dem.height)) continue;
                 const int c = std::min(int(p.x), dem.width - 1), r = std::min(int(p.y), dem.height - 1);
-                if (!dem.void_mask.empty() && dem.void_mask[std::size_t(r) * std::size_t(dem.width) + std::size_t(c)])
-                    continue;
+                if (std::isnan(dem.z[std::size_t(r) * std::size_t(dem.width) + std::size_t(c)]))
+                    continue;  // outside the terrain (filled holes are terrain)
                 at_[std::size_t(j) * std::size_t(w) + std::size_t(i)] = glm::vec2(p.x - 0.5, p.y - 0.5);
                 ++covered_rows[std::size_t(j)];
             }
@@ -102,6 +129,7 @@ void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const l
             }
             image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, p.x, p.y);
             image.alpha[k] = 255;
+            if (std::isnan(image.rgb[k].x)) image.rgb[k] = glm::vec3(0.0f), image.alpha[k] = 0;
         }
     });
 }

@@ -4,7 +4,7 @@
 //   ExtentTarget   any georeferenced extent in any CRS at any size (one Web Mercator map tile
 //                  is one): each pixel centre is carried to the DEM's pixel coordinates once,
 //                  then every frame samples the radiance there (bilinear); pixels off the DEM
-//                  or over its voids are transparent
+//                  or outside its terrain (NaN heights: terrain::outside_mask) are transparent
 //   CameraTarget   a perspective camera (perspective_view.hpp), with the sky where rays miss
 // Map-like targets look from straight up (one ViewShading serves them all); a camera has a
 // direction per texel.
@@ -19,7 +19,7 @@
 #include "core/geo/georef.hpp"
 #include "core/light/sky.hpp"
 #include "core/render/perspective_view.hpp"
-#include "core/render/sky_table.hpp"
+#include "core/light/sky_table.hpp"
 #include "core/render/view_shading.hpp"
 
 namespace ts::render {
@@ -49,18 +49,24 @@ public:
 class GridTarget final : public RenderTarget {
 public:
     // The DEM grid resampled to width x height (0 = the grid's own size), bilinear with texel
-    // centres aligned as GDAL's -ts; the georef scaled to match.
-    GridTarget(const geo::Georef& dem_georef, int width = 0, int height = 0);
+    // centres aligned as GDAL's -ts; the georef scaled to match. `outside` (one byte per texel,
+    // terrain::outside_mask; empty = none) makes those texels transparent: the picture then has
+    // an alpha channel, and without outside texels it has none (the bytes as they always were).
+    GridTarget(const geo::Georef& dem_georef, int width = 0, int height = 0, std::vector<std::uint8_t> outside = {});
     int width() const override { return georef_.width(); }
     int height() const override { return georef_.height(); }
     const geo::Georef* georef() const override { return &georef_; }
     bool is_texel_grid() const override { return same_size_; }
     void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) override;
+    // On a picture that is the texel grid itself (rendered straight into it): outside texels
+    // transparent and black. Nothing when there are none.
+    void mark_outside(LinearImage& image) const;
 
 private:
     int grid_width_, grid_height_;
     geo::Georef georef_;
     bool same_size_;
+    std::vector<std::uint8_t> outside_;
 };
 
 class ExtentTarget final : public RenderTarget {
@@ -94,12 +100,12 @@ public:
     const PerspectiveView& view() const { return view_; }
     const Camera& camera() const { return camera_; }
     // The sky as the last compose() tabulated it (the haze over meshes drawn into the picture).
-    const SkyTable& sky_table() const { return sky_table_; }
+    const light::SkyTable& sky_table() const { return sky_table_; }
 
 private:
     Camera camera_;
     PerspectiveView view_;
-    SkyTable sky_table_{256, 128};
+    light::SkyTable sky_table_{light::SkyGrid::whole_sphere(256, 128)};
 };
 
 }  // namespace ts::render

@@ -25,6 +25,39 @@ LonLatBox dem_footprint(const geo::Georef& g) {
     return box;
 }
 
+LonLatBox terrain_footprint(const dem::Dem& dem) {
+    const int w = dem.width, h = dem.height;
+    if (std::none_of(dem.z.begin(), dem.z.end(), [](float v) { return std::isnan(v); })) return dem_footprint(dem.georef);
+    // Per row and per column, the first and last texel with a height (-1: none).
+    std::vector<int> row_first(std::size_t(h), -1), row_last(std::size_t(h), -1);
+    std::vector<int> col_first(std::size_t(w), -1), col_last(std::size_t(w), -1);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+            if (std::isnan(dem.z[dem.index(c, r)])) continue;
+            if (row_first[std::size_t(r)] < 0) row_first[std::size_t(r)] = c;
+            row_last[std::size_t(r)] = c;
+            if (col_first[std::size_t(c)] < 0) col_first[std::size_t(c)] = r;
+            col_last[std::size_t(c)] = r;
+        }
+    double west = std::numeric_limits<double>::infinity(), east = -west, south = west, north = -west;
+    auto add_texel = [&](int c, int r) {  // its four corners
+        for (auto [dc, dr] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}}) {
+            const glm::dvec2 ll = dem.georef.pixel_to_lonlat(c + dc, r + dr);
+            if (!std::isfinite(ll.x) || !std::isfinite(ll.y)) continue;
+            west = std::min(west, ll.x), east = std::max(east, ll.x);
+            south = std::min(south, ll.y), north = std::max(north, ll.y);
+        }
+    };
+    for (int r = 0; r < h; ++r)
+        if (row_first[std::size_t(r)] >= 0) add_texel(row_first[std::size_t(r)], r), add_texel(row_last[std::size_t(r)], r);
+    for (int c = 0; c < w; ++c)
+        if (col_first[std::size_t(c)] >= 0) add_texel(c, col_first[std::size_t(c)]), add_texel(c, col_last[std::size_t(c)]);
+    LonLatBox box{std::max(west, -180.0), std::max(south, -kMaxLatitudeDeg), std::min(east, 180.0),
+                  std::min(north, kMaxLatitudeDeg)};
+    if (box.empty()) return {};
+    return box;
+}
+
 std::vector<TileId> tiles_covering(const LonLatBox& box, int z0, int z1) {
     std::vector<TileId> out;
     if (box.empty()) return out;

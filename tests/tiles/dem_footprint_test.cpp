@@ -1,6 +1,8 @@
 // The DEM's footprint on the map and the tiles it touches.
 #include "core/tiles/dem_footprint.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/tiles/tile_export.hpp"
@@ -22,6 +24,31 @@ TEST(DemFootprint, GeographicDemIsItsCornerBox) {
     EXPECT_NEAR(b.east, 40.0 + 1000.0 / 1200, 1e-12);
     EXPECT_NEAR(b.north, 40.0, 1e-12);
     EXPECT_NEAR(b.south, 40.0 - 1000.0 / 1200, 1e-12);
+}
+
+// A nodata collar is not the map: the MBTiles bounds (and the tiles planned) are the terrain's.
+TEST(DemFootprint, TheTerrainsFootprintLeavesTheCollarOut) {
+    dem::Dem d;
+    d.width = d.height = 1000;
+    d.georef = anatolia();
+    d.z.assign(std::size_t(1000) * 1000, 500.0f);
+    d.void_mask.assign(d.z.size(), 0);
+    const LonLatBox whole = terrain_footprint(d);  // no collar: the DEM's outline, exactly
+    const LonLatBox outline = dem_footprint(d.georef);
+    EXPECT_EQ(whole.west, outline.west);
+    EXPECT_EQ(whole.east, outline.east);
+    EXPECT_EQ(whole.south, outline.south);
+    EXPECT_EQ(whole.north, outline.north);
+    // Columns 0..199 and rows 700..999 are a collar (NaN: fill_voids leaves it outside).
+    for (int r = 0; r < 1000; ++r)
+        for (int c = 0; c < 1000; ++c)
+            if (c < 200 || r >= 700) d.z[d.index(c, r)] = NAN, d.void_mask[d.index(c, r)] = 1;
+    const LonLatBox b = terrain_footprint(d);
+    EXPECT_NEAR(b.west, 40.0 + 200.0 / 1200, 1e-9);
+    EXPECT_NEAR(b.east, 40.0 + 1000.0 / 1200, 1e-9);
+    EXPECT_NEAR(b.north, 40.0, 1e-9);
+    EXPECT_NEAR(b.south, 40.0 - 700.0 / 1200, 1e-9);
+    EXPECT_LT(tiles_covering(b, 14, 14).size(), tiles_covering(outline, 14, 14).size());
 }
 
 TEST(DemFootprint, TilesCoveringAreTheIntersectingOnes) {

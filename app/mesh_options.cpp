@@ -5,10 +5,13 @@
 #include <filesystem>
 #include <string_view>
 
+#include "app/options/mesh_forward_option.hpp"
+#include "app/options/quantity_flags.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/util/error.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -59,15 +62,16 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
                             "Where the mesh's origin stands: LON,LAT,HEIGHT (degrees, metres above the DEM's datum; "
                             "HEIGHTagl: above the terrain there), one per --mesh, in order"));
     one_each(cmd.add_option("--hpr", a.hpr,
-                            "Heading,pitch,roll in degrees (heading clockwise from north of the model's +y, pitch nose "
-                            "up, roll right side down); once for all meshes or once per --mesh"));
+                            "Heading,pitch,roll in degrees (heading: the nose, --mesh-forward, clockwise from north; "
+                            "pitch nose up; roll right side down); once for all meshes or once per --mesh"));
     one_each(cmd.add_option("--scale", a.scale, "Uniform scale of the mesh (> 0; once for all or once per --mesh)"));
     one_each(cmd.add_option("--spheres", a.spheres,
                             "Bounding spheres per mesh, 8..512 (default 64; cached on disk; once for all or per --mesh)"));
+    add_mesh_forward_option(cmd, a.forward);
     cmd.add_option("--blocker-min-solid-angle", a.min_solid_angle_sr,
                    "A mesh darkens a texel's sky only while its bounding sphere subtends more than this many steradians there")
         ->capture_default_str()
-        ->check(CLI::Range(1e-6, 1.0));
+        ->check(within(1e-6, 1.0));
     cmd.add_flag("--no-ratio-attenuation", a.no_ratio_attenuation,
                  "Sum the spheres' log-SH unweighted (default: scaled so the kept caps claim at most the hemisphere)");
     cmd.add_flag("--no-hemisphere-cull", a.no_hemisphere_cull,
@@ -86,7 +90,7 @@ void add_mesh_options(CLI::App& cmd, MeshArgs& a) {
     cmd.add_option("--mesh-sun-rays", a.mesh_sun_rays,
                    "Rays per texel over the sun's disc with --mesh-sun-shadow triangles (the penumbra's steps)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 256));
+        ->check(within(1, 256));
     cmd.add_flag("--no-mesh-terrain-shadow", a.no_mesh_terrain_shadow,
                  "Perspective views: light the drawn meshes under the open sky (default: the terrain's horizons from "
                  "each vertex darken them and hide the sun)");
@@ -123,6 +127,7 @@ std::vector<MeshSpec> parse_mesh_specs(const MeshArgs& a) {
                 throw InputError("--hpr " + *hpr + ": give HEADING,PITCH,ROLL in degrees (e.g. 90,0,0)");
             s.placement.heading_deg = v[0], s.placement.pitch_deg = v[1], s.placement.roll_deg = v[2];
         }
+        s.placement.forward_yaw_deg = mesh::forward_yaw_deg(mesh_forward_axis(a.forward, s.file));
         if (const double* scale = nth_or_only(a.scale, k)) s.placement.scale = *scale;
         if (const int* count = nth_or_only(a.spheres, k)) s.spheres = *count;
         try {
@@ -130,6 +135,8 @@ std::vector<MeshSpec> parse_mesh_specs(const MeshArgs& a) {
             blockers::DecompositionOptions d;
             d.count = s.spheres;
             blockers::validate(d);
+        } catch (const QuantityError& e) {
+            throw input_error(s.file, flag_message(e, "render"));
         } catch (const InputError& e) {
             throw input_error(s.file, e.what());
         }
@@ -152,13 +159,14 @@ blockers::SphereBlockerOptions blocker_options(const MeshArgs& a) {
 }
 
 std::vector<render::SceneMesh> load_scene_meshes(const std::vector<MeshSpec>& specs, const dem::Dem& dem,
-                                                 const MeshArgs& a, bool spheres_later) {
+                                                 const MeshArgs& a, bool spheres_later, bool verbose) {
     for (const MeshSpec& s : specs) render::mesh_anchor(dem.georef, s.placement, s.file);  // off the DEM: exit 2 now
     const std::filesystem::path cache =
         a.cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.cache_dir);
     std::vector<render::SceneMesh> meshes;
     for (const MeshSpec& s : specs) {
         const mesh::TriangleMesh m = mesh::import_mesh(s.file, {});
+        if (verbose) std::printf("mesh %s: %s\n", s.file.c_str(), describe_mesh_forward(a.forward, s.file).c_str());
         std::vector<blockers::Sphere> spheres;
         if (spheres_later) {
             std::printf("mesh %s: %zu triangles, scale %g (its spheres: --max-error chooses how many)\n", s.file.c_str(),

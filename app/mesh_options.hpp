@@ -30,6 +30,7 @@ struct MeshArgs {
     bool no_mesh_terrain_shadow = false;
     bool no_mesh_self_shadow = false;
     std::string cache_dir;
+    std::string forward = "auto";  // --mesh-forward (app/options/mesh_forward_option.hpp)
 };
 
 struct MeshSpec {
@@ -47,8 +48,8 @@ blockers::SphereBlockerOptions blocker_options(const MeshArgs& args);
 
 // Checks each placement lies on the DEM, then imports each mesh and takes its spheres from the
 // cache (decomposing once on a miss); with spheres_later, none yet (--max-error chooses their
-// count). Prints one line per mesh.
+// count). Prints one line per mesh (and, verbose, the forward axis it assumed).
 std::vector<render::SceneMesh> load_scene_meshes(const std::vector<MeshSpec>& specs, const dem::Dem& dem,
-                                                 const MeshArgs& args, bool spheres_later = false);
+                                                 const MeshArgs& args, bool spheres_later = false, bool verbose = false);
 
 }  // namespace ts::app

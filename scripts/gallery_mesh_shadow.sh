@@ -27,10 +27,10 @@ $ts render "$dem" --crop 5.70,45.10,5.98,45.32 --sun-azimuth 280 --sun-elevation
   --mesh "$cessna" --at 5.845,45.215,300agl --hpr 30,0,0 --scale 120 \
   --view perspective --camera 5.835,45.19,1700,15,-22,45 --size 800x450 --out docs/gallery/cessna_view.png
 $ts render "$dem" --crop 5.76,45.16,5.91,45.26 --time 2025-06-21T12:00:00Z --sky overcast \
-  --mesh "$truck" --at 5.80,45.21,0agl --hpr 60,0,0 --scale 120 \
+  --mesh "$truck" --mesh-forward +x --at 5.80,45.21,0agl --hpr 60,0,0 --scale 120 \
   --size 600x400 --out docs/gallery/milk_truck_overcast.png
 $ts render "$dem" --crop 5.70,45.10,5.98,45.32 --time 2025-06-21T12:00:00Z --sky overcast \
-  --mesh "$truck" --at 5.80,45.21,0agl --hpr 60,0,0 --scale 120 \
+  --mesh "$truck" --mesh-forward +x --at 5.80,45.21,0agl --hpr 60,0,0 --scale 120 \
   --view perspective --camera 5.787,45.195,2000,31,-42,40 --size 800x450 --out docs/gallery/milk_truck_view.png
 ls -l docs/gallery/cessna_shadow.png docs/gallery/cessna_view.png docs/gallery/milk_truck_overcast.png \
   docs/gallery/milk_truck_view.png

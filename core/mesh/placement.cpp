@@ -9,7 +9,7 @@
 namespace ts::mesh {
 
 void validate(const Placement& p) {
-    const double all[] = {p.lon_deg, p.lat_deg, p.height_m, p.heading_deg, p.pitch_deg, p.roll_deg, p.scale};
+    const double all[] = {p.lon_deg, p.lat_deg, p.height_m, p.heading_deg, p.pitch_deg, p.roll_deg, p.scale, p.forward_yaw_deg};
     for (double v : all)
         if (!std::isfinite(v)) throw InputError("mesh placement: every number must be finite");
     if (p.lat_deg < -90.0 || p.lat_deg > 90.0) throw InputError("mesh placement: latitude must be in [-90, 90]");
@@ -26,7 +26,10 @@ glm::dmat3 placement_rotation(const Placement& p) {
                         glm::dvec3(0, -std::sin(t), std::cos(t)));
     const glm::dmat3 ry(glm::dvec3(std::cos(r), 0, -std::sin(r)), glm::dvec3(0, 1, 0),
                         glm::dvec3(std::sin(r), 0, std::cos(r)));
-    return rz * rx * ry;
+    const double f = radians(p.forward_yaw_deg);
+    const glm::dmat3 forward(glm::dvec3(std::cos(f), std::sin(f), 0), glm::dvec3(-std::sin(f), std::cos(f), 0),
+                             glm::dvec3(0, 0, 1));
+    return rz * rx * ry * forward;
 }
 
 glm::dmat4 model_to_enu(const Placement& p, const geo::LocalFrame& frame, double ground_height_m) {

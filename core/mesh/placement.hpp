@@ -4,6 +4,8 @@
 // in the aerospace order: at heading = pitch = roll = 0 model +x points east, +y north, +z up;
 // heading turns the model's +y (its "forward") clockwise from north about up, pitch lifts +y
 // (nose up) about the model's +x, roll lowers the model's +x ("right wing down") about +y.
+// Before all three, forward_yaw_deg turns the mesh's nose onto +y (core/mesh/forward_axis.hpp):
+// 0 for a mesh whose nose is +y, -90 for FlightGear's AC3D aircraft (nose -x).
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -22,13 +24,14 @@ struct Placement {
     double pitch_deg = 0.0;            // nose up
     double roll_deg = 0.0;             // right side down
     double scale = 1.0;                // uniform, > 0
+    double forward_yaw_deg = 0.0;      // counter-clockwise about up, turning the nose onto +y first
 };
 
 // Throws ts::InputError for a latitude outside [-90, 90], a longitude outside [-180, 360], a
 // non-finite number or a scale <= 0.
 void validate(const Placement& placement);
 
-// The attitude alone: R = Rz(-heading) * Rx(pitch) * Ry(roll).
+// The attitude alone: R = Rz(-heading) * Rx(pitch) * Ry(roll) * Rz(forward_yaw).
 glm::dmat3 placement_rotation(const Placement& placement);
 
 // model (normalised frame, metres) -> ENU metres of `frame`. ground_height_m is the terrain's

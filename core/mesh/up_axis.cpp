@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 
 namespace ts::mesh {
 
@@ -15,7 +16,7 @@ UpAxis parse_up_axis(const std::string& text) {
     if (t == "x") return UpAxis::x;
     if (t == "y") return UpAxis::y;
     if (t == "z") return UpAxis::z;
-    throw InputError("--up: '" + text + "' is not one of auto, x, y, z");
+    throw QuantityError(Quantity::up_axis, "'" + text + "'", "not one of auto, x, y, z");
 }
 
 UpAxis default_up_axis(const std::string& extension) {

@@ -92,7 +92,7 @@ MeshView::MeshView(const terrain::HeightGrid& grid, const PerspectiveView& view,
     std::sort(covered_.begin(), covered_.end(), [](const Covered& a, const Covered& b) { return a.pixel < b.pixel; });
 }
 
-void MeshView::compose(std::span<const std::vector<glm::vec3>> radiance, const SkyTable& sky,
+void MeshView::compose(std::span<const std::vector<glm::vec3>> radiance, const light::SkyTable& sky,
                        std::vector<glm::vec3>& image) const {
     constexpr int kCount = kSamples * kSamples;
     for (const Covered& c : covered_) {

@@ -18,7 +18,7 @@
 
 #include "core/render/mesh_lighting.hpp"
 #include "core/render/perspective_view.hpp"
-#include "core/render/sky_table.hpp"
+#include "core/light/sky_table.hpp"
 
 namespace ts::render {
 
@@ -38,7 +38,7 @@ public:
 
     // Blends the meshes over `image` (the view's composed picture): receiver_radiance[m] is mesh
     // m's MeshLighting::radiance (2 per corner: the normal's side, then the other).
-    void compose(std::span<const std::vector<glm::vec3>> receiver_radiance, const SkyTable& sky,
+    void compose(std::span<const std::vector<glm::vec3>> receiver_radiance, const light::SkyTable& sky,
                  std::vector<glm::vec3>& image) const;
 
 private:

@@ -9,6 +9,7 @@
 #include "core/terrain/valid_bilinear.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/earth_curvature.hpp"
 
@@ -24,7 +25,7 @@ double parse_number(std::string_view s, const std::string& what) {
     double v = 0;
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v))
-        throw InputError("--camera: " + what + " '" + std::string(s) + "' is not a number");
+        throw QuantityError(Quantity::camera, "", what + " '" + std::string(s) + "' is not a number");
     return v;
 }
 
@@ -143,7 +144,7 @@ Camera parse_camera(std::string_view text) {
         start = comma + 1;
     }
     if (parts.size() != 6)
-        throw InputError("--camera " + std::string(text) + ": give lon,lat,height,heading,pitch,fov (6 numbers)");
+        throw QuantityError(Quantity::camera, std::string(text), "give lon,lat,height,heading,pitch,fov (6 numbers)");
     Camera c;
     c.lon_deg = parse_number(parts[0], "lon");
     c.lat_deg = parse_number(parts[1], "lat");
@@ -151,9 +152,9 @@ Camera parse_camera(std::string_view text) {
     c.heading_deg = parse_number(parts[3], "heading");
     c.pitch_deg = parse_number(parts[4], "pitch");
     c.fov_deg = parse_number(parts[5], "fov");
-    if (c.lat_deg < -90 || c.lat_deg > 90) throw InputError("--camera: latitude must be in [-90, 90]");
-    if (c.pitch_deg < -90 || c.pitch_deg > 90) throw InputError("--camera: pitch must be in [-90, 90]");
-    if (c.fov_deg <= 1 || c.fov_deg >= 170) throw InputError("--camera: fov must be in (1, 170) degrees");
+    if (c.lat_deg < -90 || c.lat_deg > 90) throw QuantityError(Quantity::camera, "", "latitude must be in [-90, 90]");
+    if (c.pitch_deg < -90 || c.pitch_deg > 90) throw QuantityError(Quantity::camera, "", "pitch must be in [-90, 90]");
+    if (c.fov_deg <= 1 || c.fov_deg >= 170) throw QuantityError(Quantity::camera, "", "fov must be in (1, 170) degrees");
     return c;
 }
 
@@ -191,7 +192,7 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                                  const PerspectiveOptions& options)
     : grid_(g), options_(options) {
     if (options_.width < 1 || options_.height < 1 || options_.width > 16384 || options_.height > 16384)
-        throw InputError("--size: width and height must be in 1..16384");
+        throw QuantityError(Quantity::image_size, "", "width and height must be in 1..16384");
     if (g.width < 2 || g.height < 2) throw InputError("perspective view: the DEM needs at least 2x2 texels");
     const glm::dvec2 px = georef.lonlat_to_pixel({camera.lon_deg, camera.lat_deg});
     cam_ = {px.x - 0.5, px.y - 0.5, camera.height_m};
@@ -277,7 +278,7 @@ std::vector<glm::vec3> PerspectiveView::view_directions() const {
     return v;
 }
 
-glm::vec3 PerspectiveView::haze(const glm::vec3& c, const glm::vec3& dir, double distance, const SkyTable& sky) const {
+glm::vec3 PerspectiveView::haze(const glm::vec3& c, const glm::vec3& dir, double distance, const light::SkyTable& sky) const {
     if (!(options_.haze_distance_m > 0)) return c;
     const float t = float(std::exp(-distance / options_.haze_distance_m));
     const float hl = std::hypot(dir.x, dir.y);
@@ -291,7 +292,7 @@ std::size_t PerspectiveView::hit_count() const {
     return std::size_t(std::count_if(pixels_.begin(), pixels_.end(), [](const Pixel& p) { return p.x >= 0; }));
 }
 
-void PerspectiveView::compose(const glm::vec3* radiance, const SkyTable& sky, const glm::vec3& sun_dir,
+void PerspectiveView::compose(const glm::vec3* radiance, const light::SkyTable& sky, const glm::vec3& sun_dir,
                               const glm::vec3& sun_radiance, double sun_cos_radius,
                               std::vector<glm::vec3>& image) const {
     image.resize(pixels_.size());

@@ -21,7 +21,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/geo/georef.hpp"
-#include "core/render/sky_table.hpp"
+#include "core/light/sky_table.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {
@@ -69,7 +69,7 @@ public:
 
     // Composes a frame: per-texel radiance (width*height of the grid) sampled at the hits, the
     // sky (and the sun's disc) elsewhere. `image` is resized to width*height once.
-    void compose(const glm::vec3* texel_radiance, const SkyTable& sky, const glm::vec3& sun_dir,
+    void compose(const glm::vec3* texel_radiance, const light::SkyTable& sky, const glm::vec3& sun_dir,
                  const glm::vec3& sun_radiance, double sun_cos_radius, std::vector<glm::vec3>& image) const;
 
     // The camera's frame, for drawing other geometry into the same picture (mesh_view.hpp):
@@ -86,7 +86,7 @@ public:
     float terrain_distance(std::size_t k) const { return pixels_[k].distance; }
     glm::vec3 ray_direction(std::size_t k) const { return pixels_[k].dir; }
     // A surface's radiance `c` at `distance` along a ray `dir` seen through the haze.
-    glm::vec3 haze(const glm::vec3& c, const glm::vec3& dir, double distance, const SkyTable& sky) const;
+    glm::vec3 haze(const glm::vec3& c, const glm::vec3& dir, double distance, const light::SkyTable& sky) const;
 
 private:
     struct Pixel {

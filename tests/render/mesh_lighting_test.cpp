@@ -269,7 +269,7 @@ TEST(MeshView, TrianglesInFrontOfTheTerrainShowAndBelowItAreHidden) {
     // Composed: the square's pixels take its radiance (uniform 2 here), the rest stay.
     std::vector<glm::vec3> image(std::size_t(po.width) * po.height, glm::vec3(0.25f));
     const std::vector<std::vector<glm::vec3>> radiance = {std::vector<glm::vec3>(12, glm::vec3(2.0f))};
-    SkyTable table(32, 16);
+    light::SkyTable table(light::SkyGrid::whole_sphere(32, 16));
     table.update(UniformSky(sun_from(180, 40), 0.0f));
     shown.compose(radiance, table, image);
     std::size_t lit = 0;

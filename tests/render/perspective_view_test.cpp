@@ -55,7 +55,7 @@ TEST(PerspectiveView, HitsLandWhereTheFlatPlaneIs) {
     std::vector<glm::vec3> rad(std::size_t(s.w * s.h));
     for (int r = 0; r < s.h; ++r)
         for (int c = 0; c < s.w; ++c) rad[std::size_t(r * s.w + c)] = glm::vec3(float(r), float(c), 0);
-    SkyTable sky(8, 4);
+    light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
     std::vector<glm::vec3> img;
     v.compose(rad.data(), sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
     // The camera sits at texel-centre (31.5, 31.5); the hit is 10 texels north. Tolerance:
@@ -79,7 +79,7 @@ TEST(PerspectiveView, ARidgeHidesWhatIsBehindIt) {
     std::vector<glm::vec3> rad(std::size_t(s.w * s.h));
     for (int r = 0; r < s.h; ++r)
         for (int c = 0; c < s.w; ++c) rad[std::size_t(r * s.w + c)] = glm::vec3(float(r), 0, 0);
-    SkyTable sky(8, 4);
+    light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
     std::vector<glm::vec3> img;
     v.compose(rad.data(), sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
     EXPECT_GT(img[0].x, 19.0f);  // on the ridge's south face (rows 20..21), not beyond it

@@ -1,5 +1,7 @@
 #include "core/raster/zlib_stream.hpp"
 
+#include "core/raster/igzip_stream_home.hpp"
+
 #include <isa-l/igzip_lib.h>
 #include <libdeflate.h>
 
@@ -47,10 +49,14 @@ std::size_t isal_compress(int level, const std::uint8_t* in, std::size_t in_size
     // igzip counts in 32-bit lengths; a bigger picture goes to libdeflate.
     if (in_size > 0xffffffffu / 2 || out_capacity > 0xffffffffu) return 0;
     // Zeroed first: isal_deflate_stateless_init leaves fields unset that the stateless path
-    // reads, among them the window size, so whatever the stack held decided it (a small number
+    // reads, among them the window size, so whatever the memory held decided it (a small number
     // there shrinks the window and changes the bytes). Tiles are compared by hash on resume and
     // merge: the bytes must be a function of the input alone (tests/raster/zlib_stream_test.cpp).
-    isal_zstream s{};
+    // The stream's address changes them too (igzip_stream_home.hpp): it lives at one whose hash
+    // is the same on every thread; should no such address be free, libdeflate compresses instead.
+    isal_zstream* stream = zeroed_igzip_stream_for_this_thread();
+    if (!stream) return 0;
+    isal_zstream& s = *stream;
     isal_deflate_stateless_init(&s);
     s.hist_bits = 0;  // igzip's default window (32 KiB)
     auto& buffer = isal_level_buffer(level);

@@ -4,11 +4,13 @@
 // (hist_bits) unset, and a small number left there by an earlier call shrinks the window.
 #include <cstdint>
 #include <cstring>
+#include <libdeflate.h>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "core/raster/igzip_stream_home.hpp"
 #include "core/raster/zlib_stream.hpp"
 
 namespace ts::raster {
@@ -93,6 +95,61 @@ TEST(ZlibStream, AnEdgeTileDoesNotDependOnTheTilesBeforeIt) {
                         << (d == Deflater::isal ? "isal" : "libdeflate") << " level " << level << ", " << blank
                         << " blank rows after a tile with " << other_blank;
             }
+}
+
+// igzip's level-1 kernel files the input's third byte under a hash of the address of its stream
+// structure (core/raster/igzip_stream_home.hpp). That only changes the bytes when the slot is
+// the one a later match needs: here bytes 5..8 repeat bytes 1..4, which the kernel finds unless
+// the address hashes to their slot. Inputs of 1500 bytes (igzip masks their hashes to 10 bits)
+// with such a repeat, several per slot, so that whichever slot a thread's address gives, some
+// inputs need it (with the stream on the caller's stack this test failed 10 runs in 10).
+std::vector<std::vector<std::uint8_t>> inputs_for_every_hash_slot() {
+    constexpr std::uint32_t kSlots = 1024, kPerSlot = 4;  // not every repeat is one the kernel takes
+    std::vector<std::uint32_t> count(kSlots);
+    std::vector<std::vector<std::uint8_t>> inputs;
+    for (std::uint32_t word = 0x01020304u; inputs.size() < kSlots * kPerSlot; word = word * 747796405u + 2891336453u) {
+        if (count[igzip_address_hash(std::uintptr_t(word) << 16) % kSlots]++ >= kPerSlot) continue;
+        std::vector<std::uint8_t> in(1500);
+        std::uint32_t state = word;
+        for (std::size_t k = 0; k < in.size(); ++k) {  // grey + alpha, compressible as a tile is
+            state = state * 1664525u + 1013904223u;
+            in[k] = k % 2 ? 255 : std::uint8_t(100 + (k / 64) % 50 + (state >> 30));
+        }
+        in[0] = 0x5a;
+        for (int k = 0; k < 4; ++k) in[std::size_t(1 + k)] = in[std::size_t(5 + k)] = std::uint8_t(word >> (8 * k));
+        inputs.push_back(std::move(in));
+    }
+    return inputs;
+}
+
+TEST(ZlibStream, TheBytesDoNotDependOnWhichThreadCompresses) {
+    // Before the stream had its own address, a map tile in ~1 run in 6 of a two-thread export
+    // got other deflate bytes than in a one-thread run (same pixels): resume and shard merge
+    // compare tiles by hash. Threads have their stacks at different addresses.
+    const auto inputs = inputs_for_every_hash_slot();
+    auto compress_all = [&] {
+        std::vector<std::vector<std::uint8_t>> out;
+        for (const auto& in : inputs) out.push_back(compressed(Deflater::isal, 1, in));
+        return out;
+    };
+    const auto on_this_thread = compress_all();
+    for (int t = 0; t < 3; ++t) {
+        std::vector<std::vector<std::uint8_t>> on_another;
+        std::thread([&] { on_another = compress_all(); }).join();
+        for (std::size_t k = 0; k < inputs.size(); ++k)
+            ASSERT_EQ(on_another[k], on_this_thread[k]) << "input " << k << ", thread " << t;
+    }
+    // And the streams are right.
+    libdeflate_decompressor* d = libdeflate_alloc_decompressor();
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+        std::vector<std::uint8_t> back(inputs[k].size());
+        std::size_t n = 0;
+        ASSERT_EQ(libdeflate_zlib_decompress(d, on_this_thread[k].data(), on_this_thread[k].size(), back.data(),
+                                             back.size(), &n),
+                  LIBDEFLATE_SUCCESS);
+        EXPECT_EQ(back, inputs[k]);
+    }
+    libdeflate_free_decompressor(d);
 }
 
 }  // namespace

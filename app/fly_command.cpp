@@ -1,5 +1,7 @@
 // `terrashade fly`: a flight over real terrain in a window (GLFW + Vulkan swapchain), or N
 // frames of a flight path rendered offscreen with the same pipeline (--frames N --out DIR).
+// This file parses the options and makes the flight; the window's loop (input, frames) is
+// gpu/fly/fly_window_loop.hpp.
 // docs/flythrough.md describes the LOD, the shading and the controls.
 #include <chrono>
 #include <cmath>
@@ -11,15 +13,19 @@
 #include <string>
 #include <vector>
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-
 #include "app/command.hpp"
 #include "app/dem_input.hpp"
 #include "core/dem/dem_source.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/job_memory.hpp"
+#include "app/options/directions_option.hpp"
+#include "app/options/max_error_option.hpp"
+#include "app/options/mesh_forward_option.hpp"
+#include "app/options/quantity_flags.hpp"
+#include "app/options/sky_option.hpp"
+#include "app/options/sun_options.hpp"
+#include "app/options/verbose_option.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/fly/hud_status.hpp"
@@ -34,11 +40,13 @@
 #include "core/util/atomic_file.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
+#include "core/util/temp_files.hpp"
 #include "core/util/staged_outputs.hpp"
 #include "core/util/stopwatch.hpp"
 #include "gpu/context.hpp"
 #include "gpu/fly/flythrough.hpp"
 #include "gpu/fly/fly_window.hpp"
+#include "gpu/fly/fly_window_loop.hpp"
 
 namespace ts::app {
 namespace {
@@ -67,7 +75,7 @@ struct FlyArgs {
     std::string path;
     std::string mesh;
     double mesh_scale = 1.0;
-    std::string mesh_forward = "+y";
+    std::string mesh_forward = "auto";
     int spheres = 64;
     std::string sphere_cache_dir;
     bool no_aircraft_shadows = false;
@@ -75,7 +83,9 @@ struct FlyArgs {
     double sky_detail = 0.05;
     std::string camera = "chase";
     std::string hud;  // on|off; empty: on in the window, off with --frames
-    int frames = 0;
+    int frames = 0;  // 0: the window
+    bool frames_given = false;
+    bool verbose = false;
     int exit_after = 0;
     std::string out;
     std::string record = "fly_recording.csv";
@@ -132,17 +142,6 @@ fly::CameraMode parse_camera_mode(const std::string& s) {
     throw InputError("--camera " + s + ": give chase, cockpit, free or orbit");
 }
 
-// Mean local solar time (UTC + longitude / 15 h), "HH:MM".
-std::string solar_time(light::UtcTime t, double lon_deg) {
-    const double day_s = 86400.0;
-    const double utc_s = std::fmod(
-        double(std::chrono::duration_cast<std::chrono::seconds>(t.time_since_epoch()).count()), day_s);
-    double s = std::fmod(utc_s + lon_deg / 15.0 * 3600.0 + day_s, day_s);
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%02d:%02d", int(s / 3600.0), int(std::fmod(s, 3600.0) / 60.0));
-    return buf;
-}
-
 // The flight when no --path is given: straight over the DEM from the default start, 80 m/s,
 // 20 s.
 fly::FlightPath default_path(const gpu::Flythrough& s) {
@@ -160,45 +159,6 @@ fly::FlightPath default_path(const gpu::Flythrough& s) {
     return fly::FlightPath(std::move(poses));
 }
 
-fly::CameraPose camera_for(fly::CameraMode mode, const fly::CameraPose& aircraft) {
-    if (mode == fly::CameraMode::cockpit) return aircraft;
-    fly::CameraPose c = fly::chase_pose(aircraft);
-    return c;
-}
-
-void write_rgba_png(const std::filesystem::path& file, int w, int h, const std::vector<std::uint8_t>& rgba) {
-    std::vector<std::uint8_t> rgb(std::size_t(w) * std::size_t(h) * 3);
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
-        for (int c = 0; c < 3; ++c) rgb[3 * i + std::size_t(c)] = rgba[4 * i + std::size_t(c)];
-    write_atomically(file, [&](const std::filesystem::path& tmp) { raster::write_png(tmp, file, w, h, 3, rgb.data()); });
-}
-
-// What the HUD and the window title say about this frame; `lead` is the fps or the frame number.
-fly::HudStatus hud_status(const gpu::Flythrough& flight, const std::string& lead, const gpu::FlyFrameStats& st,
-                          double frame_ms, double draw_ms, const fly::CameraPose& camera, light::UtcTime time,
-                          fly::CameraMode mode, bool paused, bool recording) {
-    fly::HudStatus h;
-    h.lead = lead;
-    h.frame_ms = frame_ms, h.select_ms = st.select_ms, h.draw_ms = draw_ms;
-    h.patches = st.patches, h.triangles = st.triangles, h.error_px = st.screen_error_px;
-    const glm::dvec2 ll = flight.lonlat_of(camera.eye);
-    h.lon_deg = ll.x, h.lat_deg = ll.y, h.height_m = camera.eye.z, h.heading_deg = camera.heading_deg;
-    h.solar_time = solar_time(time, ll.x);
-    h.sun_elevation_deg = flight.sun().elevation_deg;
-    h.camera = fly::camera_mode_name(mode);
-    h.paused = paused, h.recording = recording;
-    if (flight.streamed()) h.tiles = st.tiles_resident, h.pending_tiles = long(st.tiles_pending);
-    return h;
-}
-
-// The HUD in the frame's top-left corner, its font doubled on frames wider than 1200 px.
-void show_hud(gpu::FlyRenderer& renderer, const fly::HudStatus& status) {
-    fly::HudStyle style;
-    style.scale = fly::hud_scale_for_width(renderer.width());
-    const int margin = 6 * style.scale;
-    renderer.set_hud(fly::rasterise_hud(fly::hud_lines(status), style), margin, margin);
-}
-
 bool parse_hud(const std::string& text, bool offscreen) {
     if (text.empty()) return !offscreen;
     if (text == "on") return true;
@@ -207,7 +167,12 @@ bool parse_hud(const std::string& text, bool offscreen) {
 }
 
 void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath& path, fly::CameraMode mode) {
-    std::filesystem::create_directories(a.out);
+    std::error_code ec;
+    if (!std::filesystem::exists(a.out, ec)) {
+        // Known to the interrupt before it exists: one before the first frame leaves no empty folder.
+        temp_files::track_created_directory(a.out);
+        std::filesystem::create_directories(a.out);
+    }
     interrupt::report_progress("frames", std::uint64_t(a.frames));
     gpu::FlyFrameUniforms u;
     gpu::FlyFrameStats st;
@@ -222,22 +187,22 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     for (int i = 0; i < a.frames; ++i) {
         const double t = path.start_s() + (a.frames > 1 ? path.duration_s() * i / (a.frames - 1) : 0.0);
         const fly::CameraPose aircraft = flight.pose_of(path.at(t));
-        const fly::CameraPose camera = camera_for(mode, aircraft);
+        const fly::CameraPose camera = gpu::camera_for(mode, aircraft);
         flight.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
         // The draw time shown is the previous frame's: this one's is known only after it.
         if (hud)
-            show_hud(flight.renderer(),
-                     hud_status(flight, "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames), st,
-                                st.select_ms + previous_draw_ms, previous_draw_ms, camera, flight.time(), mode, false,
-                                false));
+            gpu::show_hud(flight.renderer(),
+                          gpu::hud_status(flight, "frame " + std::to_string(i + 1) + "/" + std::to_string(a.frames),
+                                          st, st.select_ms + previous_draw_ms, previous_draw_ms, camera, flight.time(),
+                                          mode, false, false));
         const Stopwatch draw;
         flight.renderer().render_to_memory(u, flight.patches(), rgba);
         const double draw_ms = draw.milliseconds();
         previous_draw_ms = draw_ms;
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
-        write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(), flight.renderer().height(),
-                       rgba);
+        gpu::write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(),
+                            flight.renderer().height(), rgba);
         char line[256];
         std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%zu,%zu,%zu,%.1f\n", i, t, st.patches,
                       st.triangles, st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms, st.coarse_fallbacks,
@@ -266,186 +231,20 @@ void check_whole_fly_memory(int width, int height) {
                      "stream it by tile (--stream auto or on, within --memory-budget) or --crop a smaller window");
 }
 
-bool held(const gpu::WindowInput& in, int key) {
-    for (int k : in.held)
-        if (k == key) return true;
-    return false;
-}
-
-void run_window(const FlyArgs& a, gpu::Flythrough& flight, gpu::FlyWindow& window, const fly::FlightPath& path,
-                fly::CameraMode mode, light::UtcTime start_time) {
-    std::printf("%s", kKeys);
-    std::fflush(stdout);
-    const std::string shot_dir = a.out.empty() ? "." : a.out;
-    light::UtcTime time = start_time;
-    double path_t = path.start_s();
-    bool paused = false;
-    fly::FreeFlight free_flight;
-    free_flight.pose = flight.default_pose();
-    fly::Orbit orbit;
-    orbit.centre = {0.0, 0.0, flight.ground_height_m({0, 0, 0})};
-    orbit.distance_m = 0.5 * std::hypot(flight.frame().to_metric(0, 0).x, flight.frame().to_metric(0, 0).y);
-    bool recording = false;
-    std::vector<fly::FlightPose> recorded;
-    double record_t = 0;
-    int shots = 0;
-    gpu::FlyFrameUniforms u;
-    gpu::FlyFrameStats st;
-    auto last = std::chrono::steady_clock::now();
-    double fps_time = 0, title_time = 1.0;
-    int fps_frames = 0;
-    double fps = 0, frame_ms = 0, draw_ms = 0;
-    fly::CameraPose camera;
-    int frames_drawn = 0;
-    bool hud = parse_hud(a.hud, false);
-    while (true) {
-        const gpu::WindowInput in = window.poll();
-        if (in.close) break;
-        if (a.exit_after > 0 && frames_drawn >= a.exit_after) break;
-        const auto now = std::chrono::steady_clock::now();
-        const double dt = std::min(0.25, std::chrono::duration<double>(now - last).count());
-        last = now;
-        bool quit = false;
-        bool screenshot = false;
-        for (int key : in.pressed) {
-            switch (key) {
-                case GLFW_KEY_ESCAPE: quit = true; break;
-                case GLFW_KEY_C:
-                    if (mode == fly::CameraMode::free) {
-                        mode = fly::CameraMode::orbit;
-                    } else if (mode == fly::CameraMode::orbit) {
-                        mode = fly::CameraMode::chase;
-                    } else if (mode == fly::CameraMode::chase) {
-                        mode = fly::CameraMode::cockpit;
-                    } else {
-                        mode = fly::CameraMode::free;
-                        free_flight.pose = camera;
-                        free_flight.pose.roll_deg = 0;
-                    }
-                    break;
-                case GLFW_KEY_SPACE: paused = !paused; break;
-                case GLFW_KEY_LEFT_BRACKET: time -= std::chrono::minutes(15); break;
-                case GLFW_KEY_RIGHT_BRACKET: time += std::chrono::minutes(15); break;
-                case GLFW_KEY_COMMA: time -= std::chrono::hours(1); break;
-                case GLFW_KEY_PERIOD: time += std::chrono::hours(1); break;
-                case GLFW_KEY_EQUAL: free_flight.speed_mps *= 1.5; break;
-                case GLFW_KEY_MINUS: free_flight.speed_mps /= 1.5; break;
-                case GLFW_KEY_P:
-                case GLFW_KEY_F12: screenshot = true; break;
-                case GLFW_KEY_H:
-                    hud = !hud;
-                    if (!hud) flight.renderer().hide_hud();
-                    title_time = 1.0;  // shown (or its title refreshed) this frame, not in 0.25 s
-                    break;
-                case GLFW_KEY_F1: std::printf("%s", kKeys); break;
-                case GLFW_KEY_K:
-                    if (!recording) {
-                        recording = true;
-                        recorded.clear();
-                        record_t = 0;
-                        std::printf("recording to %s\n", a.record.c_str());
-                    } else {
-                        recording = false;
-                        const fly::FlightPath p(recorded);
-                        write_atomically(a.record, [&](const std::filesystem::path& tmp) {
-                            std::ofstream(tmp) << fly::flight_path_csv(p);
-                        });
-                        std::printf("wrote %s (%zu poses)\n", a.record.c_str(), recorded.size());
-                    }
-                    break;
-                default: break;
-            }
-        }
-        if (quit) break;
-        std::fflush(stdout);
-        if (!paused) {
-            path_t += dt;
-            if (path_t > path.start_s() + path.duration_s()) path_t = path.start_s();
-        }
-        const double boost = held(in, GLFW_KEY_LEFT_SHIFT) ? 5.0 : 1.0;
-        if (mode == fly::CameraMode::free) {
-            const double f = (held(in, GLFW_KEY_W) ? 1.0 : 0.0) - (held(in, GLFW_KEY_S) ? 1.0 : 0.0);
-            const double r = (held(in, GLFW_KEY_D) ? 1.0 : 0.0) - (held(in, GLFW_KEY_A) ? 1.0 : 0.0);
-            const double up = (held(in, GLFW_KEY_R) ? 1.0 : 0.0) - (held(in, GLFW_KEY_F) ? 1.0 : 0.0);
-            free_flight.move(f, r, up, dt * boost);
-            const double turn_h = (held(in, GLFW_KEY_RIGHT) ? 60.0 : 0.0) - (held(in, GLFW_KEY_LEFT) ? 60.0 : 0.0);
-            const double turn_p = (held(in, GLFW_KEY_UP) ? 40.0 : 0.0) - (held(in, GLFW_KEY_DOWN) ? 40.0 : 0.0);
-            free_flight.turn(turn_h * dt + 0.15 * in.mouse_dx, turn_p * dt - 0.15 * in.mouse_dy);
-            const double floor = flight.ground_height_m(free_flight.pose.eye) + 2.0;
-            free_flight.pose.eye.z = std::max(free_flight.pose.eye.z, floor);
-            camera = free_flight.pose;
-        } else if (mode == fly::CameraMode::orbit) {
-            const double turn_h = (held(in, GLFW_KEY_RIGHT) ? 45.0 : 0.0) - (held(in, GLFW_KEY_LEFT) ? 45.0 : 0.0);
-            orbit.turn(turn_h * dt + 0.2 * in.mouse_dx, 0.2 * in.mouse_dy);
-            if (held(in, GLFW_KEY_UP)) orbit.zoom(std::pow(0.5, dt));
-            if (held(in, GLFW_KEY_DOWN)) orbit.zoom(std::pow(2.0, dt));
-            camera = orbit.pose();
-        } else {
-            camera = camera_for(mode, flight.pose_of(path.at(path_t)));
-        }
-        if (recording) {
-            record_t += dt;
-            const fly::CameraPose& rec = mode == fly::CameraMode::free ? camera : flight.pose_of(path.at(path_t));
-            if (recorded.empty() || record_t > recorded.back().t_s + 1e-3)
-                recorded.push_back(flight.flight_pose_of(rec, record_t));
-        }
-        flight.set_time(time);
-
-        int fw = 0, fh = 0;
-        window.framebuffer_size(fw, fh);
-        if (fw == 0 || fh == 0) continue;  // minimised
-        if (fw != flight.renderer().width() || fh != flight.renderer().height()) {
-            flight.context().device().wait_idle();
-            flight.renderer().resize(fw, fh);
-        }
-        const Stopwatch frame_watch;
-        const fly::CameraPose aircraft = flight.pose_of(path.at(path_t));
-        flight.prepare(camera, u, st, mode == fly::CameraMode::cockpit ? nullptr : &aircraft);
-        std::uint32_t image = 0;
-        const Stopwatch draw_watch;
-        if (window.begin(image)) {
-            flight.renderer().record(window.commands(), u, flight.patches());
-            window.end(flight.renderer().color_image(), flight.renderer().width(), flight.renderer().height(),
-                       image);
-        }
-        draw_ms = draw_watch.milliseconds();
-        frame_ms = frame_watch.milliseconds();
-        if (screenshot) {
-            std::vector<std::uint8_t> rgba;
-            flight.renderer().render_to_memory(u, flight.patches(), rgba);
-            char name[48];
-            std::snprintf(name, sizeof name, "fly_screenshot_%03d.png", shots++);
-            const std::filesystem::path file = std::filesystem::path(shot_dir) / name;
-            write_rgba_png(file, flight.renderer().width(), flight.renderer().height(), rgba);
-            std::printf("wrote %s\n", file.string().c_str());
-        }
-        ++fps_frames;
-        ++frames_drawn;
-        fps_time += dt;
-        title_time += dt;
-        if (fps_time >= 0.5) {
-            fps = fps_frames / fps_time;
-            fps_frames = 0;
-            fps_time = 0;
-        }
-        if (title_time >= 0.25) {
-            title_time = 0;
-            char lead[32];
-            std::snprintf(lead, sizeof lead, "%.0f fps", fps);
-            const fly::HudStatus status =
-                hud_status(flight, lead, st, frame_ms, draw_ms, camera, time, mode, paused, recording);
-            window.set_title(fly::hud_title(status));
-            // Drawn from the next frame on; the text changes at this 4 Hz, so the overlay is
-            // copied to the device no more often.
-            if (hud) show_hud(flight.renderer(), status);
+// A pose under the terrain would put the camera inside it (a frame of garbage): refused, naming
+// the pose and how far below it is.
+void refuse_poses_below_terrain(const gpu::Flythrough& flight, const fly::FlightPath& path, const std::string& file) {
+    const auto& poses = path.poses();
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        const double ground = flight.ground_height_m(flight.pose_of(poses[k]).eye);
+        if (poses[k].height_m < ground) {
+            char line[256];
+            std::snprintf(line, sizeof line,
+                          "--path %s: pose %zu (t_s %g) is %.1f m below the terrain (height %.1f m, ground %.1f m)",
+                          file.c_str(), k + 1, poses[k].t_s, ground - poses[k].height_m, poses[k].height_m, ground);
+            throw InputError(line);
         }
     }
-    if (recording && !recorded.empty()) {
-        const fly::FlightPath p(recorded);
-        write_atomically(a.record, [&](const std::filesystem::path& tmp) { std::ofstream(tmp) << fly::flight_path_csv(p); });
-        std::printf("wrote %s (%zu poses)\n", a.record.c_str(), recorded.size());
-    }
-    flight.context().device().wait_idle();
 }
 
 void run_fly(const FlyArgs& a) {
@@ -455,12 +254,12 @@ void run_fly(const FlyArgs& a) {
     const fly::CameraMode mode = parse_camera_mode(a.camera);
     const light::UtcTime time = light::parse_utc_time(a.time);
     light::parse_sky_options(a.sky);
-    if (a.frames < 0) throw InputError("--frames must be >= 1");
+    if (a.frames_given && a.frames < 1)
+        throw InputError("--frames " + std::to_string(a.frames) + ": a count of frames, >= 1 (without --frames: the window)");
     if (a.exit_after < 0) throw InputError("--exit-after must be >= 0");
     const bool offscreen = a.frames > 0;
     if (offscreen && a.out.empty()) throw InputError("fly: --frames N needs --out DIR");
     parse_hud(a.hud, offscreen);
-    if (a.directions < 4 || a.directions > 256) throw InputError("--directions must be in [4, 256]");
     if (!(a.pixel_error > 0.05 && a.pixel_error <= 100)) throw InputError("--pixel-error must be in (0.05, 100]");
     if (a.patch_quads < 4 || a.patch_quads > 128 || (a.patch_quads & (a.patch_quads - 1)) != 0)
         throw InputError("--patch-quads must be a power of two in [4, 128]");
@@ -475,15 +274,13 @@ void run_fly(const FlyArgs& a) {
     }
     if (!(a.haze_km >= 0)) throw InputError("--haze-km must be >= 0");
     if (!(a.mesh_scale > 0)) throw InputError("--mesh-scale must be > 0");
-    const double forward_yaw = a.mesh_forward == "+y" ? 0.0 : a.mesh_forward == "-x" ? -90.0
-                             : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 1e9;
-    if (forward_yaw > 360.0) throw InputError("--mesh-forward " + a.mesh_forward + ": give +x, -x, +y or -y");
+    const double forward_yaw = a.mesh.empty() ? 0.0 : mesh::forward_yaw_deg(mesh_forward_axis(a.mesh_forward, a.mesh));
     blockers::DecompositionOptions decomposition;
     decomposition.count = a.spheres;
     try {
         blockers::validate(decomposition);
-    } catch (const InputError& e) {
-        throw InputError(std::string("--spheres: ") + e.what());
+    } catch (const QuantityError& e) {
+        throw InputError(flag_message(e, "fly"));
     }
     if (!(a.min_solid_angle_sr > 0 && a.min_solid_angle_sr < 2.0 * kPi))
         throw InputError("--blocker-min-solid-angle must be in (0, 2 pi) steradians");
@@ -495,6 +292,7 @@ void run_fly(const FlyArgs& a) {
     plan.inputs("DEM", a.dem.files);
     plan.input("--path", a.path);
     plan.input("--mesh", a.mesh);
+    plan.input("--sky", light::parse_sky_options(a.sky).hdr_path);
     if (offscreen) plan.output_directory("--out", a.out);
     plan.check();
 
@@ -555,7 +353,10 @@ void run_fly(const FlyArgs& a) {
                             double(gpu::whole_fly_bytes(texels)) / 1048576.0, a.memory_budget_mb);
         }
     }
-    const dem::Dem dem = source ? dem::Dem{} : load_dem_input(a.dem);
+    dem::Dem dem = source ? dem::Dem{} : load_dem_input(a.dem);
+    // The mesh needs a height everywhere: what is outside the terrain (a nodata collar, holes
+    // too wide to fill, every void with --no-fill) is drawn as a floor at the lowest height.
+    if (!source) dem::floor_outside(dem);
     if (!source && !a.dem.crop.empty()) check_whole_fly_memory(dem.width, dem.height);
     if (!source && (dem.width < 2 || dem.height < 2)) throw InputError("fly: the DEM needs at least 2x2 texels");
     if (bounds) {
@@ -566,7 +367,8 @@ void run_fly(const FlyArgs& a) {
         const quality::RadianceChoice c = quality::choose_radiance(bounds->radiance, scene);
         settings.directions = c.directions;
         if (bounds->pixels) settings.lod.pixel_error = *bounds->pixels;
-        std::printf("%s; screen-space error: --pixel-error %g px at the %g quantile of texels%s\n", c.reason.c_str(),
+        std::printf("%s; screen-space error: --pixel-error %g px at the %g quantile of texels%s\n",
+                    max_error_line(c.reason).c_str(),
                     settings.lod.pixel_error, settings.lod.error_quantile,
                     bounds->pixels ? "" : " (give --max-error E,PX to bound it)");
         std::fflush(stdout);
@@ -576,6 +378,7 @@ void run_fly(const FlyArgs& a) {
                                                            : std::make_unique<gpu::Flythrough>(dem, settings, *context);
     gpu::Flythrough& flight = *flight_owner;
     const fly::FlightPath path = given_path ? *given_path : default_path(flight);
+    if (given_path) refuse_poses_below_terrain(flight, *given_path, a.path);
     if (!a.mesh.empty()) {
         const mesh::TriangleMesh aircraft = mesh::import_mesh(a.mesh);
         std::vector<blockers::Sphere> spheres;
@@ -587,6 +390,7 @@ void run_fly(const FlyArgs& a) {
             std::printf("aircraft %s: %zu triangles, %zu spheres (%s)\n", a.mesh.c_str(), aircraft.triangle_count(),
                         spheres.size(), d.cached ? "cached" : "decomposed now");
         }
+        if (a.verbose) std::printf("aircraft %s: %s\n", a.mesh.c_str(), describe_mesh_forward(a.mesh_forward, a.mesh).c_str());
         flight.set_aircraft(aircraft, a.mesh_scale, forward_yaw, spheres);
     }
     const double relight_ms = flight.set_time(time);
@@ -597,7 +401,13 @@ void run_fly(const FlyArgs& a) {
         run_frames(a, flight, path, mode);
     } else {
         window->attach(flight.context(), a.vsync == "on");
-        run_window(a, flight, *window, path, mode, time);
+        gpu::FlyWindowLoop loop;
+        loop.keys_help = kKeys;
+        loop.shot_dir = a.out.empty() ? "." : a.out;
+        loop.record = a.record;
+        loop.hud = parse_hud(a.hud, false);
+        loop.exit_after = a.exit_after;
+        gpu::run_window(loop, flight, *window, path, mode, time);
         window.reset();
     }
     // TERRASHADE_VALIDATION=1: what the validation layer reported (the tests want none).
@@ -611,9 +421,8 @@ void add_fly_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand("fly", "fly over the terrain in a window (Vulkan), or render a path's frames offscreen");
     cmd->footer(kKeys);
     add_dem_input_options(*cmd, args->dem);
-    cmd->add_option("--time", args->time, "UTC time of the sun (ISO 8601; [ and ] change it in the window)")
-        ->capture_default_str();
-    cmd->add_option("--sky", args->sky, "sky model: clear[:turbidity=T], overcast, or an HDR map")->capture_default_str();
+    add_time_option(*cmd, args->time);  // [ and ] change it in the window
+    add_sky_option(*cmd, args->sky);
     cmd->add_option("--size", args->size, "window or frame size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--vsync", args->vsync, "on: present at the display's rate; off: as fast as it renders")
         ->capture_default_str();
@@ -621,9 +430,7 @@ void add_fly_command(CLI::App& root) {
                     "flight path CSV: t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg (default: straight over the DEM)");
     cmd->add_option("--mesh", args->mesh, "aircraft mesh drawn along the path (AC3D, glTF, OBJ, ...)");
     cmd->add_option("--mesh-scale", args->mesh_scale, "scale of the aircraft mesh")->capture_default_str();
-    cmd->add_option("--mesh-forward", args->mesh_forward,
-                    "the mesh's nose axis after import: +x, -x, +y or -y (the shared Cessna: -x)")
-        ->capture_default_str();
+    add_mesh_forward_option(*cmd, args->mesh_forward);
     cmd->add_option("--spheres", args->spheres,
                     "bounding spheres of the aircraft that cast its shadows, 8..512 (cached on disk)")
         ->capture_default_str();
@@ -642,13 +449,12 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--hud", args->hud,
                     "on|off: the HUD (fps, timings, position, sun, camera) drawn in the frame's top-left corner "
                     "(default on in the window, H toggles it; off with --frames)");
-    cmd->add_option("--frames", args->frames, "render N frames of the path offscreen instead of a window (needs --out)");
+    cmd->add_option("--frames", args->frames, "render N >= 1 frames of the path offscreen instead of a window (needs --out)")
+        ->each([a = args.get()](const std::string&) { a->frames_given = true; });
     cmd->add_option("--exit-after", args->exit_after, "close the window after N frames (scripts and tests; 0 = never)");
     cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
     cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
-    cmd->add_option("--directions", args->directions, "horizon azimuths of the visibility (once per DEM)")
-        ->capture_default_str()
-        ->each([a = args.get()](const std::string&) { a->directions_given = true; });
+    add_directions_option(*cmd, args->directions, &args->directions_given);  // once per DEM
     cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
         ->capture_default_str()
         ->each([a = args.get()](const std::string&) { a->pixel_error_given = true; });
@@ -673,6 +479,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--overview-level", args->overview_level,
                     "streamed DEMs: the overview keeps every 2^L-th texel (0: the finest that fits a quarter of the budget)")
         ->capture_default_str();
+    add_verbose_flag(*cmd, args->verbose);
     cmd->callback([args] { run_fly(*args); });
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/raster/geotiff_georef.hpp"
+#include "core/raster/image_writer_registry.hpp"
 #include "core/raster/png_writer.hpp"
 #include "core/raster/tiff_file.hpp"
 #include "core/util/atomic_file.hpp"
@@ -15,14 +16,6 @@
 namespace ts::raster {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
-bool is_tiff_extension(const std::string& ext) { return ext == ".tif" || ext == ".tiff"; }
 
 void check_size(const std::filesystem::path& path, int width, int height, int planes) {
     if (width <= 0 || height <= 0 || planes <= 0)
@@ -73,7 +66,7 @@ void write_strips(TiffFile& file, int height, int planes_separate, std::size_t r
 
 void write_float_raster(const std::filesystem::path& path, int width, int height, int bands, const float* data,
                         const geo::Georef& georef, const std::vector<std::string>& band_names) {
-    if (!is_tiff_extension(lower_extension(path)))
+    if (!written_as(path, ImageWriter::geotiff))
         throw input_error(path.string(), "unknown extension for a float raster (use .tif or .tiff)");
     check_size(path, width, height, bands);
     if (!georef.valid()) throw input_error(path.string(), "float raster without georeferencing");
@@ -111,17 +104,16 @@ void write_float_raster(const std::filesystem::path& path, int width, int height
 
 void write_u8_image(const std::filesystem::path& path, int width, int height, int channels, const std::uint8_t* data,
                     const geo::Georef* georef, std::optional<int> nodata) {
-    const std::string ext = lower_extension(path);
     check_size(path, width, height, channels);
-    if (channels != 1 && channels != 3 && channels != 4)
-        throw input_error(path.string(), "an 8-bit image has 1, 3 or 4 channels, not " + std::to_string(channels));
-    if (ext == ".png") {
+    if (channels < 1 || channels > 4)
+        throw input_error(path.string(), "an 8-bit image has 1 to 4 channels, not " + std::to_string(channels));
+    if (written_as(path, ImageWriter::png)) {
         write_atomically(path, [&](const std::filesystem::path& tmp) {
             write_png(tmp, path, width, height, channels, data);
         });
         return;
     }
-    if (!is_tiff_extension(ext))
+    if (!written_as(path, ImageWriter::geotiff))
         throw input_error(path.string(), "unknown image extension '" + path.extension().string() + "' (use .png or .tif)");
     const std::size_t row_bytes = std::size_t(width) * std::size_t(channels);
     write_atomically(path, [&](const std::filesystem::path& tmp) {
@@ -133,8 +125,8 @@ void write_u8_image(const std::filesystem::path& path, int width, int height, in
         TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_UINT);
         TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, channels);
         TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
-        TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, channels == 1 ? PHOTOMETRIC_MINISBLACK : PHOTOMETRIC_RGB);
-        if (channels == 4) {
+        TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, channels <= 2 ? PHOTOMETRIC_MINISBLACK : PHOTOMETRIC_RGB);
+        if (channels == 2 || channels == 4) {
             std::uint16_t alpha = EXTRASAMPLE_UNASSALPHA;
             TIFFSetField(tif, TIFFTAG_EXTRASAMPLES, 1, &alpha);
         }

@@ -18,7 +18,7 @@ void write_float_raster(const std::filesystem::path& path, int width, int height
                         const geo::Georef& georef, const std::vector<std::string>& band_names = {});
 
 // 8-bit image by extension: .png (libpng) or .tif/.tiff (GeoTIFF, georeferenced when
-// georef != nullptr); channels 1 (grey), 3 (RGB) or 4 (RGBA), interleaved, row-major;
+// georef != nullptr); channels 1 (grey), 2 (grey + alpha), 3 (RGB) or 4 (RGBA), interleaved, row-major;
 // `nodata` becomes the GDAL_NODATA tag of a .tif (gdaldem hillshade writes 0).
 void write_u8_image(const std::filesystem::path& path, int width, int height, int channels, const std::uint8_t* data,
                     const geo::Georef* georef, std::optional<int> nodata = std::nullopt);

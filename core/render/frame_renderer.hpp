@@ -23,7 +23,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/shading_state.hpp"
-#include "core/render/sky_table.hpp"
+#include "core/light/sky_table.hpp"
 #include "core/render/view_shading.hpp"
 
 namespace ts::render {
@@ -58,7 +58,7 @@ private:
     // Per-frame scratch, allocated once.
     std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
     std::vector<float> sun_vis_;
-    SkyTable sky_table_;
+    light::SkyTable sky_table_{light::SkyGrid::whole_sphere(128, 64)};
     FrameTimings timings_;
 };
 

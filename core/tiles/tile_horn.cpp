@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/geo/azimuth.hpp"
+#include "core/render/horn.hpp"
 #include "core/util/angles.hpp"
 
 namespace ts::tiles {
@@ -28,10 +29,23 @@ void for_each_gradient(const TileFrame& f, const std::vector<float>& h, double v
             const float* a = north + i;
             const float* d = mid + i;
             const float* g = south + i;
-            // window a[0] a[1] a[2] / d[0] . d[2] / g[0] g[1] g[2], as core/render/hillshade.cpp
-            const double dz_de = (double(a[2]) + 2.0 * d[2] + g[2] - (double(a[0]) + 2.0 * d[0] + g[0])) * k;
-            const double dz_dn = (double(a[0]) + 2.0 * a[1] + a[2] - (double(g[0]) + 2.0 * g[1] + g[2])) * k;
-            out[o] = shade(dz_de, dz_dn);
+            if (std::isnan(a[0] + a[1] + a[2] + d[0] + d[1] + d[2] + g[0] + g[1] + g[2])) {
+                // At the edge of the terrain (a nodata collar beside it): a height outside takes
+                // the centre's, as core/render/hillshade.cpp's edges; no height at the centre
+                // leaves the value 0 (the caller makes it transparent).
+                if (std::isnan(d[1])) {
+                    out[o] = 0;
+                    continue;
+                }
+                float v[9] = {a[0], a[1], a[2], d[0], d[1], d[2], g[0], g[1], g[2]};
+                for (float& x : v)
+                    if (std::isnan(x)) x = d[1];
+                const render::HornGradient edge = render::horn_gradient(v, v + 3, v + 6, k, k);
+                out[o] = shade(edge.dz_de, edge.dz_dn);
+                continue;
+            }
+            const render::HornGradient grad = render::horn_gradient(a, d, g, k, k);
+            out[o] = shade(grad.dz_de, grad.dz_dn);
         }
     }
 }
@@ -43,14 +57,7 @@ void horn_hillshade(const TileFrame& f, const std::vector<float>& heights, doubl
     const glm::dvec3 s = geo::enu_direction(geo::azimuth_cw_from_north_to_phi(light.azimuth_deg),
                                             light.altitude_deg * kPi / 180.0);
     for_each_gradient(f, heights, vertical_scale, covered, out,
-                      [&](double e, double n) {
-                          // render::shade_value, inlined (a third of a hillshade tile's time was the
-                          // call and its lround); 1 + 254 cos > 0.5 so + 0.5 and truncation round
-                          // to nearest as lround does.
-                          const double cosine = (s.z - e * s.x - n * s.y) / std::sqrt(1.0 + e * e + n * n);
-                          if (!(cosine > 0.0)) return std::uint8_t(1);
-                          return std::uint8_t(std::min(255.0, 1.0 + 254.0 * cosine) + 0.5);
-                      });
+                      [&](double e, double n) { return render::shade_value(e, n, s.x, s.y, s.z); });
 }
 
 MultidirectionalLight::MultidirectionalLight(double altitude_deg) {

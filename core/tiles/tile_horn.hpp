@@ -19,7 +19,8 @@ struct HornLight {
 };
 
 // heights: (size + 2)^2 floats, row-major with the halo; out: size^2 values 1..255, written only
-// where `covered` (size^2 bytes, nonzero = covered) says so.
+// where `covered` (size^2 bytes, nonzero = covered) says so; 0 where the pixel's own height is
+// NaN (outside the terrain). A NaN elsewhere in the 3x3 window takes the centre's height.
 void horn_hillshade(const TileFrame& f, const std::vector<float>& heights, double vertical_scale,
                     const HornLight& light, const std::uint8_t* covered, std::uint8_t* out);
 // gdaldem -multidirectional (Mark 1992: azimuths 225, 270, 315, 360 weighted by aspect).

@@ -90,7 +90,9 @@ void shade_pixels(const Sampler& sample, int channels, const TileScratch& sc, co
         for (std::size_t k = 0; k < sc.covered.size(); ++k) {
             if (!sc.covered[k]) continue;
             const glm::dvec2 p = sc.at[k];
-            out.pixels[2 * k] = code(sample(level_x(p.x), level_x(p.y), 0));
+            const float v = sample(level_x(p.x), level_x(p.y), 0);
+            if (std::isnan(v)) continue;  // next to texels outside the terrain: transparent
+            out.pixels[2 * k] = code(v);
             out.pixels[2 * k + 1] = 255;
         }
         return;
@@ -100,7 +102,9 @@ void shade_pixels(const Sampler& sample, int channels, const TileScratch& sc, co
         if (!sc.covered[k]) continue;
         const glm::dvec2 p = sc.at[k];
         const double x = level_x(p.x), y = level_x(p.y);
-        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = code(sample(x, y, c));
+        const float rgb[3] = {sample(x, y, 0), sample(x, y, 1), sample(x, y, 2)};
+        if (std::isnan(rgb[0] + rgb[1] + rgb[2])) continue;  // next to texels outside the terrain
+        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = code(rgb[c]);
         out.pixels[4 * k + 3] = 255;
     }
 }
@@ -141,6 +145,7 @@ void shade_grey_cubic_separable(const ShadeSource& source, const TileScratch& sc
                 for (int x = 0; x < 4; ++x) acc += c.weight[x] * line[y][c.index[x]];
                 sum += r.weight[y] * acc;
             }
+            if (std::isnan(sum)) continue;  // next to texels outside the terrain: transparent
             out.pixels[2 * k] = code(sum);
             out.pixels[2 * k + 1] = 255;
         }
@@ -196,7 +201,8 @@ void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, con
 
 void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,
                  TileScratch& sc, TileImage& out) {
-    const bool horn = !uses_visibility(shading.style);
+    const TileStyle& style = *shading.style;
+    const bool horn = !style.uses_visibility();
     const int halo = horn ? 1 : 0;
     const int n = f.size, m = n + 2 * halo;
     if (horn)
@@ -224,12 +230,9 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
     if (horn) {
         sc.grey.assign(std::size_t(n) * n, 0);
         const HornLight light{shading.sun_azimuth_deg, shading.sun_elevation_deg};
-        if (shading.style == TileStyle::hillshade)
-            horn_hillshade(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
-        else
-            horn_multidirectional(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
-        for (std::size_t k = 0; k < sc.grey.size(); ++k)
-            if (sc.covered[k]) out.pixels[2 * k] = sc.grey[k], out.pixels[2 * k + 1] = 255;
+        style.shade_tile(f, sc.values, source.vertical_scale, light, sc.covered.data(), sc.grey.data());
+        for (std::size_t k = 0; k < sc.grey.size(); ++k)  // grey 0: no height there (outside the terrain)
+            if (sc.covered[k] && sc.grey[k]) out.pixels[2 * k] = sc.grey[k], out.pixels[2 * k + 1] = 255;
         return;
     }
     if (shading.resampling == Resampling::cubic && source.channels == 1 && map.separable()) {

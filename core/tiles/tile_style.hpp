@@ -1,20 +1,62 @@
 #pragma once
 // What a tile shows and how it is lit (docs/tiles.md, "Styles").
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/light/sky.hpp"
 
 namespace ts::tiles {
 
-enum class TileStyle {
-    relief,            // grey shaded relief: sun with cast shadows + sky through log-SH visibility
-    hillshade,         // Horn, as gdaldem hillshade on the tile's pixels
-    multidirectional,  // as gdaldem hillshade -multidirectional
-    svf,               // sky view factor, grey
-    color,             // the renderer's rule materials under sun and sky
+struct TileFrame;
+struct HornLight;
+struct BlockShading;
+
+// One tile style: its name, what its zoom's source holds, how a tile's pixels are made and
+// which options it takes. One class per style, each in its own file (relief_style.cpp,
+// hillshade_style.cpp, multidirectional_style.cpp, svf_style.cpp, color_style.cpp), listed in
+// tile_styles() (tile_style.cpp). A new style is one file and one line there
+// (docs/architecture.md).
+class TileStyle {
+public:
+    virtual ~TileStyle() = default;
+    // The name users give (`--style`), lower case.
+    virtual std::string_view name() const = 0;
+    // Styles with visibility shade their values once over each zoom's DEM level
+    // (shade_source.hpp, shade_block); the others shade each tile from its heights (shade_tile).
+    virtual bool uses_visibility() const = 0;
+    // Values per source texel: 1 (grey) or 3 (RGB).
+    virtual int channels() const { return 1; }
+    // The level's true (not exaggerated) heights are kept for shade_block (land cover).
+    virtual bool needs_true_heights() const { return false; }
+    // Values relative to open flat ground under the same light (BlockShading::flat).
+    virtual bool relative_to_flat() const { return false; }
+    // Without a far field a block is shaded on its core grown by the halo; false: on its core,
+    // its horizons swept over the whole level.
+    virtual bool halo_without_far_field() const { return true; }
+    // The radiance error bound chooses its directions (per zoom, per block).
+    virtual bool takes_max_error() const { return false; }
+    // Takes a contrast about open flat ground (TileShading::relief_contrast).
+    virtual bool takes_relief_contrast() const { return false; }
+
+    // Styles without visibility: a tile's grey values 1..255 from its heights ((size + 2)^2
+    // with the 1-px halo), written where `covered`.
+    virtual void shade_tile(const TileFrame& f, const std::vector<float>& heights, double vertical_scale,
+                            const HornLight& light, const std::uint8_t* covered, std::uint8_t* out) const;
+    // Styles with visibility: `channels` display-linear values per texel of the block's window.
+    virtual std::vector<float> shade_block(const BlockShading& block) const;
 };
+
+// Every style, in the order users read them (registry in tile_style.cpp).
+const std::vector<const TileStyle*>& tile_styles();
+// The style of that name, or null.
+const TileStyle* find_tile_style(std::string_view name);
+// The default style (relief).
+const TileStyle& default_tile_style();
+// "relief | hillshade | ..." for help texts.
+std::string tile_style_names(std::string_view separator);
 
 // How a block of a level shaded in blocks sees the terrain beyond its halo (shade_source.hpp).
 enum class FarFieldMethod {
@@ -43,13 +85,10 @@ Resampling parse_resampling(std::string_view text);
 std::string_view resampling_name(Resampling r);
 
 // "relief", "hillshade", ...; throws ts::InputError naming --style otherwise.
-TileStyle parse_tile_style(std::string_view text);
-std::string_view tile_style_name(TileStyle s);
-// True for the styles computed from visibility over the whole DEM (relief, svf, color).
-inline bool uses_visibility(TileStyle s) { return s == TileStyle::relief || s == TileStyle::svf || s == TileStyle::color; }
+const TileStyle& parse_tile_style(std::string_view text);
 
 struct TileShading {
-    TileStyle style = TileStyle::relief;
+    const TileStyle* style = &default_tile_style();
     // The light, user-facing degrees (azimuth clockwise from north). Cartographic default: from
     // the north-west, 45 deg up. --time sets them from the sun's position instead.
     double sun_azimuth_deg = 315.0;

@@ -155,11 +155,11 @@ double Flythrough::set_time(light::UtcTime time) {
         cache_->set_sun(sun_);
         upload_tiles();
     }
-    sky_table_ = fly::make_sky_table(sky);
+    sky_table_.update(sky);
     sky_sh_ = light::project_sky_sh(sky);
     aircraft_light_ = {sky_sh_, 1.0f};
     aircraft_lit_ = false;
-    renderer_->set_sky(sky_table_.rgb);
+    renderer_->set_sky(fly::sky_buffer(sky_table_));
     const light::SunDisc disc = sky.sun();
     sun_dir_ = glm::vec3(disc.direction);
     sun_radiance_ = fly::sun_disc_radiance(disc);
@@ -419,8 +419,8 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
     }
     u.overview = glm::vec4(float(scene_->grid().width), float(scene_->grid().height),
                            overview_ ? float(1 << overview_->level) : 1.0f, float(tree_->stored_level()));
-    u.sky_table = glm::vec4(float(sky_table_.azimuths), float(sky_table_.elevations), float(sky_table_.lowest_rad),
-                            float(sky_table_.highest_rad));
+    const light::SkyGrid& sg = sky_table_.grid();
+    u.sky_table = glm::vec4(float(sg.azimuths), float(sg.elevations), float(sg.first_el), float(sg.last_el));
 }
 
 }  // namespace ts::gpu

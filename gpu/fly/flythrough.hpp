@@ -24,7 +24,7 @@
 #include "core/fly/cdlod_tree.hpp"
 #include "core/fly/flight_path.hpp"
 #include "core/fly/grid_frame.hpp"
-#include "core/fly/sky_table.hpp"
+#include "core/fly/fly_sky.hpp"
 #include "core/fly/detail_tile_cache.hpp"
 #include "core/fly/terrain_overview.hpp"
 #include "core/dem/dem_source.hpp"
@@ -165,7 +165,7 @@ private:
     glm::vec3 sun_dir_{0, 0, 1}, sun_radiance_{0.0f};
     double sun_cos_radius_ = 1.0;
     double exposure_ = 1.0;
-    fly::FlySkyTable sky_table_;
+    light::SkyTable sky_table_{fly::fly_sky_grid()};
     light::SkySh sky_sh_{};
     double aircraft_scale_ = 1.0, aircraft_yaw_deg_ = 0.0;
     std::size_t aircraft_triangles_ = 0;

@@ -166,10 +166,10 @@ TEST(StreamedCdlod, AMissingTileDrawsItsNodesCoarserAndIsRequested) {
     EXPECT_GT(partial.screen_error_px, all.screen_error_px);
     // Elsewhere the selection is unchanged.
     auto outside = [&](const CdlodSelection& sel) {
-        CdlodSelection o;
+        CdlodSelection kept;
         for (const CdlodPatch& p : sel.patches)
-            if (!(int(p.col0) / 256 == 1 && int(p.row0) / 256 == 1)) o.patches.push_back(p);
-        return keys(o);
+            if (!(int(p.col0) / 256 == 1 && int(p.row0) / 256 == 1)) kept.patches.push_back(p);
+        return keys(kept);
     };
     EXPECT_EQ(outside(all), outside(partial));
 }

@@ -138,11 +138,12 @@ TEST(RasterWriter, U8ImagesAsPngAndGeoTiff) {
 TEST(RasterWriter, UnknownExtensionsAndEmptyRastersThrow) {
     const fs::path dir = fresh_dir("bad");
     std::vector<float> data(4, 0.0f);
-    std::vector<std::uint8_t> px(4, 0);
+    std::vector<std::uint8_t> px(4 * 5, 0);
     const geo::Georef g = utm_georef(2, 2, true);
     EXPECT_THROW(raster::write_float_raster(dir / "x.png", 2, 2, 1, data.data(), g), InputError);
     EXPECT_THROW(raster::write_u8_image(dir / "x.bmpx", 2, 2, 1, px.data(), nullptr), InputError);
-    EXPECT_THROW(raster::write_u8_image(dir / "x.png", 2, 2, 2, px.data(), nullptr), InputError);
+    // 1 to 4 channels (grey, grey + alpha, RGB, RGBA) are pictures; 5 is not.
+    EXPECT_THROW(raster::write_u8_image(dir / "x.png", 2, 2, 5, px.data(), nullptr), InputError);
     EXPECT_THROW(raster::write_float_raster(dir / "x.tif", 0, 2, 1, data.data(), g), InputError);
     EXPECT_FALSE(fs::exists(dir / "x.tif"));
 }

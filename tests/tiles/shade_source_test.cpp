@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string_view>
+
 namespace ts::tiles {
 namespace {
 
@@ -40,10 +42,10 @@ struct Bounds {
     double rmse;      // display-linear
 };
 
-void expect_blocked_equals_whole(TileStyle style, FarFieldMethod far, const Bounds& b) {
+void expect_blocked_equals_whole(std::string_view style, FarFieldMethod far, const Bounds& b) {
     const dem::Dem dem = hills();
     TileShading s;
-    s.style = style;
+    s.style = find_tile_style(style);
     s.far_field = far;
     s.directions = 8;
     s.threads = 2;
@@ -71,23 +73,23 @@ void expect_blocked_equals_whole(TileStyle style, FarFieldMethod far, const Boun
 }
 
 TEST(ShadeSource, SvfInBlocksEqualsTheWholeLevel) {
-    expect_blocked_equals_whole(TileStyle::svf, FarFieldMethod::exact, {0.0f, 0.0, 0.0});
+    expect_blocked_equals_whole("svf", FarFieldMethod::exact, {0.0f, 0.0, 0.0});
 }
 
 TEST(ShadeSource, ReliefInBlocksEqualsTheWholeLevel) {
-    expect_blocked_equals_whole(TileStyle::relief, FarFieldMethod::exact, {0.005f, 0.005, 0.001});
+    expect_blocked_equals_whole("relief", FarFieldMethod::exact, {0.005f, 0.005, 0.001});
 }
 
 TEST(ShadeSource, ColorInBlocksEqualsTheWholeLevel) {
-    expect_blocked_equals_whole(TileStyle::color, FarFieldMethod::exact, {0.005f, 0.005, 0.001});
+    expect_blocked_equals_whole("color", FarFieldMethod::exact, {0.005f, 0.005, 0.001});
 }
 
 TEST(ShadeSource, SvfInBlocksWithTheFarFieldIsCloseToTheWholeLevel) {
-    expect_blocked_equals_whole(TileStyle::svf, FarFieldMethod::balanced, {0.05f, 1.0, 0.005});
+    expect_blocked_equals_whole("svf", FarFieldMethod::balanced, {0.05f, 1.0, 0.005});
 }
 
 TEST(ShadeSource, ReliefInBlocksWithTheFarFieldIsCloseToTheWholeLevel) {
-    expect_blocked_equals_whole(TileStyle::relief, FarFieldMethod::balanced, {0.05f, 1.0, 0.005});
+    expect_blocked_equals_whole("relief", FarFieldMethod::balanced, {0.05f, 1.0, 0.005});
 }
 
 // --relief-contrast k multiplies every texel's distance from open flat ground in stops by k:
@@ -101,7 +103,7 @@ TEST(ShadeSource, ReliefContrastStretchesEachTexelsStopsAboutTheFlat) {
     EXPECT_EQ(relief_grey(5.0, 1.5), 1.0f);  // clipped
     const dem::Dem dem = hills();
     TileShading s;
-    s.style = TileStyle::relief;
+    s.style = find_tile_style("relief");
     s.directions = 8;
     s.threads = 2;
     const ShadeSource one = make_shade_source(dem, s, 0, 1.0);
@@ -156,7 +158,7 @@ int shadow_end(const ShadeSource& src, int width, int row) {
 ShadowEnds shadow_ends(FarFieldMethod far) {
     const dem::Dem dem = ridge();
     TileShading s;
-    s.style = TileStyle::relief;
+    s.style = find_tile_style("relief");
     s.directions = 8;
     s.threads = 2;
     s.sun_azimuth_deg = 270, s.sun_elevation_deg = 15;

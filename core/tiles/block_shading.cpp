@@ -1,0 +1,124 @@
+#include "core/tiles/block_shading.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "core/render/frame_renderer.hpp"
+#include "core/render/shading_state.hpp"
+#include "core/render/tone_map.hpp"
+#include "core/render/view_shading.hpp"
+#include "core/terrain/terrain_normals.hpp"
+#include "core/visibility/window_visibility_backend.hpp"
+
+namespace ts::tiles {
+namespace {
+
+// Shades a block's window from the sun by the level's terrain beyond it (empty: none).
+using OuterSunShadow = std::function<void(const render::SunState&, std::vector<float>&)>;
+
+render::RendererOptions renderer_options(const TileShading& s, ProgressBar* progress,
+                                         visibility::VisibilityBackend* backend, OuterSunShadow outer_sun) {
+    render::RendererOptions o;
+    o.outer_sun_shadow = std::move(outer_sun);
+    o.directions = s.directions;
+    o.threads = s.threads;
+    o.progress = progress;
+    o.visibility = backend;
+    return o;
+}
+
+// One frame of radiance on `grid` with `materials`; `backend` null = the CPU on `grid`.
+std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::MaterialRaster materials,
+                                    const TileShading& s, ProgressBar* progress,
+                                    visibility::VisibilityBackend* backend = nullptr, OuterSunShadow outer_sun = {}) {
+    render::NormalField normals = render::terrain_normals(grid, s.threads);
+    auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals),
+                                               renderer_options(s, progress, backend, std::move(outer_sun)));
+    const render::ViewShading view = render::compute_view_shading(*state, {});
+    render::FrameRenderer frame(*state, view);
+    const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
+    const auto sky = light::make_sky(s.sky, render::sun_direction(sun));
+    std::vector<glm::vec3> radiance;
+    frame.render(*sky, sun, radiance);
+    return radiance;
+}
+
+}  // namespace
+
+render::MaterialRaster grey_materials(std::size_t n, float albedo) {
+    render::MaterialRaster m;
+    m.albedo_r.assign(n, albedo), m.albedo_g.assign(n, albedo), m.albedo_b.assign(n, albedo);
+    m.ks.assign(n, 0.0f), m.alpha.assign(n, 1.0f);
+    m.water.assign(n, 0);
+    m.surface.assign(n, render::Surface::bare);
+    return m;
+}
+
+double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
+    constexpr int n = 32;
+    const std::vector<float> z(std::size_t(n) * n, 0.0f);
+    const std::size_t mid_row = std::size_t(like.height / 2);
+    const terrain::HeightGrid flat = terrain::HeightGrid::uniform(n, n, z, like.dx_m[mid_row], like.dy_m[mid_row]);
+    TileShading quiet = s;
+    quiet.threads = 1;
+    const auto radiance = render_frame(flat, grey_materials(z.size(), 1.0f), quiet, nullptr);
+    return render::luminance(radiance[std::size_t(n / 2) * n + n / 2]);
+}
+
+terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,
+                                std::vector<std::uint8_t>& voids) {
+    z.resize(std::size_t(w.width) * std::size_t(w.height));
+    voids.assign(g.void_mask.empty() ? 0 : z.size(), 0);
+    for (int r = 0; r < w.height; ++r) {
+        const std::size_t from = g.index(w.col0, w.row0 + r), to = std::size_t(r) * std::size_t(w.width);
+        std::copy_n(g.z.data() + from, w.width, z.data() + to);
+        if (!voids.empty()) std::copy_n(g.void_mask.data() + from, w.width, voids.data() + to);
+    }
+    terrain::HeightGrid out;
+    out.width = w.width, out.height = w.height;
+    out.z = z;
+    out.void_mask = voids;
+    out.dx_m.assign(g.dx_m.begin() + w.row0, g.dx_m.begin() + w.row0 + w.height);
+    out.dy_m.assign(g.dy_m.begin() + w.row0, g.dy_m.begin() + w.row0 + w.height);
+    return out;
+}
+
+
+std::vector<glm::vec3> render_block(const BlockShading& b, const BlockMaterials& materials, bool true_heights) {
+    std::vector<float> wz, wtrue;
+    std::vector<std::uint8_t> wvoids, wtrue_voids;
+    std::unique_ptr<visibility::WindowFarFieldVisibility> backend;
+    terrain::HeightGrid g = b.grid, tg = b.true_grid;
+    OuterSunShadow outer_sun;
+    if (!b.whole) {
+        g = window_grid(b.grid, b.window, wz, wvoids);
+        if (true_heights) tg = window_grid(b.true_grid, b.window, wtrue, wtrue_voids);
+        backend = b.far ? std::make_unique<visibility::WindowFarFieldVisibility>(b.window, b.core, *b.far)
+                        : std::make_unique<visibility::WindowFarFieldVisibility>(b.window, b.core, b.grid);
+    }
+    // The far field shades the core from the sun past the halo (the sweep's shadows end there).
+    if (b.far) outer_sun = visibility::far_field_sun_shadow(b.window, b.core, *b.far, g);
+    return render_frame(g, materials(g, tg), b.shading, b.progress, backend.get(), outer_sun);
+}
+
+std::vector<float> block_svf(const BlockShading& b) {
+    const Rect& w = b.window;
+    visibility::VisibilityRequest request;
+    request.horizon.directions = b.shading.directions;
+    request.horizon.threads = b.shading.threads;
+    request.horizon.progress = b.progress;
+    request.horizon.window = {w.col0, w.row0, w.width, w.height};
+    request.svf = true;
+    visibility::VisibilityResult result;
+    if (b.far) {
+        std::vector<float> sz;
+        std::vector<std::uint8_t> svoids;
+        const terrain::HeightGrid g = window_grid(b.grid, w, sz, svoids);
+        result = visibility::WindowFarFieldVisibility(w, b.core, *b.far).compute(g, request);
+    } else {
+        result = visibility::make_cpu_visibility_backend()->compute(b.grid, request);
+    }
+    return std::vector<float>(result.svf.begin(), result.svf.end());
+}
+
+}  // namespace ts::tiles

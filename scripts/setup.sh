@@ -1,34 +1,45 @@
 #!/usr/bin/env bash
-# Installs every Debian package terrashade needs to build, run, test and chart.
-# Idempotent: packages already present are skipped by apt-get. Uses sudo when not root.
+# Installs the Debian packages terrashade needs (docs/dependencies.md says why each).
+# Usage: scripts/setup.sh [demo|test]
+#   demo: what building and running terrashade needs (scripts/demo.sh): the toolchain and the
+#         libraries it links, Mesa's Vulkan drivers to run on.
+#   test: that, plus the test oracles, headless display and browser, Slurm, clang for the fuzzers,
+#         charting, and the tile viewer's npm packages (scripts/test.sh; the default).
+# Idempotent: packages already present are skipped (no apt-get at all when all are present).
+# Uses sudo when not root.
 set -euo pipefail
+
+what="${1:-test}"
+case "$what" in demo|test) ;; *) echo "setup: usage: scripts/setup.sh [demo|test]" >&2; exit 2 ;; esac
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
-# Build toolchain and the libraries the code links against (see docs/dependencies.md).
-BUILD_PKGS=(
+# Build toolchain and the libraries terrashade links against.
+DEMO_PKGS=(
   build-essential cmake ninja-build pkg-config
+  mold                      # the linker, ~4x faster than GNU ld here (docs/dependencies.md)
   libgeographiclib-dev      # geodesy: local ENU frames, geodesics, UTM/UPS
-  libopenimageio-dev        # image I/O in tests; EXR/HDR environment maps
+  libopenimageio-dev        # EXR/HDR environment maps (the lazily loaded image module); image I/O in tests
   libisal-dev               # PNG compression: ISA-L igzip, the fastest deflate (docs/dependencies.md)
   libdeflate-dev            # PNG compression at higher levels, and CRC-32 (docs/dependencies.md)
-  libpng-dev                # tests: a PNG decoder besides OpenImageIO, and the earlier encoder as a reference
-  openimageio-tools
   libtiff-dev libgeotiff-dev  # GeoTIFF tags and GeoKeys (OIIO 2.4 does not expose them)
   libproj-dev proj-data     # CRS transforms for projections GeographicLib lacks
   libzip-dev zlib1g-dev     # .hgt.zip as distributed
   libglfw3-dev libglm-dev   # viewer window, vector math
-  libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
+  libvulkan-dev mesa-vulkan-drivers  # Vulkan, and lavapipe to run it without a GPU
   glslang-tools glslang-dev spirv-tools  # GLSL -> SPIR-V at build time
   libassimp-dev             # mesh import (AC3D, glTF, OBJ, ...)
   libsqlite3-dev            # MBTiles
   libcli11-dev              # command-line parsing
-  nlohmann-json3-dev        # JSON output (info --json) and parsing gdalinfo -json in tests
-  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  nlohmann-json3-dev        # JSON output (info --json)
 )
-# Test oracles, headless display and charting: never linked into terrashade.
+# The tests, benchmarks and charts: never linked into terrashade.
 TEST_PKGS=(
+  libgtest-dev libgmock-dev googletest libbenchmark-dev  # GoogleTest
+  libpng-dev                # tests: a PNG decoder besides OpenImageIO, and the earlier encoder as a reference
+  openimageio-tools
+  vulkan-tools vulkan-validationlayers  # every GPU test runs with the validation layer on
   gdal-bin                  # gdalinfo / gdalwarp / gdaldem as test oracles
   python3-gdal              # gdal2tiles.py: the classic tile pipeline `bench tiles` compares with
   saga                      # SAGA sky-view factor as a benchmark baseline
@@ -41,27 +52,31 @@ TEST_PKGS=(
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
 
+wanted=("${DEMO_PKGS[@]}")
+if [ "$what" = test ]; then wanted+=("${TEST_PKGS[@]}"); fi
 need=()
-for p in "${BUILD_PKGS[@]}" "${TEST_PKGS[@]}"; do
+for p in "${wanted[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     need+=("$p")
   fi
 done
 if [ "${#need[@]}" -gt 0 ]; then
-  echo "setup: installing ${#need[@]} packages: ${need[*]}"
+  echo "setup: installing ${#need[@]} packages ($what): ${need[*]}"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
 fi
-# npm (Debian's own package when the installed nodejs does not bring it), then the tile viewer's
-# packages from the npm registry into docs/tiles/node_modules (not committed): MapLibre GL JS for
-# the page, playwright-core to drive Debian's chromium in its test. Redone when the lock changes.
-if ! command -v npm >/dev/null 2>&1; then
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends npm >/dev/null
+if [ "$what" = test ]; then
+  # npm (Debian's own package when the installed nodejs does not bring it), then the tile viewer's
+  # packages from the npm registry into docs/tiles/node_modules (not committed): MapLibre GL JS for
+  # the page, playwright-core to drive Debian's chromium in its test. Redone when the lock changes.
+  if ! command -v npm >/dev/null 2>&1; then
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends npm >/dev/null
+  fi
+  viewer="$(cd "$(dirname "$0")/.." && pwd)/docs/tiles"
+  if ! cmp -s "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed" 2>/dev/null; then
+    echo "setup: npm ci in docs/tiles"
+    (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    cp "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed"
+  fi
 fi
-viewer="$(cd "$(dirname "$0")/.." && pwd)/docs/tiles"
-if ! cmp -s "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed" 2>/dev/null; then
-  echo "setup: npm ci in docs/tiles"
-  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  cp "$viewer/package-lock.json" "$viewer/node_modules/.package-lock.json.installed"
-fi
-echo "setup: all dependencies present"
+echo "setup: the $what dependencies are present"

@@ -4,7 +4,7 @@
 # (scripts/fuzz.sh, libFuzzer + ASan + UBSan; TS_FUZZ_SECONDS per reader, default 30).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh test
 ctest --preset release -j"$(nproc)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j"$(nproc)"

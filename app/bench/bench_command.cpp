@@ -1,8 +1,8 @@
-// `terrashade bench <what>`: measurements behind the charts in docs/. Each measured area is
-// one subcommand of `bench`; this file holds `bench sh` (SH exponentiation error and cost,
-// log-epsilon trade-off, the optimal-linear fit). Another area adds itself by declaring
-// `void add_bench_<area>_command(CLI::App& bench);` in app/bench/bench_command.hpp and calling
-// it from add_bench_command below.
+// `terrashade bench <what>` (the terrashade-bench executable): measurements behind the charts
+// in docs/. Each measured area is one subcommand of `bench`; this file holds `bench sh` (SH
+// exponentiation error and cost, log-epsilon trade-off, the optimal-linear fit). Another area
+// adds itself by declaring `void add_bench_<area>_command(CLI::App& bench);` in
+// app/bench/bench_command.hpp and calling it from add_bench_commands below.
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -13,9 +13,10 @@
 #include "app/bench/log_epsilon_study.hpp"
 #include "app/command.hpp"
 #include "app/io_plan.hpp"
-#include "core/sh/optimal_linear_fit.hpp"
+#include "app/bench/study/optimal_linear_fit.hpp"
 #include "core/util/staged_outputs.hpp"
 #include "core/util/error.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -98,29 +99,28 @@ void add_bench_sh_command(CLI::App& bench) {
     cmd->add_option("--exp-method", o->methods, "Methods to report (" + sh::exp_method_choices() + "); default all");
     cmd->add_option("--scenes", o->scenes, "Random log vectors per blocker count / magnitude")
         ->capture_default_str()
-        ->check(CLI::Range(1, 100000));
+        ->check(within(1, 100000));
     cmd->add_option("--log-eps", o->log_eps, "Visibility floor log(eps) of the random scenes")
         ->capture_default_str()
-        ->check(CLI::Range(-50.0, -1e-3));
+        ->check(within(-50.0, -1e-3));
     cmd->add_option("--taylor-order", o->exp.taylor_order, "Highest power for taylor and dc_isolation")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(within(1, 64));
     cmd->add_option("--squaring-threshold", o->exp.squaring_threshold,
                     "scaling_squaring: halve until the norm is below this")
         ->capture_default_str()
-        ->check(CLI::Range(1e-3, 100.0));
+        ->check(within(1e-3, 100.0));
     cmd->add_option("--hybrid-threshold", o->exp.hybrid_threshold,
                     "hybrid: optimal linear alone up to this non-DC magnitude, scaling and squaring above")
         ->capture_default_str()
-        ->check(CLI::Range(1e-3, 100.0));
+        ->check(within(1e-3, 100.0));
     cmd->callback([o] { run_bench_sh(*o); });
 }
 
 }  // namespace
 
-void add_bench_command(CLI::App& root) {
-    CLI::App* bench = root.add_subcommand("bench", "Measure accuracy and speed (the data behind the charts in docs/)");
-    bench->require_subcommand(1);
+void add_bench_commands(CLI::App& bench_app) {
+    CLI::App* bench = &bench_app;
     add_bench_sh_command(*bench);
     add_bench_visibility_command(*bench);
     add_bench_render_command(*bench);

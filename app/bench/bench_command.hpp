@@ -1,9 +1,13 @@
 #pragma once
-// The subcommands of `terrashade bench` (app/command.hpp declares `bench` itself). Each lives in
-// its own file of app/bench/ and is added to `bench` by add_bench_command (bench_command.cpp).
+// The subcommands of `terrashade bench`, the commands of the terrashade-bench executable
+// (bench_main.cpp; terrashade forwards `bench ...` to it, app/bench_forward.hpp). Each lives in
+// its own file of app/bench/ and is added by add_bench_commands (bench_command.cpp).
 #include <CLI/CLI.hpp>
 
 namespace ts::app {
+
+// Every bench subcommand (sh, visibility, render, ...), added to `bench`, the executable's root.
+void add_bench_commands(CLI::App& bench);
 
 // `terrashade bench visibility` (bench_visibility_command.cpp): horizon methods against the
 // raymarch reference, and SAGA.

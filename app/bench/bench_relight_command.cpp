@@ -30,6 +30,7 @@
 #include "core/util/parallel_for.hpp"
 #include "core/util/temp_files.hpp"
 #include "core/util/stopwatch.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -332,14 +333,14 @@ void add_bench_relight_command(CLI::App& bench) {
                    "baseline in the same run");
     add_render_options(*cmd, a->render);
     cmd->add_option("--frames", a->frames, "Frames to time (sun over a day's arc)")->capture_default_str()->check(
-        CLI::Range(1, 100000));
+        within(1, 100000));
     cmd->add_option("--keep", a->out_dir, "Keep the written frames in this directory (default: a temp dir, removed)");
     cmd->add_option("--write-queue", a->write_queue, "Frames that may wait for the PNG writer threads")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(within(1, 64));
     cmd->add_option("--writer-threads", a->writer_threads, "Threads encoding and writing the PNG frames, as for relight")
         ->capture_default_str()
-        ->check(CLI::Range(1, 64));
+        ->check(within(1, 64));
     cmd->add_flag("--compare-unfused", a->compare_unfused,
                   "Also time the shading stage against the CPU RenderBackend's unfused one (as before the fused "
                   "CPU loop) in the same run, frames interleaved");

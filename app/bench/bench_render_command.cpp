@@ -38,6 +38,7 @@
 #include "core/util/error.hpp"
 #include "core/util/stopwatch.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -337,13 +338,13 @@ void add_bench_render_command(CLI::App& bench) {
     cmd->add_option("--date", o->date, "Date of the default morning/noon/evening (YYYY-MM-DD)")->capture_default_str();
     cmd->add_option("--samples", o->samples, "Texels shaded by the reference per DEM (random, fixed seed)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 10000000));
+        ->check(within(1, 10000000));
     cmd->add_option("--seed", o->seed, "Seed of the texel sample")->capture_default_str();
     cmd->add_option("--sky", o->sky, "Sky model (as render --sky)")->capture_default_str();
     cmd->add_option("--directions", o->directions, "Renderer's horizon directions D (a list: one study each)")
         ->capture_default_str()
         ->delimiter(',')
-        ->check(CLI::Range(4, 4096));
+        ->check(within(4, 4096));
     cmd->add_option("--sun-shadows", o->sun_shadows, "Renderer's sun shadows: sweep, exact or both (a list)")
         ->capture_default_str()
         ->delimiter(',')
@@ -352,13 +353,13 @@ void add_bench_render_command(CLI::App& bench) {
         ->delimiter(',');
     cmd->add_option("--window", o->window, "Measure square windows of N texels instead of the whole DEM (0: whole)")
         ->capture_default_str()
-        ->check(CLI::Range(0, 100000));
+        ->check(within(0, 100000));
     cmd->add_option("--window-at", o->window_at, "Where the windows lie: FX:FY fractions of the DEM (a list)")
         ->capture_default_str()
         ->delimiter(',');
     cmd->add_option("--reference-azimuths", o->azimuths, "Reference horizon azimuths (>= 720 for the issue's study)")
         ->capture_default_str()
-        ->check(CLI::Range(4, 100000));
+        ->check(within(4, 100000));
     cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth for both");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = one per core)")->capture_default_str();
     cmd->add_option("--csv", o->csv, "Write the rows as CSV (input of scripts/chart_render.py)");

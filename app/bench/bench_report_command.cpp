@@ -434,15 +434,30 @@ std::string self_executable() {
 void run_bench_report(const BenchReportOptions& o) {
     const Size size = o.tiny ? Size::tiny : o.quick ? Size::quick : Size::full;
     const std::filesystem::path csv_path = std::filesystem::path(o.out) / "report.csv";
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);  // --out DIR is made if missing (IoPlan checks it is writable)
-    IoPlan plan;
-    plan.output("--out", csv_path.string(), {".csv"});
     for (const std::string& f : {o.data + "/dem/copernicus_N45E005_grenoble_500px.tif", o.data + "/meshes/c172p.ac"})
         if (!std::filesystem::exists(f)) throw InputError("bench report: " + f + " not found (set --data)");
-    plan.check();
     const std::vector<Study> list = studies(o, size);
     if (list.empty()) throw InputError("bench report: --only matched no study");
+    // --out DIR is made if missing (IoPlan checks it is writable), after the other checks, and
+    // removed again (the folders it made, empty) if the check refuses it.
+    std::error_code ec;
+    std::filesystem::path made;  // the outermost folder created here
+    for (std::filesystem::path p = std::filesystem::path(o.out).lexically_normal(); !p.empty() && p != p.parent_path();
+         p = p.parent_path())
+        if (!std::filesystem::exists(p, ec)) made = p;
+    std::filesystem::create_directories(o.out, ec);
+    IoPlan plan;
+    plan.output("--out", csv_path.string(), {".csv"});
+    try {
+        plan.check();
+    } catch (...) {
+        if (!made.empty())  // each folder only if empty: never anything that was there before
+            for (std::filesystem::path p = std::filesystem::path(o.out).lexically_normal(); !p.empty(); p = p.parent_path()) {
+                std::filesystem::remove(p, ec);
+                if (p == made) break;
+            }
+        throw;
+    }
     double expected = 0;
     for (const Study& s : list) expected += s.expected_s;
     std::printf("bench report (%s): %zu studies, expected about %.0f min on 2 cores\n",
@@ -462,7 +477,7 @@ void run_bench_report(const BenchReportOptions& o) {
         const Study& s = list[i];
         const auto csv = dir / ("study" + std::to_string(i) + ".csv");
         const auto log = dir / ("study" + std::to_string(i) + ".log");
-        std::string cmd = shell_quote(exe) + " bench " + s.args;
+        std::string cmd = shell_quote(exe) + " " + s.args;  // exe is terrashade-bench itself
         if (s.writes_csv) cmd += " " + (s.args.ends_with("--eps-csv") ? std::string() : std::string("--csv ")) +
                                  shell_quote(csv.string());
         cmd += " > " + shell_quote(log.string()) + " 2>&1";

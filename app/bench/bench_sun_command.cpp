@@ -24,6 +24,7 @@
 #include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/sun_visibility.hpp"
 #include "core/visibility/visibility_grid.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -135,24 +136,24 @@ void add_bench_sun_command(CLI::App& bench) {
     cmd->add_option("DEM", o->dems, "DEM files, each measured on its own")->required();
     cmd->add_option("--frames", o->frames, "Timed sweep frames per sun position (the exact path runs once)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 10000));
+        ->check(within(1, 10000));
     cmd->add_option("--threads", o->threads, "Worker threads of both paths (0 = one per core)")
         ->capture_default_str()
-        ->check(CLI::Range(0, 256));
+        ->check(within(0, 256));
     cmd->add_option("--max-size", o->max_size, "Measure the central N x N texels of larger DEMs")
         ->capture_default_str()
-        ->check(CLI::Range(1, 100000));
+        ->check(within(1, 100000));
     cmd->add_option("--near-field", o->near_fields,
                     "Sweep: texels marched exactly from each texel centre (a comma list measures each)")
         ->delimiter(',')
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(within(0.0, 16.0));
     cmd->add_option("--near-fine", o->near_fine, "Sweep: texels of the near field marched in 1/4-texel steps")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 16.0));
+        ->check(within(0.0, 16.0));
     cmd->add_option("--near-step", o->near_step, "Sweep: near-field step (texels) beyond the fine part")
         ->capture_default_str()
-        ->check(CLI::Range(0.25, 4.0));
+        ->check(within(0.25, 4.0));
     cmd->add_option("--elevations", o->elevations, "Sun elevations (degrees)")->capture_default_str();
     cmd->add_option("--azimuths", o->azimuths, "Sun azimuths (degrees clockwise from north)")->capture_default_str();
     cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth (both paths)");

@@ -22,13 +22,14 @@
 #include "app/tiles_options.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/raster/srgb.hpp"
-#include "core/tiles/reference_relief.hpp"
+#include "app/bench/study/reference_relief.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_export.hpp"
 #include "core/tiles/xyz_directory.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/stopwatch.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -56,7 +57,7 @@ std::uint8_t srgb_code(float linear) {
 // against the ray-traced reference on an N x N window of that level around LON,LAT: errors in
 // display-linear values and in the tiles' sRGB codes; both as grey PNGs in --reference-out.
 void run_reference(const BenchTilesArgs& a, const dem::Dem& dem, tiles::TileJob job) {
-    job.shading.style = tiles::TileStyle::relief;
+    job.shading.style = tiles::find_tile_style("relief");
     const int pixel_zoom = job.z1 + tiles::tile_size_shift(job.tile_size);
     const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, pixel_zoom);
     const Stopwatch watch;
@@ -119,6 +120,8 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     if (a.knobs && a.csv.empty()) throw InputError("bench tiles --knobs: give --csv FILE");
     if (!a.csv.empty() && !a.knobs) throw InputError("bench tiles: --csv goes with --knobs");
     IoPlan plan;
+    for (const std::string& f : a.dem.files)
+        if (!f.starts_with("synthetic:")) plan.input("DEM", f);
     plan.output_directory("--reference-out", a.reference_out);
     plan.output("--csv", a.csv, {".csv"});
     plan.check();
@@ -147,11 +150,11 @@ void run_bench_tiles(const BenchTilesArgs& a) {
                 "cut_tiles/s", "cpu_s", "tiles/cpu_s", "peak_rss_GB");
     double hillshade_rate = 0, hillshade_cpu_rate = 0;
     for (const auto& name : a.styles) {
-        job.shading.style = tiles::parse_tile_style(name);
+        job.shading.style = &tiles::parse_tile_style(name);
         // --relief-contrast is relief's alone; the other styles of the run keep theirs.
-        job.shading.relief_contrast = job.shading.style == tiles::TileStyle::relief ? a.tiles.relief_contrast : 1.0;
+        job.shading.relief_contrast = job.shading.style->takes_relief_contrast() ? a.tiles.relief_contrast : 1.0;
         const fs::path out = root / name;
-        tiles::XyzDirectory sink(out, tiles::describe_job(job), false, job.z0, job.z1);
+        tiles::XyzDirectory sink(out, tiles::describe_job(job), tiles::XyzDirectory::Existing::refuse, job.z0, job.z1);
         const Stopwatch watch;
         const double cpu0 = cpu_seconds(RUSAGE_SELF);
         const tiles::TileExportStats s = tiles::export_tiles(dem, job, sink, nullptr);
@@ -161,7 +164,7 @@ void run_bench_tiles(const BenchTilesArgs& a) {
         std::printf("%-17s %7zu %9.3f %10.1f %9.3f %12.1f %8.3f %13.1f %11.2f\n", name.c_str(), s.written, total,
                     made / total, s.source_seconds, s.tile_seconds > 0 ? made / s.tile_seconds : 0.0, cpu, made / cpu,
                     peak_rss_gb());
-        if (job.shading.style == tiles::TileStyle::hillshade) hillshade_rate = made / total, hillshade_cpu_rate = made / cpu;
+        if (job.shading.style->name() == "hillshade") hillshade_rate = made / total, hillshade_cpu_rate = made / cpu;
         std::fflush(stdout);
     }
     if (a.classic && synthetic) {
@@ -228,9 +231,9 @@ void add_bench_tiles_command(CLI::App& bench) {
                     "reference on a window there")
         ->expected(2)->delimiter(',');
     cmd->add_option("--reference-texels", a->reference_texels, "--reference: window side, level texels")
-        ->capture_default_str()->check(CLI::Range(4, 1024));
+        ->capture_default_str()->check(within(4, 1024));
     cmd->add_option("--reference-azimuths", a->reference_azimuths, "--reference: raymarched horizon azimuths")
-        ->capture_default_str()->check(CLI::Range(16, 8192));
+        ->capture_default_str()->check(within(16, 8192));
     cmd->add_option("--reference-out", a->reference_out, "--reference: directory for relief.png and reference.png");
     cmd->callback([a] { run_bench_tiles(*a); });
 }

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "app/options/within_range.hpp"
 #include "app/io_plan.hpp"
 #include "app/bench/bench_command.hpp"
 #include "app/bench/error_stats.hpp"
@@ -252,15 +253,15 @@ void add_bench_transfer_command(CLI::App& bench) {
     add_dem_input_options(*cmd, o->dem);
     cmd->add_option("--directions", o->directions, "Azimuths of the input visibility")
         ->capture_default_str()
-        ->check(CLI::Range(4, 2048));
+        ->check(within(4, 2048));
     cmd->add_option("--frames", o->frames, "Relight frames timed (the best is reported)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 10000));
+        ->check(within(1, 10000));
     cmd->add_option("--lobe", o->lobe, "diffuse (cos/pi at the normal) or phong (at the mirror of a nadir view)")
         ->capture_default_str();
     cmd->add_option("--phong-alpha", o->phong_alpha, "Phong exponent for --lobe phong")
         ->capture_default_str()
-        ->check(CLI::Range(1.0, 1000.0));
+        ->check(within(1.0, 1000.0));
     cmd->add_option("--threads", o->threads, "CPU worker threads (0 = one per core)")->capture_default_str();
     cmd->add_flag("--cpu", o->cpu_only, "CPU path only");
     cmd->add_option("--device", o->device, "Vulkan device index (terrashade devices)");

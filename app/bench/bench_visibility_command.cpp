@@ -35,6 +35,7 @@
 #include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "core/visibility/visibility_products.hpp"
+#include "app/options/within_range.hpp"
 
 namespace ts::app {
 namespace {
@@ -589,7 +590,7 @@ void add_bench_visibility_command(CLI::App& bench) {
     cmd->add_option("DEM", o->dems, "DEM files, each measured on its own")->required();
     cmd->add_option("--window", o->window, "Centred window size in texels (the reference is brute force)")
         ->capture_default_str()
-        ->check(CLI::Range(8, 5000));
+        ->check(within(8, 5000));
     cmd->add_option("--directions", o->directions, "Azimuth counts to measure")->delimiter(',')->capture_default_str();
     cmd->add_option("--methods", o->methods, "Methods to measure: exact, pyramid, raymarch")
         ->delimiter(',')
@@ -605,7 +606,7 @@ void add_bench_visibility_command(CLI::App& bench) {
     cmd->add_option("--reference-directions", o->reference_directions,
                     "Azimuths of the raymarch reference (svf integrated with linear wedges)")
         ->capture_default_str()
-        ->check(CLI::Range(8, 4096));
+        ->check(within(8, 4096));
     cmd->add_flag("--full", o->full, "Also time exact and pyramid on the whole DEM");
     cmd->add_flag("--whole", o->whole,
                   "Instead of the window study: the whole DEM at --full-directions, GPU and CPU stage by stage "
@@ -616,14 +617,14 @@ void add_bench_visibility_command(CLI::App& bench) {
         ->check(CLI::IsMember({"exact", "pyramid"}));
     cmd->add_option("--repeats", o->repeats, "--whole: runs per path (median reported)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 20));
+        ->check(within(1, 20));
     cmd->add_flag("--no-saga", o->no_saga, "--whole: skip SAGA");
     cmd->add_flag("--exact-scalar", o->exact_scalar,
                   "--whole: sweep one line at a time even where the CPU has AVX-512 (A/B of the lane sweep)");
     cmd->add_option("--device", o->device, "--whole: Vulkan device index (terrashade devices)");
     cmd->add_option("--full-directions", o->full_directions, "Azimuths for --full and --whole")
         ->capture_default_str()
-        ->check(CLI::Range(1, 4096));
+        ->check(within(1, 4096));
     cmd->add_flag("--no-curvature", o->no_curvature, "Flat Earth for every method (SAGA has no curvature)");
     cmd->add_flag("--saga", o->saga,
                   "Also run saga_cmd ta_lighting 3 (both its methods) on the window; projected DEMs only");

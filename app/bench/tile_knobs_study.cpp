@@ -116,7 +116,7 @@ void level_bias_rows(const dem::Dem& dem, const tiles::TileJob& job, int zoom, s
 }  // namespace
 
 void run_tile_knobs_study(const dem::Dem& dem, tiles::TileJob job, const std::string& csv_path) {
-    job.shading.style = tiles::TileStyle::relief;
+    job.shading.style = tiles::find_tile_style("relief");
     const tiles::TileShading defaults = job.shading;
     const int pixel_zoom = job.z1 + tiles::tile_size_shift(job.tile_size);
     const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, pixel_zoom);

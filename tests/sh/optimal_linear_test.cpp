@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/sh/optimal_linear_fit.hpp"
+#include "app/bench/study/optimal_linear_fit.hpp"
 #include "core/sh/sh_exp.hpp"
 
 namespace ts::sh {

@@ -1,4 +1,4 @@
-#include "core/sh/optimal_linear_fit.hpp"
+#include "app/bench/study/optimal_linear_fit.hpp"
 
 #include <cmath>
 #include <cstdio>

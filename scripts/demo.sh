@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the main job on the shipped default DEM; outputs go to out/.
+# Installs what the demo needs (scripts/setup.sh demo: no test-only package), builds terrashade
+# and runs the main job on the shipped default DEM; outputs go to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh terrashade terrashade_image_io
+bash scripts/build.sh demo terrashade terrashade_image_io
 mkdir -p out
 ts=build/release/app/terrashade
 dem=data/grenoble_500px.tif
@@ -31,6 +32,11 @@ $ts render "$dem" --time 2025-06-21T07:00:00Z --view perspective --camera 5.62,4
 $ts render "$dem" --time 2025-06-21T07:00:00Z --sky overcast --out out/render_overcast.png
 
 echo "== relit sequence: visibility once, one frame every 3 hours of the solstice (UTC)"
-$ts relight "$dem" --times 2025-06-21T04:00:00Z/2025-06-21T19:00:00Z/PT3H --out out/relight
+# --overwrite: a second demo run replaces the series it wrote before (a folder holding frames is
+# otherwise refused, so that two series never mix).
+$ts relight "$dem" --times 2025-06-21T04:00:00Z/2025-06-21T19:00:00Z/PT3H --out out/relight --overwrite
+
+echo "== a year of clear-sky sun: irradiation (kWh/m2) and hours of direct sun per texel, from the same horizons"
+$ts insolation "$dem" --year 2025 --out out/insolation_2025.tif --quicklook out/insolation_2025.png
 
 echo "demo: outputs in out/: $(ls out | tr '\n' ' ')"

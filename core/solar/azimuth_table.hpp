@@ -1,0 +1,87 @@
+#pragma once
+// What the sun gives a period from each azimuth, as a function of the horizon that hides it:
+// for each azimuth bin and each horizon elevation h on a fine grid, the sums over the period's
+// time steps whose sun falls in the bin of (weight) x (visible fraction of the sun's disc above
+// h). The weights are the direct beam's energy times the sun's direction (so a texel's beam is
+// the dot of its normal with one looked-up vector: the cosine of incidence is exact), the same
+// for the circumsolar diffuse, and the hours. A texel then looks up its own horizon in each bin:
+// the cost does not depend on the number of time steps (docs/insolation.md, "Speed").
+//
+// Each bin stores only the horizon range where its sums change (from the lowest sun in it
+// minus the disc's radius to the highest plus it): below, every sample is visible (the bin's
+// total); above, none is.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace ts::solar {
+
+// What one sample of the sun carries (and what a lookup returns): the beam's energy times the
+// sun's direction (Wh/m^2, ENU), the circumsolar diffuse's likewise, and hours of sun.
+inline constexpr int kTableValues = 7;
+using TableValues = std::array<double, kTableValues>;
+// Stored as 8 floats (one padding) so a lookup is whole vector registers.
+inline constexpr int kTableStride = 8;
+
+struct HorizonGrid {
+    double first_rad = -0.0174532925199433;  // -1 degree: the lowest horizon a table tells apart
+    double step_rad = 0.00174532925199433;   // 0.1 degree (the sun's disc spans 0.53)
+};
+
+class AzimuthTable {
+public:
+    AzimuthTable() = default;
+    // bins: azimuth bins over [0, 2 pi), bin j centred on phi = 2 pi j / bins.
+    AzimuthTable(int bins, HorizonGrid grid);
+
+    int bins() const { return bins_; }
+    const HorizonGrid& grid() const { return grid_; }
+    // Adds w times the visible fraction of the sun's disc to acc[0..7] (the 7 values and a
+    // padding lane), for a horizon at horizon_rad in bin j.
+    void add_visible(int bin, float horizon_rad, float w, float* acc) const {
+        const int count = count_[std::size_t(bin)];
+        if (count == 0) return;
+        const float x = (horizon_rad - first_h_) * inv_step_ - float(first_[std::size_t(bin)]);
+        const float* a;
+        float f = 0;
+        if (x <= 0) {
+            a = total(bin);
+        } else {
+            if (x >= float(count - 1)) return;  // the last threshold is above every sun of the bin
+            const int k = int(x);
+            f = x - float(k);
+            a = values_.data() + offset_[std::size_t(bin)] + std::size_t(k) * kTableStride;
+        }
+        const float* b = f > 0 ? a + kTableStride : a;
+        const float wa = w * (1 - f), wb = w * f;
+        for (int v = 0; v < kTableStride; ++v) acc[v] += wa * a[v] + wb * b[v];
+    }
+    // Everything in bin j (any horizon below all its suns).
+    const float* total(int bin) const { return total_.data() + std::size_t(bin) * kTableStride; }
+    bool empty(int bin) const { return count_[std::size_t(bin)] == 0; }
+
+    // Per-period scalars that need no horizon lookup: the isotropic diffuse on a horizontal
+    // plane (Wh/m^2), and the global irradiation of an open horizontal plane (the ground that
+    // reflects light to the texels).
+    double isotropic_diffuse_wh = 0;
+    double open_global_wh = 0;
+
+    // Builder side: the samples of one bin, then finish().
+    struct Sample {
+        double elevation_rad;
+        TableValues w;
+    };
+    void finish_bin(int bin, const std::vector<Sample>& samples, double sun_radius_rad);
+
+    std::size_t bytes() const { return values_.size() * sizeof(float) + total_.size() * sizeof(float); }
+
+private:
+    int bins_ = 0;
+    HorizonGrid grid_;
+    std::vector<int> first_, count_;
+    std::vector<std::size_t> offset_;
+    std::vector<float> total_, values_;
+    float first_h_ = 0, inv_step_ = 1;
+};
+
+}  // namespace ts::solar

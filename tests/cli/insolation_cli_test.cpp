@@ -1,0 +1,59 @@
+// `terrashade insolation` end to end on a crop of the Grenoble DSM: the GeoTIFF's bands and
+// their descriptions (gdalinfo as the oracle), the quick-look, and one-line exit-2 refusals
+// before any work that leave no file behind.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace {
+
+using ts::cli_test::quote;
+using ts::cli_test::Result;
+
+Result run(const std::string& args) { return ts::cli_test::run(std::string(TS_BIN) + " " + args); }
+
+const std::string kDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif") + " --crop 5.70,45.15,5.80,45.25";
+
+TEST(InsolationCli, TwoDaysGiveTenDescribedBandsAndAQuicklook) {
+    const auto dir = ts::cli_test::temp_dir("insolation_ok");
+    const std::string tif = (dir / "i.tif").string(), png = (dir / "i.png").string();
+    const Result r = run("insolation " + kDem + " --from 2024-06-20 --to 2024-06-21 --by day --out " + quote(tif) +
+                         " --quicklook " + quote(png));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote " + tif + " (10 bands"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(png));
+    const Result g = ts::cli_test::run("gdalinfo -json -stats " + quote(tif));
+    ASSERT_EQ(g.exit_code, 0) << "gdalinfo (gdal-bin, installed by scripts/test.sh): " << g.err;
+    const auto j = nlohmann::json::parse(g.out);
+    const auto& bands = j.at("bands");
+    ASSERT_EQ(bands.size(), 10u);
+    EXPECT_EQ(bands[0].at("description").get<std::string>(), "global irradiation 2024-06-20 (kWh/m2)");
+    EXPECT_EQ(bands[9].at("description").get<std::string>(), "hours of direct sun 2024-06-21 (h)");
+    // Around the solstice at 45 N a clear day gives ~8-9 kWh/m2 on open ground and ~15.5 h of
+    // sun; no texel can get more than the extraterrestrial ~12 kWh/m2 on a sun-facing plane.
+    const double max_global = bands[0].at("maximum").get<double>();
+    EXPECT_GT(max_global, 7.0);
+    EXPECT_LT(max_global, 12.5);
+    EXPECT_LE(bands[4].at("maximum").get<double>(), 16.0);
+}
+
+TEST(InsolationCli, BadInputIsOneLineExitTwoAndNoOutput) {
+    const auto dir = ts::cli_test::temp_dir("insolation_bad");
+    const std::string tif = (dir / "bad.tif").string();
+    for (const std::string args :
+         {"--year 2024 --linke-monthly 1,2,3", "--from 2024-05-02 --to 2024-05-01", "--from 2023-02-29 --to 2023-03-01",
+          "--year 2024 --from 2024-01-01 --to 2024-01-02", "--year 2024 --albedo -0.5", "--year 2024 --linke 0",
+          "--year 2024 --clear-sky-index 0", "--year 2024 --step 0", "--from 2024-01-01", "--year 9000"}) {
+        const Result r = run("insolation " + kDem + " " + args + " --out " + quote(tif));
+        EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(tif)) << args;
+    }
+}
+
+}  // namespace

@@ -11,6 +11,7 @@
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
 #include "app/job_memory.hpp"
+#include "app/options/sun_options.hpp"
 #include "app/render_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -19,6 +20,7 @@
 #include "core/util/staged_outputs.hpp"
 #include "core/visibility/sun_visibility.hpp"
 #include "core/util/stopwatch.hpp"
+#include "core/raster/image_writer_registry.hpp"
 
 namespace ts::app {
 namespace {
@@ -45,8 +47,8 @@ void run_render(const RenderCommandArgs& a) {
     const render::Exposure exposure = exposure_of(a.render);
     IoPlan plan;
     plan_render_inputs(plan, a.render, options);
-    plan.output("--out", a.out, kImageExtensions);
-    plan.output("--sun-visibility", a.sun_visibility, {".tif", ".tiff"});
+    plan.output("--out", a.out, raster::picture_extensions());
+    plan.output("--sun-visibility", a.sun_visibility, raster::float_raster_extensions());
     plan.check();
 
     const dem::Dem dem = load_dem_input(a.render.dem);
@@ -109,7 +111,7 @@ void run_render(const RenderCommandArgs& a) {
     std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
                 scene->state().visibility_seconds(), scene->state().transfer_seconds(), directions,
                 frame_s, device.name().c_str());
-    if (!a.out.ends_with(".exr"))
+    if (!raster::written_as(a.out, raster::ImageWriter::exr))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
     if (const render::ReliefContrastApplied rc = scene->last_relief_contrast(); rc.k != 1.0) {
         char softened[96] = "";
@@ -133,12 +135,7 @@ void add_render_command(CLI::App& root) {
         "(docs/rendering.md). Sun shadows from the exact horizon, sky light through log-SH visibility.");
     a->render.relief_contrast = "auto";  // one picture: stretch the shading when the light is soft
     add_render_options(*cmd, a->render);
-    cmd->add_option("--time", a->time, "UTC instant, ISO 8601 with a zone (e.g. 2025-06-21T12:00:00+02:00); "
-                                       "the sun is placed for the DEM's centre");
-    cmd->add_option("--sun-azimuth", a->sun_azimuth, "Sun azimuth, degrees clockwise from north (instead of --time)")
-        ->check(CLI::Range(-360.0, 720.0));
-    cmd->add_option("--sun-elevation", a->sun_elevation, "Sun elevation above the horizon, degrees")
-        ->check(CLI::Range(-90.0, 90.0));
+    add_sun_options(*cmd, a->time, a->sun_azimuth, a->sun_elevation);
     cmd->add_option("-o,--out", a->out, "Output: .png / .tif (8-bit sRGB; a map .tif is georeferenced) or .exr (linear)")
         ->required();
     cmd->add_option("--sun-visibility", a->sun_visibility,

@@ -14,6 +14,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// How long a write waits for another process's lock on the file before it fails.
+constexpr int kBusyTimeoutMs = 10000;
+
+
 double now_s() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -94,6 +98,10 @@ MbtilesFile::MbtilesFile(fs::path file, std::map<std::string, std::string> metad
         db_ = nullptr;
         throw input_error(file_.string(), "cannot create the MBTiles file (is the directory writable?)");
     }
+    // A reader of the growing file (a viewer, a progress probe, a resumed run's check) may hold
+    // a lock for a moment: wait for it instead of failing the job ("database is locked" when a
+    // reader had the file open as the journal mode was switched, seen in the interrupt test).
+    sqlite3_busy_timeout(db_, kBusyTimeoutMs);
     try {
         // WAL: a commit is one append to the log, and a killed writer loses only the open batch.
         // synchronous=NORMAL is durable against a killed process (not a power cut).

@@ -19,6 +19,7 @@
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/job_memory.hpp"
+#include "app/options/colors_option.hpp"
 #include "app/options/directions_option.hpp"
 #include "app/options/max_error_option.hpp"
 #include "app/options/mesh_forward_option.hpp"
@@ -70,6 +71,7 @@ struct FlyArgs {
     DemInput dem;
     std::string time = "2024-06-21T07:30:00Z";
     std::string sky = "clear";
+    ColorsArgs colors;  // --colors, --snow-line
     std::string size = "960x540";
     std::string vsync = "on";
     std::string path;
@@ -254,6 +256,7 @@ void run_fly(const FlyArgs& a) {
     const fly::CameraMode mode = parse_camera_mode(a.camera);
     const light::UtcTime time = light::parse_utc_time(a.time);
     light::parse_sky_options(a.sky);
+    settings.colors = color_design(a.colors);
     if (a.frames_given && a.frames < 1)
         throw InputError("--frames " + std::to_string(a.frames) + ": a count of frames, >= 1 (without --frames: the window)");
     if (a.exit_after < 0) throw InputError("--exit-after must be >= 0");
@@ -293,6 +296,7 @@ void run_fly(const FlyArgs& a) {
     plan.input("--path", a.path);
     plan.input("--mesh", a.mesh);
     plan.input("--sky", light::parse_sky_options(a.sky).hdr_path);
+    plan_colors_input(plan, a.colors);
     if (offscreen) plan.output_directory("--out", a.out);
     plan.check();
 
@@ -423,6 +427,7 @@ void add_fly_command(CLI::App& root) {
     add_dem_input_options(*cmd, args->dem);
     add_time_option(*cmd, args->time);  // [ and ] change it in the window
     add_sky_option(*cmd, args->sky);
+    add_colors_options(*cmd, args->colors);
     cmd->add_option("--size", args->size, "window or frame size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--vsync", args->vsync, "on: present at the display's rate; off: as fast as it renders")
         ->capture_default_str();

@@ -62,16 +62,16 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--exposure", a.exposure,
                    "EV100 number (e.g. 14.5 for a sunlit scene) or auto (log-average luminance to middle grey)")
         ->capture_default_str();
+    add_colors_options(cmd, a.colors);
     cmd.add_option("--materials", a.materials,
-                   "rule (height/slope: water, grass, forest, rock, snow) or a land-cover GeoTIFF of ESA WorldCover "
-                   "class codes, resampled to the DEM by georeferencing")
-        ->capture_default_str();
+                   "A land-cover GeoTIFF of ESA WorldCover class codes, resampled to the DEM by georeferencing: its "
+                   "classes (forest, water, snow, ...) replace --colors where it has one");
     cmd.add_option("--albedo", a.albedo,
                    "RGB orthophoto GeoTIFF (8-bit sRGB) giving the albedo of every land texel it covers");
     cmd.add_option("--relief-contrast", a.relief_contrast,
-                   "Maps: stretch the shading (not the colours) so the relief reads under soft light: auto (k from "
-                   "the picture: a 1.5-stop spread of the shading, at most 8x, and the land colours' contrast "
-                   "compressed by another 1/k; 1 for a sunlit map with shadows), or k >= 1 (1 = the physical picture)")
+                   "Maps: stretch the shading (not the colours) k times in stops, alike under sun and sky: 1 (the "
+                   "default: the physical picture), k in 1..16 (e.g. 1.5 for print), or auto (k from the picture: a "
+                   "1.5-stop spread of the shading, at most 8x; measured land colours compressed by another 1/k)")
         ->capture_default_str();
     cmd.add_option("--dither", a.dither,
                    "Dither the 8-bit output against banding: auto (perspective views, whose skies are smooth "
@@ -155,7 +155,11 @@ render::SceneOptions scene_options(const RenderArgs& a) {
         o.extent = e;
         o.view = render::ViewKind::extent;
     }
+    if (a.materials == "rule")
+        throw InputError("--materials rule: materials are no longer guessed from height and slope; colours come from "
+                         "--colors, snow from --snow-line, land cover from a WorldCover GeoTIFF (docs/colors.md)");
     o.materials = a.materials;
+    o.colors = color_design(a.colors);
     o.albedo_contrast = a.albedo_contrast;
     o.relief_contrast = parse_relief_contrast(a.relief_contrast);
     o.albedo = a.albedo;
@@ -176,7 +180,8 @@ render::SceneOptions scene_options(const RenderArgs& a) {
 void plan_render_inputs(IoPlan& plan, const RenderArgs& a, const render::SceneOptions& o) {
     plan.inputs("DEM", a.dem.files);
     plan.input("--sky", o.sky.hdr_path);
-    if (o.materials != "rule") plan.input("--materials", o.materials);
+    plan.input("--materials", o.materials);
+    plan_colors_input(plan, a.colors);
     plan.input("--albedo", o.albedo);
     for (const MeshSpec& m : parse_mesh_specs(a.meshes)) plan.input("--mesh", m.file);
 }

@@ -13,6 +13,7 @@
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"
 #include "app/mesh_options.hpp"
+#include "app/options/colors_option.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::app {
@@ -26,12 +27,13 @@ struct RenderArgs {
     std::string extent;      // --extent XMIN,YMIN,XMAX,YMAX (a map of that extent)
     std::string extent_crs;  // --extent-crs (default: the DEM's CRS)
     std::string exposure = "auto";
-    std::string materials = "rule";
+    std::string materials;   // --materials: a WorldCover land-cover GeoTIFF
+    ColorsArgs colors;       // --colors, --snow-line (app/options/colors_option.hpp)
     std::string albedo;
     double albedo_contrast = render::kDefaultAlbedoContrast;
     std::string dither = "auto";
-    // auto | a number >= 1; `render` starts at auto, sequences (relight) at 1 so frames keep one
-    // rendering of the shading.
+    // auto | a number >= 1; 1 (the physical picture) by default for single pictures and
+    // sequences alike: a map correlates with a path tracer's, under sun and sky (docs/colors.md).
     std::string relief_contrast = "1";
     int directions = 32;
     bool no_curvature = false;

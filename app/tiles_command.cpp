@@ -67,6 +67,7 @@ void run_tiles(const TilesCommandArgs& a) {
     if (a.resume && a.overwrite) throw InputError("tiles: --resume keeps the tiles, --overwrite replaces them: give one");
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
+    plan_colors_input(plan, a.tiles.colors);
     if (mbtiles) {
         plan.output("--out", a.out, raster::tile_set_extensions());
     } else {
@@ -86,6 +87,7 @@ void run_tiles(const TilesCommandArgs& a) {
 
     const dem::Dem dem = load_dem_input(a.dem);
     job.dem = tiles::dem_identity(dem);
+    job.shading.colors = render::fit_colors(job.shading.colors, dem);
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;

@@ -47,6 +47,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         ->capture_default_str();
     add_sun_options(cmd, a.time, a.sun_azimuth, a.sun_elevation);  // neither: azimuth 315, elevation 45
     add_sky_option(cmd, a.sky);  // relief and color
+    add_colors_options(cmd, a.colors);  // color
     cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
     cmd.add_option("--exaggeration", a.exaggeration,
                    "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
@@ -93,6 +94,11 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     if (a.sun_azimuth) s.sun_azimuth_deg = *a.sun_azimuth;
     if (a.sun_elevation) s.sun_elevation_deg = *a.sun_elevation;
     s.sky = light::parse_sky_options(a.sky);
+    if (s.style->colours_land()) {
+        s.colors = color_design(a.colors);
+    } else if (a.colors.colors != render::kDefaultPalette || a.colors.snow_line_m) {
+        throw InputError("--colors and --snow-line colour --style color; " + a.style + " tiles are grey by design");
+    }
     s.z_factor = a.z_factor;
     if (a.exaggeration != "auto") {
         double e = 0;

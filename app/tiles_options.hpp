@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/options/colors_option.hpp"
+
 #include "core/dem/dem.hpp"
 #include "core/tiles/tile_export.hpp"
 
@@ -18,6 +20,7 @@ struct TilesArgs {
     std::string time;
     std::optional<double> sun_azimuth, sun_elevation;
     std::string sky = "clear";
+    ColorsArgs colors;  // --colors, --snow-line (style color)
     double z_factor = 1.0;
     std::string exaggeration = "auto";
     int directions = 16;

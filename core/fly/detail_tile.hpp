@@ -56,6 +56,7 @@ struct DetailShadingOptions {
     int halo = 64;           // level-0 texels read around a tile for its shading
     int directions = 16;     // horizon azimuths
     std::string sky = "clear";
+    render::ColorDesign colors;  // percent stops fitted to the overview's heights, so tiles agree
     int threads = 0;
 };
 

@@ -55,15 +55,21 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
         options_.renderer.blockers = &blockers_;
     }
     NormalField normals = terrain_normals(*grid_, options_.renderer.threads);
-    MaterialRaster materials;
-    if (options_.materials.empty() || options_.materials == "rule") {
-        materials = rule_materials(*grid_, normals, options_.rule);
-    } else {
-        materials = landcover_materials(*grid_, normals, read_landcover_on_grid(options_.materials, dem_.georef),
-                                        options_.rule);
+    std::vector<std::uint8_t> cover;
+    if (!options_.materials.empty()) cover = read_landcover_on_grid(options_.materials, dem_.georef);
+    ColorDesign colors = options_.colors;
+    if (colors.palette.has_percent_stops()) {
+        const auto range = height_range(*grid_);
+        colors = fit_colors(colors, range ? range->first : 0.0, range ? range->second : 0.0);
     }
+    MaterialRaster materials = palette_materials(*grid_, normals, colors, cover, options_.rule);
     if (!options_.albedo.empty()) apply_albedo(materials, read_orthophoto_albedo(options_.albedo, dem_.georef));
-    compress_albedo_contrast(materials, options_.albedo_contrast);
+    // The palette's colours are designed; measured albedos (land cover, an orthophoto) span
+    // 2-3x in luminance and are compressed so the relief reads first.
+    const bool measured_albedo = !cover.empty() || !options_.albedo.empty();
+    if (measured_albedo) compress_albedo_contrast(materials, options_.albedo_contrast);
+    // Likewise an automatic relief contrast softens measured colours only, never a palette's.
+    options_.relief_contrast.soften_albedo = options_.relief_contrast.soften_albedo && measured_albedo;
 
     // The target first: a camera below the terrain or an extent off the DEM is found before
     // the visibility is computed.

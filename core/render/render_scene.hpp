@@ -14,6 +14,7 @@
 #include "core/light/utc_time.hpp"
 #include "core/render/frame_renderer.hpp"
 #include "core/material/material.hpp"
+#include "core/material/palette_materials.hpp"
 #include "core/render/mesh_lighting.hpp"
 #include "core/render/mesh_view.hpp"
 #include "core/render/perspective_view.hpp"
@@ -48,12 +49,15 @@ enum class ViewKind { map, extent, perspective };
 inline constexpr double kDefaultAlbedoContrast = 0.5;
 
 struct SceneOptions {
-    std::string materials = "rule";  // "rule" or a WorldCover GeoTIFF
+    std::string materials;           // a land-cover GeoTIFF of WorldCover codes, or empty (none)
+    // The land colours (a palette, percent stops fitted to this DEM's heights unless fitted
+    // already) and the snow line (palette_materials.hpp).
+    ColorDesign colors;
     std::string albedo;              // RGB orthophoto GeoTIFF, or empty
     double albedo_contrast = kDefaultAlbedoContrast;  // compress_albedo_contrast (material.hpp)
     // Maps and extents: the shading stretched (relief_contrast.hpp); by default the physical picture.
     ReliefContrast relief_contrast{.automatic = false};
-    MaterialRule rule;
+    MaterialRule rule;               // water: sea level and flatness
     RendererOptions renderer;
     light::SkyOptions sky;
     ViewKind view = ViewKind::map;

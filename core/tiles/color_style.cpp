@@ -1,7 +1,7 @@
-// `color`: the renderer's rule materials (land cover from the true heights and slopes) under the
-// sun and sky on the exaggerated form; linear RGB exposed for the filmic curve (render --view
+// `color`: the land colours of the job's palette (by the true heights; snow above its snow line)
+// under the sun and sky on the exaggerated form; linear RGB exposed for the filmic curve (render --view
 // map's look, with a fixed exposure).
-#include "core/material/material.hpp"
+#include "core/material/palette_materials.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/block_shading.hpp"
 #include "core/tiles/tile_style.hpp"
@@ -21,14 +21,16 @@ public:
     bool needs_true_heights() const override { return true; }
     bool relative_to_flat() const override { return true; }
     bool takes_max_error() const override { return true; }
+    bool colours_land() const override { return true; }
     std::vector<float> shade_block(const BlockShading& b) const override {
         const int threads = b.shading.threads;
-        // Land cover from the true heights and slopes; the light on the exaggerated form.
+        const render::ColorDesign& colors = b.shading.colors;
+        // Colours from the true heights (and slopes, for snow); the light on the exaggerated form.
         const auto radiance = render_block(
             b,
-            [threads](const terrain::HeightGrid&, const terrain::HeightGrid& tg) {
+            [threads, &colors](const terrain::HeightGrid&, const terrain::HeightGrid& tg) {
                 const render::NormalField true_normals = render::terrain_normals(tg, threads);
-                return render::rule_materials(tg, true_normals);
+                return render::palette_materials(tg, true_normals, colors);
             },
             true);
         const float scale = float(kColorExposure / b.flat);

@@ -9,7 +9,7 @@
 //                                 Lambert ground, relative to an open flat texel under the same
 //                                 light; display-linear 0..1
 //   svf                           sky view factor, stretched to display-linear 0..1
-//   color                         the renderer's rule materials, linear RGB exposed for the filmic
+//   color                         the land colours of --colors (and --snow-line), linear RGB exposed for the filmic
 //                                 curve (render --view map's look, with a fixed exposure)
 // Heights are multiplied by z-factor x exaggeration before any of this (zoom_exaggeration.hpp).
 //

@@ -74,6 +74,11 @@ std::string describe_job(const TileJob& job) {
     const std::string bias = job.level_bias != 0 ? ",\"level_bias\":" + std::to_string(job.level_bias) : "";
     const std::string max_error = s.max_error > 0 ? ",\"block_max_error\":" + number(s.max_error) : "";
     const std::string dem = job.dem.empty() ? "" : ",\"dem\":\"" + job.dem + "\"";
+    std::string colors;  // only for a style that colours land
+    if (s.style->colours_land()) {
+        colors = ",\"colors\":\"" + s.colors.palette.describe() + "\"";
+        if (s.colors.snow_line_m) colors += ",\"snow_line\":" + number(*s.colors.snow_line_m);
+    }
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -83,7 +88,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + "}\n";
+           by_zoom + max_error + dem + colors + "}\n";
 }
 
 std::string dem_identity(const dem::Dem& dem) {

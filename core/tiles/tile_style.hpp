@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/light/sky.hpp"
+#include "core/material/palette_materials.hpp"
 
 namespace ts::tiles {
 
@@ -40,6 +41,8 @@ public:
     virtual bool takes_max_error() const { return false; }
     // Takes a contrast about open flat ground (TileShading::relief_contrast).
     virtual bool takes_relief_contrast() const { return false; }
+    // Colours land with TileShading::colors (a palette, a snow line); the others are grey.
+    virtual bool colours_land() const { return false; }
 
     // Styles without visibility: a tile's grey values 1..255 from its heights ((size + 2)^2
     // with the 1-px halo), written where `covered`.
@@ -97,6 +100,7 @@ struct TileShading {
     // Replaces the zoom-dependent exaggeration (zoom_exaggeration.hpp) when set.
     std::optional<double> exaggeration;
     light::SkyOptions sky;     // relief, color
+    render::ColorDesign colors;  // color: the land colours, fitted to the whole DEM's heights
     int directions = 16;       // horizon azimuths of the visibility (relief, svf, color)
     // --max-error (relief, color; > 0): a level shaded in blocks takes each block's directions
     // from the block's own roughness (quality::choose_radiance), so flat blocks get fewer; a

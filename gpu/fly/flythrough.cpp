@@ -29,6 +29,7 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
     render::SceneOptions options;
     options.view = render::ViewKind::map;
     options.sky = light::parse_sky_options(s.sky);
+    options.colors = render::fit_colors(s.colors, dem);
     options.renderer.directions = s.directions;
     ProgressBar bar("visibility", std::uint64_t(dem.width) * std::uint64_t(dem.height) * std::uint64_t(s.directions),
                     "rays");
@@ -96,6 +97,7 @@ Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings
     co.shading.halo = settings_.detail_halo;
     co.shading.directions = settings_.directions;
     co.shading.sky = settings_.sky;
+    co.shading.colors = settings_.colors;  // fitted on the overview, as make_scene's (DetailTile)
     cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);
     tree_ = std::make_unique<fly::CdlodTree>(overview_->cdlod, frame_, settings_.lod, cache_.get());
     init_renderer();

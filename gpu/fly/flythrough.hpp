@@ -20,6 +20,7 @@
 #include "core/blockers/sphere_blocker.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/dem/dem.hpp"
+#include "core/material/palette_materials.hpp"
 #include "core/fly/camera_rig.hpp"
 #include "core/fly/cdlod_tree.hpp"
 #include "core/fly/flight_path.hpp"
@@ -44,6 +45,7 @@ namespace ts::gpu {
 
 struct FlySettings {
     std::string sky = "clear";
+    render::ColorDesign colors;  // --colors, --snow-line (percent stops fitted to the DEM flown)
     int directions = 16;
     fly::CdlodOptions lod;
     double haze_km = 250.0;

@@ -76,7 +76,10 @@ Difference compare_core(const LinearImage& window, const ReceiverWindow& win, co
 TEST(WindowScene, ACoreShadedOnItsWindowWithTheFarFieldIsTheWholeDemsShading) {
     dem::Dem dem = dem::read_dem(fs::path(TS_SHARED_DATA) / "dem" / "copernicus_N45E005_grenoble_500px.tif");
     dem::fill_voids(dem);
-    const SceneOptions options = fly_options();
+    SceneOptions options = fly_options();
+    // A window's scene takes the whole DEM's colours (a palette fitted to the window's own
+    // heights would colour the core otherwise), as fly's detail tiles do.
+    options.colors = fit_colors(options.colors, dem);
     Scene whole(dem, options);
 
     constexpr int kCore = 128, kHalo = 48;
@@ -123,7 +126,10 @@ TEST(WindowScene, ACoreShadedOnItsWindowWithTheFarFieldIsTheWholeDemsShading) {
         EXPECT_LE(d.rms, k.max_rms) << k.time;
         EXPECT_LE(d.rms, p.rms) << k.time;
         if (sun.elevation_deg < 5) {
-            EXPECT_GT(p.rms, 2 * k.max_rms) << "the plain window fails the same bound";
+            // The plain window fails the same bound, with at least twice the far field's error
+            // (0.0201 against 0.0069 on the hypsometric palette).
+            EXPECT_GT(p.rms, k.max_rms) << "the plain window fails the same bound";
+            EXPECT_GT(p.rms, 2 * d.rms) << "the far field halves the plain window's error";
         }
     }
 }

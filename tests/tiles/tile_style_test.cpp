@@ -45,18 +45,19 @@ TEST(TileStyle, EachStyleSaysWhatTheEnumSwitchesDid) {
         const char* name;
         bool visibility;
         int channels;
-        bool true_heights, flat, halo, max_error, contrast;
+        bool true_heights, flat, halo, max_error, contrast, colours = false;
     };
     for (const Want& w : {Want{"relief", true, 1, false, true, true, true, true},
                           Want{"hillshade", false, 1, false, false, true, false, false},
                           Want{"multidirectional", false, 1, false, false, true, false, false},
                           Want{"svf", true, 1, false, false, false, false, false},
-                          Want{"color", true, 3, true, true, true, true, false}}) {
+                          Want{"color", true, 3, true, true, true, true, false, true}}) {
         const TileStyle& s = *find_tile_style(w.name);
         SCOPED_TRACE(w.name);
         EXPECT_EQ(s.uses_visibility(), w.visibility);
         EXPECT_EQ(s.channels(), w.channels);
         EXPECT_EQ(s.needs_true_heights(), w.true_heights);
+        EXPECT_EQ(s.colours_land(), w.colours);
         EXPECT_EQ(s.relative_to_flat(), w.flat);
         EXPECT_EQ(s.halo_without_far_field(), w.halo);
         EXPECT_EQ(s.takes_max_error(), w.max_error);

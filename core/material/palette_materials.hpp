@@ -1,0 +1,39 @@
+#pragma once
+// The materials of a map by design (docs/colors.md): land takes its colour from a palette of
+// height stops, water is decided from data (a void, a flat texel at or below sea level, or
+// WorldCover's class 80), snow only above a snow line the user gives, land cover only from a
+// raster the user gives. Nothing is guessed from slope.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/dem/dem.hpp"
+#include "core/material/material.hpp"
+#include "core/material/palette.hpp"
+#include "core/terrain/height_grid.hpp"
+#include "core/terrain/terrain_normals.hpp"
+
+namespace ts::render {
+
+struct ColorDesign {
+    Palette palette = *Palette::named(kDefaultPalette);  // percent stops fitted by fit_colors
+    // Snow and ice on every texel above this height (metres, +-75 m blend) that is not a cliff
+    // too steep to hold it (MaterialRule::snow_max_slope_deg); none if empty.
+    std::optional<double> snow_line_m;
+};
+
+// The heights the palette's percent stops span: the finite heights of the grid, or nullopt when
+// it holds none.
+std::optional<std::pair<double, double>> height_range(const terrain::HeightGrid& grid);
+
+// `design` with its percent stops placed on [lowest, highest].
+ColorDesign fit_colors(const ColorDesign& design, double lowest_m, double highest_m);
+// ... on the DEM's measured heights (voids excluded), as gdaldem color-relief places N%.
+ColorDesign fit_colors(const ColorDesign& design, const dem::Dem& dem);
+
+// Materials per texel. `design.palette` must be fitted (no percent stops left). With a land-cover
+// raster (WorldCover codes on the grid, 0 = none), its classes replace the palette where known.
+MaterialRaster palette_materials(const terrain::HeightGrid& grid, const NormalField& normals, const ColorDesign& design,
+                                 const std::vector<std::uint8_t>& worldcover = {}, const MaterialRule& water = {});
+
+}  // namespace ts::render

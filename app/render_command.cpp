@@ -133,7 +133,6 @@ void add_render_command(CLI::App& root) {
         "render",
         "Shaded picture of a DEM under the real sun and sky: a map on the DEM grid or a perspective view "
         "(docs/rendering.md). Sun shadows from the exact horizon, sky light through log-SH visibility.");
-    a->render.relief_contrast = "auto";  // one picture: stretch the shading when the light is soft
     add_render_options(*cmd, a->render);
     add_sun_options(*cmd, a->time, a->sun_azimuth, a->sun_elevation);
     cmd->add_option("-o,--out", a->out, "Output: .png / .tif (8-bit sRGB; a map .tif is georeferenced) or .exr (linear)")

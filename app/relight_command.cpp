@@ -1,6 +1,7 @@
 // `terrashade relight`: the same DEM under the sun and sky of many instants. Visibility and
 // transfer vectors are computed once; each frame is only the sky's SH, the sun's visibility
 // sweep and the per-texel shading (docs/rendering.md, "Relighting").
+#include <deque>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -43,14 +44,15 @@ struct RelightArgs {
     std::string format = "png";
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
-    bool skip_night = false;
+    std::string night = "skip";  // --night skip|include
+    bool skip_night = false;     // --skip-night, the earlier spelling of --night skip
     bool overwrite = false;  // replace the series already in out_dir
     std::string shard;  // K/N
     std::string mesh_path;  // the first --mesh follows this flight path (CSV, core/fly/flight_path.hpp)
 };
 
-// Below this sun elevation it is night for --skip-night: the end of civil twilight, when the
-// sky is too dark for terrain to read without artificial light.
+// Below this sun elevation it is night (--night): the end of civil twilight, when the sky is
+// too dark for terrain to read without artificial light.
 constexpr double kNightElevationDeg = -6.0;
 
 std::vector<light::UtcTime> read_times_file(const std::string& path) {
@@ -136,6 +138,8 @@ void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>
 
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
+    if (a.skip_night && a.night == "include") throw InputError("relight: --skip-night and --night include contradict");
+    const bool skip_night = a.night == "skip" || a.skip_night;
     RenderArgs render_args = a.render;
     fly::FlightPath path;
     if (!a.mesh_path.empty()) {
@@ -164,7 +168,7 @@ void run_relight(const RelightArgs& a) {
     plan.check();
     const Shard shard = shard_of_process(a.shard);
     if (!shard.whole() && exposure.automatic && a.format != "exr")
-        throw InputError("relight --shard: automatic exposure is smoothed from frame to frame over the whole series; "
+        throw InputError("relight --shard: automatic exposure is averaged over neighbouring frames of the whole series; "
                          "give --exposure EV (or --format exr) so that shards match one run");
     const std::vector<light::UtcTime> times =
         a.times.empty() ? read_times_file(a.times_file) : light::parse_time_interval(a.times, 10000);
@@ -184,7 +188,7 @@ void run_relight(const RelightArgs& a) {
         std::vector<render::SunState> suns;
         const render::SunSite sun_place = render::sun_site(dem);
         for (const auto& t : times)
-            if (const render::SunState s = render::sun_at(sun_place, t); !a.skip_night || s.elevation_deg >= kNightElevationDeg)
+            if (const render::SunState s = render::sun_at(sun_place, t); !skip_night || s.elevation_deg >= kNightElevationDeg)
                 suns.push_back(s);
         apply_max_error(render_args, dem, suns, options);
     }
@@ -207,20 +211,21 @@ void run_relight(const RelightArgs& a) {
         const render::SunState sun = render::sun_at(site, t);
         if (sun.elevation_deg < kNightElevationDeg) ++night;
         if (sun.elevation_deg < -0.27) ++down;
-        if (a.skip_night && sun.elevation_deg < kNightElevationDeg) continue;
+        if (skip_night && sun.elevation_deg < kNightElevationDeg) continue;
         frames.push_back({t, sun, "", 0, 0,
                           std::chrono::duration<double>(t - times.front()).count()});
     }
     if (frames.empty())
         throw InputError("relight: the sun is below " + std::to_string(int(kNightElevationDeg)) +
-                         " degrees (night) at every instant; nothing to render with --skip-night");
-    if (a.skip_night && night > 0)
-        std::printf("skipping %zu of %zu instants at night (sun below %.0f degrees)\n", night, times.size(),
-                    kNightElevationDeg);
-    else if (down > 0)
+                         " degrees (night) at every instant: nothing to render (--night include renders them)");
+    if (skip_night && night > 0)
+        std::printf("skipping %zu of %zu instants at night (sun below %.0f degrees; --night include keeps them)\n",
+                    night, times.size(), kNightElevationDeg);
+    if (down > (skip_night ? night : 0))
         std::fprintf(stderr, "terrashade: warning: the sun is below the horizon at %zu of %zu times: those frames "
-                             "have sky light only (--skip-night leaves out those below %.0f degrees)\n",
-                     down, times.size(), kNightElevationDeg);
+                             "have twilight or night sky light only%s\n",
+                     down - (skip_night ? night : 0), times.size(),
+                     skip_night ? "" : " (--night skip leaves out those below -6 degrees)");
     for (std::size_t k = 0; k < frames.size(); ++k) {
         char name[96];
         std::snprintf(name, sizeof name, "frame_%04zu_%s.%s", k, instant_for_file_name(frames[k].time).c_str(),
@@ -288,28 +293,47 @@ void run_relight(const RelightArgs& a) {
     double ev_min = 1e300, ev_max = -1e300;
     {
         // Frame k is tone-mapped, encoded and renamed into place on a writer thread while
-        // frame k+1 renders (encoding a PNG takes about as long as relighting it).
+        // frame k+1 renders (encoding a PNG takes about as long as relighting it). With an
+        // automatic exposure a frame waits for the frames its exposure averages over
+        // (sequence_exposure.hpp): at most `lookahead` frames are held.
         render::BackgroundWriter writer(a.write_queue, a.writer_threads);
         ProgressBar bar("relight", frames.size(), "frames");
-        for (Frame& fr : frames) {
+        std::deque<std::pair<std::size_t, render::LinearImage>> held;
+        const auto write_frame = [&](std::size_t k, render::LinearImage& frame_image) {
+            Frame& fr = frames[k];
+            render::Exposure frame_exposure = exposure;
+            if (sequence) {
+                frame_exposure.automatic = false;
+                frame_exposure.ev100 = sequence->ev(k);
+            }
+            fr.ev100 = frame_exposure.automatic ? 0.0 : frame_exposure.ev100;
+            ev_min = std::min(ev_min, fr.ev100), ev_max = std::max(ev_max, fr.ev100);
+            const std::string frame_path = (std::filesystem::path(a.out_dir) / fr.file).string();
+            index_of_frames.set(k, frame_path, times_csv_row(fr, linear));
+            writer.write(frame_path, frame_image, frame_exposure, scene->target().georef());
+            bar.advance();
+        };
+        const auto write_decided = [&] {
+            while (!held.empty() && (!sequence || held.front().first < sequence->decided())) {
+                write_frame(held.front().first, held.front().second);
+                held.pop_front();
+            }
+        };
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            Frame& fr = frames[k];
             const Stopwatch tf;
             place_mesh(fr);
             scene->render(fr.sun, image);
             render_s += tf.seconds();
             width = image.width, height = image.height;
-            render::Exposure frame_exposure = exposure;
-            if (sequence) {
-                const double own = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
-                frame_exposure.automatic = false;
-                frame_exposure.ev100 = sequence->next(own);
-            }
-            fr.ev100 = frame_exposure.automatic ? 0.0 : frame_exposure.ev100;
-            ev_min = std::min(ev_min, fr.ev100), ev_max = std::max(ev_max, fr.ev100);
-            const std::string frame_path = (std::filesystem::path(a.out_dir) / fr.file).string();
-            index_of_frames.set(std::size_t(&fr - frames.data()), frame_path, times_csv_row(fr, linear));
-            writer.write(frame_path, image, frame_exposure, scene->target().georef());
-            bar.advance();
+            if (sequence)
+                sequence->add(render::ev100_of_scale(render::image_exposure_scale(image, exposure)), fr.offset_s);
+            held.emplace_back(k, std::move(image));
+            image = render::LinearImage{};
+            write_decided();
         }
+        if (sequence) sequence->finish();
+        write_decided();
         writer.finish();
     }
     write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, linear);
@@ -317,8 +341,9 @@ void run_relight(const RelightArgs& a) {
     if (!shard.whole()) write_shard_marker(a.out_dir, shard);
     const double total_s = t1.seconds();
     if (per_frame_auto)
-        std::printf("exposure: automatic per frame, smoothed: EV100 %.2f to %.2f (at most %.0f EV brighter than the "
-                    "highest sun's %.2f; --exposure EV fixes one)\n",
+        std::printf("exposure: automatic per frame, averaged over up to %d frames each side within ~%.0f minutes: "
+                    "EV100 %.2f to %.2f (at most %.0f EV brighter than the highest sun's %.2f; --exposure EV fixes one)\n",
+                    render::SequenceExposureOptions{}.half_window, render::SequenceExposureOptions{}.tau_s / 60.0,
                     ev_min, ev_max, render::SequenceExposureOptions{}.max_boost_ev, reference_ev);
     if (motion.moves > 0) {
         // The same recompute over the whole grid, once, in this run: what each frame would cost
@@ -347,7 +372,7 @@ void add_relight_command(CLI::App& root) {
         "relight",
         "The same DEM relit for many instants: visibility once, then one frame per time, named with its number and "
         "instant (frame_0000_2025-06-21T0400Z.png, ...), and times.csv (file, time, sun, exposure of each frame). "
-        "Automatic exposure is per frame and smoothed; times with the sun below the horizon have sky light only.");
+        "Automatic exposure is per frame, averaged over neighbouring frames; times with the sun below the horizon have sky light only.");
     add_render_options(*cmd, a->render);
     cmd->add_option("--times", a->times, "START/END/STEP, ISO 8601 (e.g. 2025-06-21T04:00Z/2025-06-21T20:00Z/PT1H)");
     cmd->add_option("--times-file", a->times_file, "A file with one ISO 8601 instant per line (# comments)");
@@ -370,7 +395,13 @@ void add_relight_command(CLI::App& root) {
                     "The first --mesh follows this flight path (CSV t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg; "
                     "t_s from the first instant, heights above the datum; give --at only for the other meshes): per "
                     "frame only its old and new footprints are recomputed (docs/blockers.md)");
-    cmd->add_flag("--skip-night", a->skip_night, "Leave out instants with the sun below -6 degrees (after civil dusk)");
+    cmd->add_option("--night", a->night,
+                    "skip: leave out instants with the sun below -6 degrees (after civil dusk, before civil dawn; "
+                    "said on the terminal); include: render them (sky light fading to black)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"skip", "include"}));
+    // The earlier spelling, kept for scripts; not in --help.
+    cmd->add_flag("--skip-night", a->skip_night)->group("");
     cmd->callback([a] { run_relight(*a); });
 }
 

@@ -163,9 +163,10 @@ TEST(RenderCli, BadInputExitsTwoWithOneLine) {
 
 TEST(RelightCli, OneFramePerTimeAndSunDownWarns) {
     const auto dir = temp_dir("relight");
-    // 02:00Z is before sunrise at Grenoble in June: a sky-only frame and a warning.
+    // 02:00Z is before sunrise at Grenoble in June (night, -14 degrees): kept with --night
+    // include, a sky-only frame and a warning.
     const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop +
-                                " --times 2025-06-21T02:00:00Z/2025-06-21T12:00:00Z/PT5H --out " +
+                                " --times 2025-06-21T02:00:00Z/2025-06-21T12:00:00Z/PT5H --night include --out " +
                                 quote((dir / "frames").string())));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("below the horizon at 1 of 3"), std::string::npos) << r.err;

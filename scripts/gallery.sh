@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders docs/gallery/: the Gresivaudan valley (Grenoble, looking south-east from above the
 # Chartreuse) at dawn, noon and dusk of the June solstice, under an overcast sky and under an HDR
-# environment map, from data/grenoble_500px.tif. Each perspective PNG is 640x360, the map 240x240
+# environment map, and as maps (default colours, grey, winter, overcast), from
+# data/grenoble_500px.tif. Each perspective PNG is 640x360, each map 240x240
 # (every file < 200 KB; the perspective views are dithered, docs/rendering.md).
 # Usage: scripts/gallery.sh [path/to/terrashade]   (default: the release build)
 set -euo pipefail
@@ -22,6 +23,11 @@ $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky data/sunset_syn
 # The same noon as a map (the whole DEM, top-down), downsampled to 240x240 to stay small
 # (400x400 gave 298 KB: a map has far more detail per pixel than the hazy perspective views).
 $ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --out "$out/noon_map.png"
+# Colours by design (docs/colors.md): the same map on uniform grey (the relief alone), a winter
+# map with snow above 1800 m, and the default map under an overcast sky.
+$ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --colors grey --out "$out/noon_map_grey.png"
+$ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --snow-line 1800 --out "$out/noon_map_winter.png"
+$ts render "$dem" --time 2025-06-21T11:40:00Z --size 240x240 --sky overcast --out "$out/overcast_map.png"
 # The mesh pictures (the Cessna and the milk truck with their shadows).
 scripts/gallery_mesh_shadow.sh "$ts"
 ls -l "$out"

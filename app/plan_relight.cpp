@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 #include <system_error>
 
 #include "app/compute_device.hpp"
 #include "app/io_plan.hpp"
+#include "app/options/night_option.hpp"
 #include "app/render_options.hpp"
 #include "app/wall_time.hpp"
 #include "core/light/time_interval.hpp"
@@ -30,6 +32,7 @@ struct PlanRelightArgs {
     double rate = 0;
     double setup_seconds = -1;
     int sample = 3;
+    NightArgs night;  // the frames relight renders: night left out unless --night include
 };
 
 void run_plan_relight(const PlanRelightArgs& a) {
@@ -40,11 +43,20 @@ void run_plan_relight(const PlanRelightArgs& a) {
     plan_render_inputs(plan, a.render, options);
     plan.check();
     if (a.rate < 0) throw InputError("--rate: frames per second per shard, > 0");
-    const auto times = light::parse_time_interval(a.times, 10000000);
+    const bool skip_night = skips_night(a.night);
+    const auto instants = light::parse_time_interval(a.times, 10000000);
     const dem::Dem dem = load_dem_input(a.render.dem);
     attach_meshes(a.render, dem, options);
-    std::printf("relight of %s: %zu frames (%dx%d texels)\n", a.render.dem.files.front().c_str(), times.size(),
-                dem.width, dem.height);
+    // The frames relight will render: without the night instants, as it leaves them out.
+    std::vector<light::UtcTime> times;
+    const render::SunSite site = render::sun_site(dem);
+    for (const auto& t : instants)
+        if (!skip_night || render::sun_at(site, t).elevation_deg >= kNightElevationDeg) times.push_back(t);
+    if (times.empty()) throw InputError("plan relight: the sun is below -6 degrees (night) at every instant: nothing to render");
+    std::printf("relight of %s: %zu frames (%dx%d texels)", a.render.dem.files.front().c_str(), times.size(), dem.width,
+                dem.height);
+    if (times.size() < instants.size()) std::printf(", %zu night instants left out", instants.size() - times.size());
+    std::printf("\n");
 
     double setup_s = std::max(0.0, a.setup_seconds), frames_per_s = a.rate, frame_bytes = 0;
     const bool measure = a.rate == 0 || a.setup_seconds < 0;
@@ -120,6 +132,7 @@ void add_plan_relight_command(CLI::App& plan) {
     cmd->add_option("--rate", a->rate, "Frames per second of one shard, instead of the measured sample's");
     cmd->add_option("--setup-seconds", a->setup_seconds, "Setup (visibility, transfer) of one shard, instead of measured");
     cmd->add_option("--sample", a->sample, "Frames to render (and throw away) to measure")->capture_default_str();
+    add_night_options(*cmd, a->night);
     cmd->callback([a] { run_plan_relight(*a); });
 }
 

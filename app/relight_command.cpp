@@ -31,6 +31,7 @@
 #include "core/util/progress_bar.hpp"
 #include "core/util/stopwatch.hpp"
 #include "core/util/temp_files.hpp"
+#include "app/options/night_option.hpp"
 #include "app/options/within_range.hpp"
 
 namespace ts::app {
@@ -44,16 +45,12 @@ struct RelightArgs {
     std::string format = "png";
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
-    std::string night = "skip";  // --night skip|include
-    bool skip_night = false;     // --skip-night, the earlier spelling of --night skip
+    NightArgs night;  // --night skip|include (app/options/night_option.hpp)
     bool overwrite = false;  // replace the series already in out_dir
     std::string shard;  // K/N
     std::string mesh_path;  // the first --mesh follows this flight path (CSV, core/fly/flight_path.hpp)
 };
 
-// Below this sun elevation it is night (--night): the end of civil twilight, when the sky is
-// too dark for terrain to read without artificial light.
-constexpr double kNightElevationDeg = -6.0;
 
 std::vector<light::UtcTime> read_times_file(const std::string& path) {
     std::ifstream in(path);
@@ -138,8 +135,7 @@ void write_times_csv(const std::filesystem::path& path, const std::vector<Frame>
 
 void run_relight(const RelightArgs& a) {
     if (a.times.empty() == a.times_file.empty()) throw InputError("relight: give either --times or --times-file");
-    if (a.skip_night && a.night == "include") throw InputError("relight: --skip-night and --night include contradict");
-    const bool skip_night = a.night == "skip" || a.skip_night;
+    const bool skip_night = skips_night(a.night);
     RenderArgs render_args = a.render;
     fly::FlightPath path;
     if (!a.mesh_path.empty()) {
@@ -395,13 +391,7 @@ void add_relight_command(CLI::App& root) {
                     "The first --mesh follows this flight path (CSV t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg; "
                     "t_s from the first instant, heights above the datum; give --at only for the other meshes): per "
                     "frame only its old and new footprints are recomputed (docs/blockers.md)");
-    cmd->add_option("--night", a->night,
-                    "skip: leave out instants with the sun below -6 degrees (after civil dusk, before civil dawn; "
-                    "said on the terminal); include: render them (sky light fading to black)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"skip", "include"}));
-    // The earlier spelling, kept for scripts; not in --help.
-    cmd->add_flag("--skip-night", a->skip_night)->group("");
+    add_night_options(*cmd, a->night);
     cmd->callback([a] { run_relight(*a); });
 }
 

@@ -128,4 +128,17 @@ TEST(ShardCli, PlanTilesCountsTilesAndShards) {
     EXPECT_NE(bad.err.find("--wall-time soon"), std::string::npos) << bad.err;
 }
 
+TEST(ShardCli, PlanRelightCountsTheFramesRelightRenders) {
+    // A June day at Grenoble every 2 hours: 02Z is night (sun -14 degrees), left out as relight
+    // leaves it out; with --night include all ten are frames.
+    const std::string day = " --times 2025-06-21T02:00:00Z/2025-06-21T20:00:00Z/PT2H --crop 5.65,45.10,5.85,45.30"
+                            " --directions 8 --wall-time 1h --rate 10 --setup-seconds 1";
+    const Result r = run("plan relight " + kDem + day);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(": 9 frames (101x101 texels), 1 night instants left out"), std::string::npos) << r.out;
+    const Result all = run("plan relight " + kDem + day + " --night include");
+    ASSERT_EQ(all.exit_code, 0) << all.err;
+    EXPECT_NE(all.out.find(": 10 frames (101x101 texels)\n"), std::string::npos) << all.out;
+}
+
 }  // namespace

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/quicklook_legend.hpp"
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
 #include "app/options/max_error_option.hpp"
@@ -59,45 +60,63 @@ bool is_png(const std::string& path) { return raster::written_as(path, raster::I
 // GIS: a linear stretch from the 1st to the 99th percentile of the valid values to grey 1..255
 // (void 0). On real terrain most of the DEM is nearly open (the median svf of the Grenoble DEM is
 // 0.99), so mapping 0..1 left the picture in the top half of the grey range with a fifth of it
-// pure white; the stretch gives the relief the whole range and is printed, and the GeoTIFF
-// output keeps the values themselves.
-// `path` is the staged temporary file; `name` the output the user asked for, which the printed
-// line names.
-void write_fraction_png(const std::string& path, const std::string& name, const dem::Dem& dem, const float* data) {
+// pure white; the stretch gives the relief the whole range, and the legend beside it
+// (NAME_legend.png) and the printed line say which values the greys are. The GeoTIFF output
+// keeps the values themselves.
+struct Stretch {
+    float lo = 0, hi = 1;
+};
+
+Stretch fraction_stretch(const dem::Dem& dem, const float* data) {
     const std::size_t n = std::size_t(dem.width) * dem.height;
     std::vector<float> valid;
     valid.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isnan(data[i])) valid.push_back(std::clamp(data[i], 0.0f, 1.0f));
-    float lo = 0, hi = 1;
+    Stretch s;
     if (!valid.empty()) {
         auto at = [&](double q) {
             const auto k = std::size_t(q * double(valid.size() - 1));
             std::nth_element(valid.begin(), valid.begin() + std::ptrdiff_t(k), valid.end());
             return valid[k];
         };
-        lo = at(0.01), hi = at(0.99);
-        if (!(hi > lo)) lo = std::max(0.0f, hi - 1e-3f), hi = std::min(1.0f, lo + 1e-3f);  // a flat DEM
+        s.lo = at(0.01), s.hi = at(0.99);
+        if (!(s.hi > s.lo)) s.lo = std::max(0.0f, s.hi - 1e-3f), s.hi = std::min(1.0f, s.lo + 1e-3f);  // a flat DEM
     }
-    std::vector<std::uint8_t> grey(n);
-    const float scale = 254.0f / (hi - lo);
-    for (std::size_t i = 0; i < n; ++i) {
-        const float v = data[i];
-        grey[i] = std::isnan(v) ? 0 : std::uint8_t(1.5f + std::clamp((v - lo) * scale, 0.0f, 254.0f));
-    }
-    raster::write_u8_image(path, dem.width, dem.height, 1, grey.data(), nullptr);
-    std::printf("%s: grey 1..255 = %.4f..%.4f (the 1st to 99th percentile, stretched linearly; 0 = void)\n",
-                name.c_str(), lo, hi);
+    return s;
 }
 
-// Stages one output (committed with the others at the end) and notes its "wrote" line.
+void write_fraction_png(const std::string& path, const dem::Dem& dem, const float* data, Stretch s) {
+    const std::size_t n = std::size_t(dem.width) * dem.height;
+    std::vector<std::uint8_t> grey(n);
+    const float scale = 254.0f / (s.hi - s.lo);
+    for (std::size_t i = 0; i < n; ++i) {
+        const float v = data[i];
+        grey[i] = std::isnan(v) ? 0 : std::uint8_t(1.5f + std::clamp((v - s.lo) * scale, 0.0f, 254.0f));
+    }
+    raster::write_u8_image(path, dem.width, dem.height, 1, grey.data(), nullptr);
+}
+
+// Stages one output (committed with the others at the end) and notes its "wrote" line; a PNG
+// quick-look gets its legend beside it, titled `legend_title`.
 void write_raster(StagedOutputs& outputs, std::vector<std::string>& wrote, const std::string& path,
-                  const dem::Dem& dem, int bands, const float* data, const std::vector<std::string>& names) {
+                  const dem::Dem& dem, int bands, const float* data, const std::vector<std::string>& names,
+                  const std::string& legend_title = {}) {
+    if (is_png(path)) {
+        const Stretch s = fraction_stretch(dem, data);
+        const std::string legend = legend_path_for(path);
+        outputs.stage(path, [&](const std::filesystem::path& tmp) { write_fraction_png(tmp.string(), dem, data, s); });
+        outputs.stage(legend, [&](const std::filesystem::path& tmp) {
+            write_legend_png(tmp.string(), dem.width, Legend{legend_title, "", s.lo, s.hi, grey_ramp});
+        });
+        std::printf("%s: grey 1..255 = %.4f..%.4f (the 1st to 99th percentile, stretched linearly; 0 = void), "
+                    "legend in %s\n",
+                    path.c_str(), s.lo, s.hi, legend.c_str());
+        wrote.push_back("wrote " + path + " (grey quick-look) and " + legend + " (its legend)");
+        return;
+    }
     outputs.stage(path, [&](const std::filesystem::path& tmp) {
-        if (is_png(path))
-            write_fraction_png(tmp.string(), path, dem, data);
-        else
-            raster::write_float_raster(tmp, dem.width, dem.height, bands, data, dem.georef, names);
+        raster::write_float_raster(tmp, dem.width, dem.height, bands, data, dem.georef, names);
     });
     wrote.push_back("wrote " + path + " (" + std::to_string(bands) + " band" + (bands == 1 ? "" : "s") + ")");
 }
@@ -122,6 +141,8 @@ void run_visibility(VisibilityOptions& o) {
     plan.output("--svf", o.svf, extensions).output("--sky-visible", o.sky_visible, extensions);
     plan.output("--horizons", o.horizons, extensions).output("--sh", o.sh, extensions);
     plan.output("--log-sh", o.log_sh, extensions);
+    for (const std::string* quick_look : {&o.svf, &o.sky_visible})
+        if (is_png(*quick_look)) plan.output("the legend of " + *quick_look, legend_path_for(*quick_look), {".png"});
     plan.check();
     for (const std::string* multi_band : {&o.horizons, &o.sh, &o.log_sh})
         if (is_png(*multi_band))
@@ -190,10 +211,11 @@ void run_visibility(VisibilityOptions& o) {
         write_raster(outputs, wrote, o.horizons, dem, set.directions, deg.data(), names);
     }
     if (!o.svf.empty())
-        write_raster(outputs, wrote, o.svf, dem, 1, result.svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"});
+        write_raster(outputs, wrote, o.svf, dem, 1, result.svf.data(), {"svf: cosine-weighted visible sky, horizontal receiver"},
+                     "sky view factor");
     if (!o.sky_visible.empty())
         write_raster(outputs, wrote, o.sky_visible, dem, 1, result.sky_visible.data(),
-                     {"sky_visible: visible fraction of the upper hemisphere"});
+                     {"sky_visible: visible fraction of the upper hemisphere"}, "visible sky fraction");
     if (!o.sh.empty() || !o.log_sh.empty()) {
         const std::span<const float> log_sh(result.log_sh);
         std::vector<std::string> names;

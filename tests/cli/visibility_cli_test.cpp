@@ -161,6 +161,23 @@ TEST_F(VisibilityCli, PngQuickLookIsTheFloatRasterStretched) {
     // The whole grey range is used, and few pixels are pure white (the 1% above the 99th percentile).
     EXPECT_LE(darkest, 2);
     EXPECT_LT(double(white) / double(valid), 0.02);
+
+    // Its legend beside it: the ramp from grey 1 (left) to 255 (right) under a title line.
+    const fs::path legend = dir_ / "svf_legend.png";
+    EXPECT_NE(r.out.find("legend in " + legend.string()), std::string::npos) << r.out;
+    auto lin = OIIO::ImageInput::open(legend.string());
+    ASSERT_TRUE(lin) << legend;
+    const int lw = lin->spec().width, lh = lin->spec().height;
+    EXPECT_GE(lw, 200);
+    std::vector<unsigned char> rgb(std::size_t(lw) * std::size_t(lh) * 3);
+    ASSERT_TRUE(lin->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data()));
+    // The bar's row: the first row below the title whose middle pixel is mid-grey.
+    int bar = -1;
+    for (int y = 0; y < lh && bar < 0; ++y)
+        if (const int g = rgb[(std::size_t(y) * std::size_t(lw) + std::size_t(lw / 2)) * 3]; g > 100 && g < 160) bar = y;
+    ASSERT_GE(bar, 0);
+    EXPECT_LE(rgb[(std::size_t(bar) * std::size_t(lw) + 4) * 3], 3);
+    EXPECT_GE(rgb[(std::size_t(bar) * std::size_t(lw) + std::size_t(lw - 5)) * 3], 253);
 }
 
 TEST_F(VisibilityCli, VoidReceiverIsNaN) {

@@ -1,0 +1,35 @@
+#pragma once
+// The legend of a quick-look picture: a title line, the colour ramp as a bar, and the values at
+// its ends and middle with their unit. Drawn in a margin under a picture that is not
+// georeferenced (insolation quick-looks), or as a side-car NAME_legend.png beside one whose
+// pixels must stay the data (the svf quick-look).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ts::app {
+
+// A ramp: x in [0, 1] to 8-bit RGB.
+using Ramp = void (*)(float x, std::uint8_t* rgb);
+// matplotlib's "inferno" (a public colour map) through five stops: for energies.
+void inferno_ramp(float x, std::uint8_t* rgb);
+// Grey 1..255, as the fraction quick-looks are stretched.
+void grey_ramp(float x, std::uint8_t* rgb);
+
+struct Legend {
+    std::string title;  // what the picture shows, e.g. "sky view factor"
+    std::string unit;   // after the upper value; may be empty
+    float lo = 0, hi = 1;  // the values at the ramp's ends (the picture clamps beyond them)
+    Ramp ramp = grey_ramp;
+};
+
+// Rows the strip takes.
+int legend_height();
+// Draws the strip into rows [y0, y0 + legend_height()) of an RGB image `width` wide.
+void draw_legend(std::vector<std::uint8_t>& rgb, int width, int height, int y0, const Legend& legend);
+// The strip alone as an RGB PNG `width` wide (at least 200).
+void write_legend_png(const std::string& path, int width, const Legend& legend);
+// Where a picture's side-car legend goes: DIR/NAME.png -> DIR/NAME_legend.png.
+std::string legend_path_for(const std::string& picture);
+
+}  // namespace ts::app

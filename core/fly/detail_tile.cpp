@@ -96,8 +96,8 @@ DetailTile::DetailTile(DetailTileKey key, const DetailTileLayout& layout, const 
     render::SceneOptions so;
     so.view = render::ViewKind::map;
     so.sky = light::parse_sky_options(options.sky);
-    // The palette's percent stops on the overview's heights: every tile colours a height alike
-    // (a window's own range would give each tile other colours).
+    // The palette's percent stops on the overview's heights, unless fitted already (the cache
+    // fits once): every tile colours a height alike (a window's own range would not).
     so.colors = render::fit_colors(options.colors, overview.points);
     so.renderer.directions = options.directions;
     so.renderer.threads = options.threads;

@@ -14,6 +14,9 @@ DetailTileCache::DetailTileCache(const dem::DemSource& source, const TerrainOver
                                  const DetailCacheOptions& options)
     : source_(source), overview_(overview), far_(far), frame_(frame),
       layout_(detail_tile_layout(overview, patch_quads)), options_(options) {
+    // The palette fitted once on the overview, not by every tile it builds (DetailTile fits
+    // only a palette that is not fitted yet).
+    options_.shading.colors = render::fit_colors(options_.shading.colors, overview.points);
     tile_bytes_ = detail_tile_bytes(layout_.tile_texels, options.shading.halo);
     const std::size_t tiles = std::size_t(layout_.tiles_x) * std::size_t(layout_.tiles_y);
     slots_ = int(std::min(options.budget_bytes / tile_bytes_, tiles));

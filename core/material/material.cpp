@@ -4,14 +4,10 @@
 #include <cmath>
 
 #include "core/util/angles.hpp"
+#include "core/util/smoothstep.hpp"
 
 namespace ts::render {
 namespace {
-
-double smoothstep(double e0, double e1, double x) {
-    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
 
 struct Blend {
     glm::vec3 albedo{0.0f};

@@ -2,31 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/dem/statistics.hpp"
 #include "core/util/angles.hpp"
+#include "core/util/smoothstep.hpp"
 
 namespace ts::render {
 namespace {
-
-double smoothstep(double e0, double e1, double x) {
-    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
 
 // Half the height over which land hands over to snow at the snow line.
 constexpr double kSnowBlendM = 75.0;
 
 }  // namespace
-
-std::optional<std::pair<double, double>> height_range(const terrain::HeightGrid& g) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (float z : g.z)
-        if (std::isfinite(z)) lo = std::min(lo, double(z)), hi = std::max(hi, double(z));
-    if (!(lo <= hi)) return std::nullopt;
-    return std::make_pair(lo, hi);
-}
 
 ColorDesign fit_colors(const ColorDesign& design, double lowest_m, double highest_m) {
     ColorDesign d = design;

@@ -22,10 +22,6 @@ struct ColorDesign {
     std::optional<double> snow_line_m;
 };
 
-// The heights the palette's percent stops span: the finite heights of the grid, or nullopt when
-// it holds none.
-std::optional<std::pair<double, double>> height_range(const terrain::HeightGrid& grid);
-
 // `design` with its percent stops placed on [lowest, highest].
 ColorDesign fit_colors(const ColorDesign& design, double lowest_m, double highest_m);
 // ... on the DEM's measured heights (voids excluded), as gdaldem color-relief places N%.

@@ -57,12 +57,9 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
     NormalField normals = terrain_normals(*grid_, options_.renderer.threads);
     std::vector<std::uint8_t> cover;
     if (!options_.materials.empty()) cover = read_landcover_on_grid(options_.materials, dem_.georef);
-    ColorDesign colors = options_.colors;
-    if (colors.palette.has_percent_stops()) {
-        const auto range = height_range(*grid_);
-        colors = fit_colors(colors, range ? range->first : 0.0, range ? range->second : 0.0);
-    }
-    MaterialRaster materials = palette_materials(*grid_, normals, colors, cover, options_.rule);
+    // Percent stops on this DEM's measured heights (as tiles and fly fit theirs), unless fitted.
+    MaterialRaster materials =
+        palette_materials(*grid_, normals, fit_colors(options_.colors, dem_), cover, options_.rule);
     if (!options_.albedo.empty()) apply_albedo(materials, read_orthophoto_albedo(options_.albedo, dem_.georef));
     // The palette's colours are designed; measured albedos (land cover, an orthophoto) span
     // 2-3x in luminance and are compressed so the relief reads first.

@@ -97,7 +97,7 @@ Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings
     co.shading.halo = settings_.detail_halo;
     co.shading.directions = settings_.directions;
     co.shading.sky = settings_.sky;
-    co.shading.colors = settings_.colors;  // fitted on the overview, as make_scene's (DetailTile)
+    co.shading.colors = settings_.colors;  // the cache fits it on the overview, as make_scene does
     cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);
     tree_ = std::make_unique<fly::CdlodTree>(overview_->cdlod, frame_, settings_.lod, cache_.get());
     init_renderer();

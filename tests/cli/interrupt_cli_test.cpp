@@ -99,20 +99,6 @@ Interrupted run_and_signal(const std::vector<std::string>& args, int sig, std::c
     return r;
 }
 
-// The `file` column of a times.csv, in order.
-std::vector<std::string> csv_files(const fs::path& times_csv) {
-    std::ifstream in(times_csv);
-    std::string line;
-    std::getline(in, line);  // header
-    std::vector<std::string> files;
-    while (std::getline(in, line)) {
-        const auto a = line.find(','), b = line.find(',', a + 1);
-        files.push_back(line.substr(a + 1, b - a - 1));
-    }
-    return files;
-}
-
-
 // Files and folders under `dir` an interrupt must not leave: temporaries (hidden, ".tmp-"),
 // SQLite's -shm, empty folders, folders holding only a tile job file.
 std::vector<std::string> leftovers(const fs::path& dir) {

@@ -15,9 +15,12 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace fs = std::filesystem;
+using ts::cli_test::Pixels;
 using ts::cli_test::quote;
+using ts::cli_test::read_pixels;
 using ts::cli_test::Result;
 using ts::cli_test::run;
 using ts::cli_test::temp_dir;
@@ -25,22 +28,9 @@ using ts::cli_test::terrashade;
 
 namespace {
 
-struct Pixels {
-    int width = 0, height = 0, channels = 0;
-    std::vector<unsigned char> data;
-    unsigned char at(int c, int r, int ch) const {
-        return data[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * std::size_t(channels) + std::size_t(ch)];
-    }
-};
-
 Pixels read_image(const fs::path& path) {
-    Pixels p;
-    auto in = OIIO::ImageInput::open(path.string());
-    EXPECT_TRUE(in) << path;
-    if (!in) return p;
-    p.width = in->spec().width, p.height = in->spec().height, p.channels = in->spec().nchannels;
-    p.data.resize(std::size_t(p.width) * std::size_t(p.height) * std::size_t(p.channels));
-    in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.data.data());
+    Pixels p = read_pixels(path);
+    EXPECT_GT(p.width, 0) << path;
     return p;
 }
 

@@ -182,18 +182,6 @@ TEST(OneJobPerOutputCli, MbtilesFileHoldsOneJob) {
     expect_refused(run(ts_cmd(tiles_args("hillshade", t))), "--overwrite", "hillshade into relief");
 }
 
-std::vector<std::string> csv_files(const fs::path& times_csv) {
-    std::ifstream in(times_csv);
-    std::string line;
-    std::getline(in, line);  // header
-    std::vector<std::string> files;
-    while (std::getline(in, line)) {
-        const auto a = line.find(','), b = line.find(',', a + 1);
-        files.push_back(line.substr(a + 1, b - a - 1));
-    }
-    return files;
-}
-
 std::vector<std::string> frames_in(const fs::path& dir) {
     std::vector<std::string> frames;
     for (const auto& e : fs::directory_iterator(dir))

@@ -30,10 +30,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 #include "tests/cli/mbtiles_probe.hpp"
 
 namespace fs = std::filesystem;
 using ts::cli_test::committed_tiles;
+using ts::cli_test::Pixels;
+using ts::cli_test::read_pixels;
 using ts::cli_test::quote;
 using ts::cli_test::run;
 using ts::cli_test::temp_dir;
@@ -44,24 +47,6 @@ namespace {
 const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
 const std::string kGrenoble = kDem + "copernicus_N45E005_grenoble_500px.tif";
 const std::string kAnatolia = kDem + "srtm3_N39E040_1000px.tif";
-
-struct Pixels {
-    int width = 0, height = 0, channels = 0;
-    std::vector<unsigned char> data;
-    unsigned char at(int c, int r, int ch) const {
-        return data[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * std::size_t(channels) + std::size_t(ch)];
-    }
-};
-
-Pixels read_png(const fs::path& path) {
-    Pixels p;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return p;
-    p.width = in->spec().width, p.height = in->spec().height, p.channels = in->spec().nchannels;
-    p.data.resize(std::size_t(p.width) * std::size_t(p.height) * std::size_t(p.channels));
-    in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.data.data());
-    return p;
-}
 
 std::string read_bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -99,7 +84,7 @@ std::string xyz_differences(const fs::path& a, const fs::path& b) {
             continue;
         }
         if (it->second == hash) continue;
-        const Pixels pa = read_png(a / key), pb = read_png(b / key);
+        const Pixels pa = read_pixels(a / key), pb = read_pixels(b / key);
         out << key << ": " << fs::file_size(a / key) << " vs " << fs::file_size(b / key) << " bytes";
         if (pa.width != pb.width || pa.height != pb.height || pa.channels != pb.channels || pa.data.empty()) {
             out << ", different or unreadable pictures\n";
@@ -169,7 +154,7 @@ void expect_seamless(const fs::path& small_dir, const fs::path& large_dir, int z
         for (const auto& f : fs::directory_iterator(xdir.path())) {
             if (f.path().filename().string()[0] == '.') continue;
             const int x = std::stoi(xdir.path().filename().string()), y = std::stoi(f.path().stem().string());
-            const Pixels large = read_png(f.path());
+            const Pixels large = read_pixels(f.path());
             ASSERT_EQ(large.width, 512);
             for (int dy = 0; dy < 2; ++dy)
                 for (int dx = 0; dx < 2; ++dx) {
@@ -177,7 +162,7 @@ void expect_seamless(const fs::path& small_dir, const fs::path& large_dir, int z
                                         (std::to_string(2 * y + dy) + ".png");
                     // A quarter with no data is not written; then the large tile is clear there.
                     Pixels small;
-                    if (fs::exists(sp)) small = read_png(sp);
+                    if (fs::exists(sp)) small = read_pixels(sp);
                     long differ = 0;
                     for (int r = 0; r < 256; ++r)
                         for (int c = 0; c < 256; ++c)
@@ -218,7 +203,7 @@ TEST(TilesCli, HillshadeRowsEqualGdaldemOnTheTilePixels) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const fs::path heights = d / "t" / "12-2508-1555-heights.tif";
     ASSERT_TRUE(fs::exists(heights));
-    const Pixels tile = read_png(d / "t" / "12" / "2508" / "1555.png");
+    const Pixels tile = read_pixels(d / "t" / "12" / "2508" / "1555.png");
     ASSERT_EQ(tile.width, 256);
     // Rows 0, 128, 255: z_j = E cosh(y_j / R), y_j the row's pixel centre, E the exaggeration:
     // z12 is past the 90 m DEM's native zoom z10 and keeps E(10) = 2^(2/3).
@@ -233,7 +218,7 @@ TEST(TilesCli, HillshadeRowsEqualGdaldemOnTheTilePixels) {
                       quote(out.string()))
                       .exit_code,
                   0);
-        const Pixels gd = read_png(out);
+        const Pixels gd = read_pixels(out);
         ASSERT_EQ(gd.width, 258);
         int equal = 0, off_by_one = 0;
         for (int i = 0; i < 256; ++i) {
@@ -250,7 +235,7 @@ TEST(TilesCli, MultidirectionalRowEqualsGdaldemMultidirectional) {
     const fs::path d = temp_dir("gdaldem_md");
     const auto r = run(tiles_cmd(kAnatolia, "--zoom 12 --style multidirectional --debug-heights 12/2508/1555", d / "t"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const Pixels tile = read_png(d / "t" / "12" / "2508" / "1555.png");
+    const Pixels tile = read_pixels(d / "t" / "12" / "2508" / "1555.png");
     ASSERT_EQ(tile.width, 256);
     const int j = 128;
     const double res = 2 * 20037508.342789244 / (256.0 * 4096);
@@ -262,7 +247,7 @@ TEST(TilesCli, MultidirectionalRowEqualsGdaldemMultidirectional) {
                   quote((d / "t" / "12-2508-1555-heights.tif").string()) + " " + quote(out.string()))
                   .exit_code,
               0);
-    const Pixels gd = read_png(out);
+    const Pixels gd = read_pixels(out);
     ASSERT_EQ(gd.width, 258);
     int equal = 0;
     for (int i = 0; i < 256; ++i) {

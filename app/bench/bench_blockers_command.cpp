@@ -37,7 +37,7 @@
 namespace ts::app {
 namespace {
 
-struct Row {
+struct BlockersRow {
     int count = 0;
     double decompose_s = 0, excess = 0;
     double sky_rmse = 0, sky_max = 0, sky_bias = 0, ref_shadow_mean = 0;
@@ -92,13 +92,13 @@ SunFigures sun_figures(const terrain::HeightGrid& grid, const blockers::SphereBl
     return f;
 }
 
-void write_csv(const std::string& path, const std::vector<Row>& rows) {
+void write_csv(const std::string& path, const std::vector<BlockersRow>& rows) {
     std::ostringstream t;
     t << "spheres,excess_volume_ratio,decompose_s,sky_texels,sky_rmse,sky_max_error,sky_bias,ref_sky_shadow_mean,"
          "shaded_texels,shaded_rmse,ref_sky_shadow_max,sphere_texel_pairs,sky_s,sun_iou,sun_rmse,sun_ref_texels,sun_ours_texels,sun_s,"
          "unbounded_sky_rmse,unbounded_shaded_rmse,unbounded_sky_max_error,unbounded_max_brightening,"
          "triangles_sun_iou,triangles_sun_rmse,triangles_sun_s\n";
-    for (const Row& r : rows)
+    for (const BlockersRow& r : rows)
         t << r.count << ',' << csv_number(r.excess) << ',' << csv_number(r.decompose_s) << ',' << r.sky_texels << ','
           << csv_number(r.sky_rmse) << ',' << csv_number(r.sky_max) << ',' << csv_number(r.sky_bias) << ','
           << csv_number(r.ref_shadow_mean) << ',' << r.shaded_texels << ',' << csv_number(r.shaded_rmse) << ','
@@ -193,13 +193,13 @@ void run_bench_blockers(const BenchBlockersOptions& o) {
     const sh::ShVec lobe = visibility::zenith_cosine_lobe();
     const sh::ExpMethod exp = sh::ExpMethod::scaling_squaring;  // the renderer's default
     const int sky_w = sky_rect.col1 - sky_rect.col0;
-    std::vector<Row> rows;
+    std::vector<BlockersRow> rows;
     std::printf("%7s %7s %9s %9s %9s %9s %7s %9s %11s %8s %8s %8s %8s %8s %8s %8s | %9s %9s %9s %9s\n", "spheres",
                 "excess", "sky_rmse", "sky_max", "sky_bias", "ref_dark", "shaded", "shade_rms", "pairs", "sky_ms",
                 "sun_iou", "sun_rmse", "sun_ms", "tri_iou", "tri_rmse", "tri_ms", "ub_rmse", "ub_shade", "ub_max",
                 "ub_bright");
     for (const Set& s : sets) {
-        Row row;
+        BlockersRow row;
         row.count = int(s.d.spheres.size()), row.decompose_s = s.d.seconds, row.excess = s.d.excess_volume_ratio;
         std::vector<float> log_sh(base.log_sh.begin(), base.log_sh.end());
         const Stopwatch t1;

@@ -30,7 +30,7 @@ struct BenchSpheresOptions {
     std::string csv;
 };
 
-struct Row {
+struct SpheresRow {
     std::string name;
     std::size_t triangles;
     int count;
@@ -47,13 +47,13 @@ void run_bench_spheres(const BenchSpheresOptions& o) {
     std::vector<std::pair<std::string, mesh::TriangleMesh>> meshes;
     for (const auto& p : paths) meshes.emplace_back(std::filesystem::path(p).filename().string(), mesh::import_mesh(p));
 
-    std::vector<Row> rows;
+    std::vector<SpheresRow> rows;
     std::printf("%-28s %9s %6s %7s %9s %8s %8s\n", "mesh", "triangles", "count", "spheres", "coverage", "excess", "seconds");
     auto measure = [&](const std::string& name, const mesh::TriangleMesh& m, int count) {
         blockers::DecompositionOptions d;
         d.count = count;
         d.threads = o.threads;
-        Row r{name, m.triangle_count(), count, blockers::decompose_into_spheres(m, d)};
+        SpheresRow r{name, m.triangle_count(), count, blockers::decompose_into_spheres(m, d)};
         std::printf("%-28s %9zu %6d %7zu %9.5f %8.3f %8.2f\n", name.c_str(), r.triangles, count, r.d.spheres.size(),
                     r.d.surface_coverage, r.d.excess_volume_ratio, r.d.seconds);
         std::fflush(stdout);
@@ -70,7 +70,7 @@ void run_bench_spheres(const BenchSpheresOptions& o) {
     if (!o.csv.empty()) {
         std::ostringstream text;
         text << "mesh,triangles,count,spheres,surface_coverage,excess_volume_ratio,seconds\n";
-        for (const Row& r : rows)
+        for (const SpheresRow& r : rows)
             text << r.name << ',' << r.triangles << ',' << r.count << ',' << r.d.spheres.size() << ','
                  << r.d.surface_coverage << ',' << r.d.excess_volume_ratio << ',' << r.d.seconds << '\n';
         write_atomically(o.csv, [&](const std::filesystem::path& tmp) {

@@ -64,12 +64,12 @@ std::array<glm::vec3, 16> frame_light(int frame) {
     return l;
 }
 
-struct Row {
+struct TransferRow {
     std::string stage;
     double cpu_ms = NAN, gpu_ms = NAN;
 };
 
-void print_rows(const std::vector<Row>& rows, double texels) {
+void print_rows(const std::vector<TransferRow>& rows, double texels) {
     std::printf("%-40s %10s %10s %9s %11s %11s\n", "stage", "CPU ms", "GPU ms", "CPU/GPU", "CPU Mpx/s", "GPU Mpx/s");
     auto cell = [](double v, const char* fmt) {
         char buf[32];
@@ -77,7 +77,7 @@ void print_rows(const std::vector<Row>& rows, double texels) {
         std::snprintf(buf, sizeof buf, fmt, v);
         return std::string(buf);
     };
-    for (const Row& r : rows) {
+    for (const TransferRow& r : rows) {
         const double ratio = r.cpu_ms / r.gpu_ms;
         std::printf("%-40s %10s %10s %9s %11s %11s\n", r.stage.c_str(), cell(r.cpu_ms, "%.2f").c_str(),
                     cell(r.gpu_ms, "%.2f").c_str(), cell(ratio, "%.2f").c_str(),
@@ -180,7 +180,7 @@ void run_bench_transfer(const BenchTransferOptions& o) {
     // Frame 0's light again, for the agreement check below.
     render::shade_transfer(t_cpu.data(), texels, frame_light(0), rgb_cpu.data(), o.threads);
 
-    std::vector<Row> rows;
+    std::vector<TransferRow> rows;
 #ifdef TERRASHADE_HAS_GPU
     if (context) {
         t0.restart();

@@ -8,11 +8,12 @@
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/mesh/mesh_import.hpp"
 #include "core/util/error.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace {
 using ts::blockers::DecompositionOptions;
 
-const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+using ts::test::kCessna;
 const std::string kTruck = std::string(TS_SHARED_DATA) + "/meshes/CesiumMilkTruck/CesiumMilkTruck.gltf";
 
 struct Case {

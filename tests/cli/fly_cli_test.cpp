@@ -16,12 +16,13 @@
 
 #include "cli_support.hpp"
 #include "frame_pixels.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace ts::cli_test {
 namespace {
 
 const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
-const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+using ts::test::kCessna;
 
 std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 

@@ -7,13 +7,14 @@
 
 #include "tests/cli/cli_support.hpp"
 #include "tests/dem/dem_test_files.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace fs = std::filesystem;
 using namespace ts::cli_test;
 
 namespace {
 
-fs::path shared(const std::string& name) { return fs::path(TS_SHARED_DATA) / "dem" / name; }
+using ts::test::shared_dem;
 
 std::string read_all(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -110,7 +111,7 @@ TEST(Info, InfiniteHeightsAreVoids) {
 
 TEST(InfoBadInput, EachCaseExitsTwoWithOneLineNamingTheFile) {
     const fs::path dir = temp_dir("info_bad");
-    const std::string tile = read_all(shared("N00E010.hgt"));
+    const std::string tile = read_all(shared_dem("N00E010.hgt"));
 
     write_all(dir / "N10E010.hgt", "");
     expect_one_line_error(dir / "N10E010.hgt", "empty file");
@@ -146,13 +147,13 @@ TEST(InfoBadInput, EachCaseExitsTwoWithOneLineNamingTheFile) {
 }
 
 TEST(InfoBadInput, MismatchedMosaicAndBadCropAreInputErrors) {
-    const Result mixed = run(quote(terrashade()) + " info " + quote(shared("N00E010.hgt").string()) + " " +
-                             quote(shared("srtm3_N39E040_1000px.tif").string()));
+    const Result mixed = run(quote(terrashade()) + " info " + quote(shared_dem("N00E010.hgt").string()) + " " +
+                             quote(shared_dem("srtm3_N39E040_1000px.tif").string()));
     EXPECT_EQ(mixed.exit_code, 2);
     EXPECT_EQ(std::count(mixed.err.begin(), mixed.err.end(), '\n'), 1) << mixed.err;
     EXPECT_NE(mixed.err.find("srtm3_N39E040_1000px.tif"), std::string::npos) << mixed.err;
 
-    const Result crop = run(quote(terrashade()) + " info --crop 50,0,51,1 " + quote(shared("N00E010.hgt").string()));
+    const Result crop = run(quote(terrashade()) + " info --crop 50,0,51,1 " + quote(shared_dem("N00E010.hgt").string()));
     EXPECT_EQ(crop.exit_code, 2);
     EXPECT_NE(crop.err.find("does not overlap"), std::string::npos) << crop.err;
 
@@ -161,14 +162,14 @@ TEST(InfoBadInput, MismatchedMosaicAndBadCropAreInputErrors) {
 }
 
 TEST(Info, TextAndJsonForATileAndACrop) {
-    const Result text = run(quote(terrashade()) + " info " + quote(shared("N00E010.hgt").string()));
+    const Result text = run(quote(terrashade()) + " info " + quote(shared_dem("N00E010.hgt").string()));
     ASSERT_EQ(text.exit_code, 0) << text.err;
     EXPECT_NE(text.out.find("EPSG:4326"), std::string::npos) << text.out;
     EXPECT_NE(text.out.find("pixel is point"), std::string::npos) << text.out;
     EXPECT_NE(text.out.find("EGM96"), std::string::npos) << text.out;
 
     const Result crop = run(quote(terrashade()) + " info --json --crop 10.25,0.5,10.5,0.75 " +
-                            quote(shared("N00E010.hgt").string()));
+                            quote(shared_dem("N00E010.hgt").string()));
     ASSERT_EQ(crop.exit_code, 0) << crop.err;
     const auto j = nlohmann::json::parse(crop.out);
     EXPECT_EQ(j["width"], 301);  // cell edges at (k - 0.5)/1200 deg: 301 cells overlap a 0.25 deg box

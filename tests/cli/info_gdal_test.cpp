@@ -6,6 +6,7 @@
 
 #include "core/util/angles.hpp"
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -36,7 +37,7 @@ const fs::path& work_dir() {
     return dir;
 }
 
-fs::path shared(const std::string& name) { return fs::path(TS_SHARED_DATA) / "dem" / name; }
+using ts::test::shared_dem;
 
 // The input files for a case, made once in the work dir (gdalinfo -stats writes .aux.xml
 // beside its input, so even unchanged files are copied).
@@ -49,12 +50,12 @@ std::vector<fs::path> prepare(const Case& c) {
             // In a folder of its own: gdal's SRTM driver needs the file's own name (N00E010.hgt).
             fs::create_directories(work_dir() / c.name);
             const fs::path copy = work_dir() / c.name / name;
-            fs::copy_file(shared(name), copy, fs::copy_options::overwrite_existing);
+            fs::copy_file(shared_dem(name), copy, fs::copy_options::overwrite_existing);
             files.push_back(copy);
         } else {
             const fs::path out = work_dir() / (c.name + ".tif");
             fs::remove(out);
-            const Result r = run(c.tool + " -q " + c.warp + " " + quote(shared(name).string()) + " " + quote(out.string()));
+            const Result r = run(c.tool + " -q " + c.warp + " " + quote(shared_dem(name).string()) + " " + quote(out.string()));
             EXPECT_EQ(r.exit_code, 0) << r.err;
             if (!c.edit.empty()) {
                 const Result e = run("gdal_edit.py " + c.edit + " " + quote(out.string()));

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace ts::cli_test {
 namespace {
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
 const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
 const std::string kSun = " --sun-azimuth 135 --sun-elevation 30";
-const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+using ts::test::kCessna;
 
 std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 

@@ -12,12 +12,13 @@
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace ts::cli_test {
 namespace {
 
 const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCessna = std::string(TS_SOURCE_DIR) + "/../shared/data/meshes/c172p.ac";
+using ts::test::kCessna;
 const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
 // Low sun in the south-east, a fixed exposure so the two pictures compare code for code.
 const std::string kLight = " --sun-azimuth 135 --sun-elevation 15 --exposure 13";

@@ -19,12 +19,13 @@
 #include "core/mesh/placement.hpp"
 #include <glm/geometric.hpp>
 #include "core/util/error.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 using namespace ts::mesh;
 
-const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+using ts::test::kCessna;
 
 glm::dvec3 centroid(const TriangleMesh& m) {
     glm::dvec3 c(0.0);

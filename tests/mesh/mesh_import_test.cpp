@@ -9,12 +9,13 @@
 
 #include "core/mesh/mesh_import.hpp"
 #include "core/util/error.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 using ts::mesh::import_mesh;
 
-const std::string kCessna = std::string(TS_SHARED_DATA) + "/meshes/c172p.ac";
+using ts::test::kCessna;
 const std::string kTruck = std::string(TS_SHARED_DATA) + "/meshes/CesiumMilkTruck/CesiumMilkTruck.gltf";
 
 // A folder per test process, removed when the process ends.

@@ -12,27 +12,14 @@
 
 #include "core/dem/read_dem.hpp"
 #include "core/util/error.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace ts;
 
 namespace {
 
-// A fresh directory under a per-process temp folder that is removed when the process ends.
-fs::path fresh_dir(const std::string& name) {
-    struct Root {
-        fs::path path = fs::temp_directory_path() / ("ts_raster_" + std::to_string(::getpid()));
-        ~Root() {
-            std::error_code ec;
-            fs::remove_all(path, ec);
-        }
-    };
-    static const Root root;
-    auto d = root.path / name;
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+using ts::test::fresh_dir;
 
 // gdalinfo -json of a file (GDAL is a test oracle only, never linked).
 nlohmann::json gdalinfo(const fs::path& p, const std::string& flags = "") {

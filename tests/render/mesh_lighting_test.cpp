@@ -19,6 +19,7 @@
 #include "core/util/angles.hpp"
 #include "core/visibility/horizon_sh.hpp"
 #include "tests/render/uniform_sky.hpp"
+#include "tests/support/sun_direction.hpp"
 
 namespace ts::render {
 namespace {
@@ -46,10 +47,7 @@ PlacedMesh tile_at(glm::dvec2 anchor, double z, double size = 1.0) {
     return m;
 }
 
-glm::dvec3 sun_from(double azimuth_cw_deg, double elevation_deg) {
-    const double phi = radians(90.0 - azimuth_cw_deg), e = radians(elevation_deg);
-    return {std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi), std::sin(e)};
-}
+using ts::test::sun_from;
 
 TEST(MeshLighting, AtTheBottomOfAVValleyTheSkyIsCosBeta) {
     const UniformSky sky(sun_from(180, 45), 0.0f);

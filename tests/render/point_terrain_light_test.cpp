@@ -12,6 +12,7 @@
 #include "core/sh/sh_shared.hpp"
 #include "core/util/angles.hpp"
 #include "tests/render/uniform_sky.hpp"
+#include "tests/support/sun_direction.hpp"
 
 namespace ts::render {
 namespace {
@@ -25,10 +26,7 @@ terrain::HeightGrid make_grid(int w, int h, double spacing, std::vector<float>& 
     return terrain::HeightGrid::uniform(w, h, z, spacing, spacing);
 }
 
-glm::dvec3 sun_from(double azimuth_cw_deg, double elevation_deg) {
-    const double phi = radians(90.0 - azimuth_cw_deg), e = radians(elevation_deg);
-    return {std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi), std::sin(e)};
-}
+using ts::test::sun_from;
 
 // What fly_aircraft.frag does: the clamped cosine turned to n against the SH, over pi.
 double shaded(const light::SkySh& sh, const glm::dvec3& n) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "tests/terrain/clamped_texel.hpp"
 
 namespace ts::terrain {
 namespace {
@@ -71,9 +72,7 @@ void expect_same(float got, float want, const char* what, int level, int c, int 
     }
 }
 
-float clamped(const std::vector<float>& v, int w, int h, int c, int r) {
-    return v[std::size_t(std::clamp(r, 0, h - 1) * w + std::clamp(c, 0, w - 1))];
-}
+using test::clamped;
 
 struct Size { int w, h, tile, halo; double voids; };
 class PyramidSizes : public ::testing::TestWithParam<Size> {};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "tests/terrain/clamped_texel.hpp"
 
 namespace ts::terrain {
 namespace {
@@ -17,11 +18,7 @@ std::vector<float> ramp(int w, int h) {
     return v;
 }
 
-float clamped(const std::vector<float>& v, int w, int h, int c, int r) {
-    c = std::clamp(c, 0, w - 1);
-    r = std::clamp(r, 0, h - 1);
-    return v[std::size_t(r) * std::size_t(w) + std::size_t(c)];
-}
+using test::clamped;
 
 struct Case { int w, h, tile, halo; };
 

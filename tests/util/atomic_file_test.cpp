@@ -6,22 +6,13 @@
 #include <stdexcept>
 
 #include "core/util/error.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-fs::path fresh_dir(const std::string& name) {
-    fs::path d = fs::temp_directory_path() / ("ts_atomic_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+using ts::test::fresh_dir;
+using ts::test::slurp;
 }  // namespace
 
 TEST(AtomicFile, WritesThroughATemporarySibling) {

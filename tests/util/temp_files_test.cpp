@@ -6,16 +6,12 @@
 #include <unistd.h>
 
 #include "core/util/error.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-fs::path fresh_dir(const std::string& name) {
-    fs::path d = fs::temp_directory_path() / ("ts_tempfiles_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
+using ts::test::fresh_dir;
 }  // namespace
 
 TEST(TempFiles, SiblingIsHiddenBesideTheTargetWithItsExtensionAndOurPid) {

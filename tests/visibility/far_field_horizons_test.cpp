@@ -28,7 +28,7 @@ struct Window {
     ts::terrain::HeightGrid grid;
 };
 
-Window cut(const ts::terrain::HeightGrid& g, const ReceiverWindow& w) {
+Window window_cut(const ts::terrain::HeightGrid& g, const ReceiverWindow& w) {
     Window out;
     out.z.resize(std::size_t(w.width) * std::size_t(w.height));
     for (int r = 0; r < w.height; ++r)
@@ -98,7 +98,7 @@ TEST(FarField, RaisesAWindowsHorizonsToTheWholeGrids) {
         ho.threads = 2;
         ho.window = core;
         const HorizonSet whole = compute_horizons(grid, ho);
-        const Window w = cut(grid, win);
+        const Window w = window_cut(grid, win);
         ho.window = {};
         HorizonSet set = compute_horizons(w.grid, ho);
         const Difference alone = compare(set, win, whole, core);

@@ -12,7 +12,6 @@
 namespace ts::fly {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
@@ -81,7 +80,7 @@ DetailTile::DetailTile(DetailTileKey key, const DetailTileLayout& layout, const 
         const int nx = std::max(1, (samples_x_ - 1 + size - 1) / size), ny = std::max(1, (samples_y_ - 1 + size - 1) / size);
         nodes_x_.push_back(nx);
         auto& level = node_z_[std::size_t(k)];
-        level.assign(std::size_t(nx) * std::size_t(ny), glm::vec2(kInf, -kInf));
+        level.assign(std::size_t(nx) * std::size_t(ny), glm::vec2(std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()));
         for (int iy = 0; iy < ny; ++iy)
             for (int ix = 0; ix < nx; ++ix) {
                 glm::vec2& b = level[std::size_t(iy) * std::size_t(nx) + std::size_t(ix)];

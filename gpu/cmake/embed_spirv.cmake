@@ -18,14 +18,15 @@ file(WRITE "${OUT}.tmp"
 #include \"gpu/spirv.hpp\"
 
 namespace {
-constexpr std::uint32_t kWords[] = {
+// Named after the blob: a unity build puts several shaders in one object.
+constexpr std::uint32_t ${SYMBOL}_words[] = {
     ${words}
 };
 }  // namespace
 
 namespace ts::gpu::embedded {
 extern const SpirvBlob ${SYMBOL};
-const SpirvBlob ${SYMBOL}{\"${NAME}\", kWords};
+const SpirvBlob ${SYMBOL}{\"${NAME}\", ${SYMBOL}_words};
 }  // namespace ts::gpu::embedded
 ")
 file(RENAME "${OUT}.tmp" "${OUT}")

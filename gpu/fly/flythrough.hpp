@@ -45,7 +45,7 @@ namespace ts::gpu {
 
 struct FlySettings {
     std::string sky = "clear";
-    render::ColorDesign colors;  // --colors, --snow-line (percent stops fitted to the DEM flown)
+    ts::render::ColorDesign colors;  // --colors, --snow-line (percent stops fitted to the DEM flown)
     int directions = 16;
     fly::CdlodOptions lod;
     double haze_km = 250.0;
@@ -102,13 +102,13 @@ public:
     const fly::GridFrame& frame() const { return frame_; }
     const fly::CdlodTree& tree() const { return *tree_; }
     // The Scene shading the DEM (streamed: its overview).
-    const render::Scene& scene() const { return *scene_; }
+    const ts::render::Scene& scene() const { return *scene_; }
     const FlySettings& settings() const { return settings_; }
 
     // Relights when `time` differs from the last one (returns the milliseconds it took, 0 if not).
     double set_time(light::UtcTime time);
     light::UtcTime time() const { return time_; }
-    const render::SunState& sun() const { return sun_; }
+    const ts::render::SunState& sun() const { return sun_; }
 
     // A path pose in the grid frame, and back (for recording).
     fly::CameraPose pose_of(const fly::FlightPose& p) const;
@@ -133,7 +133,7 @@ public:
     const std::vector<float>& open_sky_fraction() const { return open_sky_; }
     // The terrain's light at the aircraft's centre in the last prepared frame (open sky and the
     // whole sun before any).
-    const render::PointTerrainLight& aircraft_terrain_light() const { return aircraft_light_; }
+    const ts::render::PointTerrainLight& aircraft_terrain_light() const { return aircraft_light_; }
 
     // Selects the terrain for this camera and fills the frame's uniforms; `aircraft`: where the
     // aircraft is this frame (nullptr: not drawn).
@@ -150,20 +150,20 @@ private:
     const geo::Georef* georef0_ = nullptr;  // the level-0 grid's
     // Streamed: the overview, its points as the Scene's DEM, the far field, the tiles.
     std::unique_ptr<fly::TerrainOverview> overview_;
-    std::unique_ptr<visibility::FarField> far_;
+    std::unique_ptr<ts::visibility::FarField> far_;
     std::unique_ptr<fly::DetailTileCache> cache_;
     const dem::DemSource* source_ = nullptr;
     terrain::HeightGrid grid0_;  // level-0 spacing of a streamed DEM (no heights)
     double z_top_ = 0;
     bool tiles_waited_ = false;  // the first frame waits for its tiles, even in a window
-    std::unique_ptr<render::Scene> scene_;
+    std::unique_ptr<ts::render::Scene> scene_;
     fly::GridFrame frame_;
     std::unique_ptr<fly::CdlodTree> tree_;
     Context& context_;
     std::unique_ptr<FlyRenderer> renderer_;
     light::UtcTime time_{};
     bool lit_ = false;
-    render::SunState sun_;
+    ts::render::SunState sun_;
     glm::vec3 sun_dir_{0, 0, 1}, sun_radiance_{0.0f};
     double sun_cos_radius_ = 1.0;
     double exposure_ = 1.0;
@@ -183,13 +183,13 @@ private:
     // The terrain's horizons from the aircraft, recomputed only when it moved by more than a
     // fraction of a texel or the sun changed (set_time clears aircraft_lit_).
     void update_aircraft_light(const glm::dvec3& centre);
-    std::unique_ptr<render::PointTerrainLighting> aircraft_lighting_;
-    render::PointTerrainLight aircraft_light_;
+    std::unique_ptr<ts::render::PointTerrainLighting> aircraft_lighting_;
+    ts::render::PointTerrainLight aircraft_light_;
     bool aircraft_lit_ = false;
     glm::dvec3 aircraft_lit_at_{0.0};
     double sun_radius_rad_ = 0.0;
     fly::CdlodSelection selection_;
-    render::LinearImage radiance_;
+    ts::render::LinearImage radiance_;
     std::vector<std::uint32_t> packed_, packed_sun_;
     // Each texel's open-sky fraction (core/render/open_sky_fraction.hpp), packed beside its sun
     // radiance: the aircraft's sky shadow takes cover / open of the texel's sky light.

@@ -33,11 +33,6 @@ struct TransferPush {
     std::int32_t squaring_base_order;
 };
 
-// T's planes on the device are padded to whole quads of texels (render_shade.comp shades four
-// texels per invocation with vec4 loads).
-std::size_t padded(std::size_t texels) {
-    return padded_to_quads(texels);
-}
 
 // The lighting SH as render_shade.comp reads it: one (r, g, b, 0) per coefficient.
 std::array<float, kCoeffs * 4> light_vec4(const std::array<glm::vec3, 16>& light_sh) {
@@ -48,7 +43,7 @@ std::array<float, kCoeffs * 4> light_vec4(const std::array<glm::vec3, 16>& light
 }
 
 ShadePush shade_push(std::size_t texels) {
-    return {std::uint32_t(padded(texels) / 4), std::uint32_t(padded(texels) / 4)};
+    return {std::uint32_t(padded_to_quads(texels) / 4), std::uint32_t(padded_to_quads(texels) / 4)};
 }
 
 constexpr std::uint32_t kGroup = 64;  // render_transfer.comp's local_size_x
@@ -133,7 +128,7 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
     }
     for (std::size_t first = 0; first < texels_; first += band) {
         const std::size_t n = std::min(band, texels_ - first);
-        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float))};
+        Band b{first, n, context.create_buffer(padded_to_quads(n) * kCoeffs * sizeof(float))};
         // The band's inputs live until this band's submit.
         const Buffer log_vis = context.create_buffer(n * kCoeffs * sizeof(float));
         const Buffer axis = context.create_buffer(n * 3 * sizeof(float));
@@ -145,10 +140,10 @@ TransferField::TransferField(const Context& context, const ts::render::TransferI
             zh = context.create_buffer(n * 4 * sizeof(float));
             batch.upload(zh, bytes_of(in.lobe_log_zh + 4 * first, 4 * n));
         }
-        if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
+        if (padded_to_quads(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
         batch.mark("upload");
         batch.dispatch(kernels_->transfer(), {log_vis, axis, in.uniform_lobe ? uniform_zh : zh, b.transfer, linear_table},
-                       TransferPush{std::uint32_t(n), std::uint32_t(padded(n)), in.uniform_lobe ? 1u : 0u,
+                       TransferPush{std::uint32_t(n), std::uint32_t(padded_to_quads(n)), in.uniform_lobe ? 1u : 0u,
                                     exp_options.hybrid_threshold, exp_options.max_squarings,
                                     in.method == sh::ExpMethod::hybrid ? TS_TRANSFER_EXP_HYBRID
                                                                        : TS_TRANSFER_EXP_SCALING_SQUARING,
@@ -176,10 +171,10 @@ TransferField::TransferField(const Context& context, const float* transfer, std:
     Batch batch(context);
     for (std::size_t first = 0; first < texels_; first += band) {
         const std::size_t n = std::min(band, texels_ - first);
-        Band b{first, n, context.create_buffer(padded(n) * kCoeffs * sizeof(float))};
-        if (padded(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
+        Band b{first, n, context.create_buffer(padded_to_quads(n) * kCoeffs * sizeof(float))};
+        if (padded_to_quads(n) != n) batch.fill(b.transfer);  // the last quad's spare texels: zeros
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
-            batch.upload(b.transfer, bytes_of(transfer + i * texels_ + first, n), i * padded(n) * sizeof(float));
+            batch.upload(b.transfer, bytes_of(transfer + i * texels_ + first, n), i * padded_to_quads(n) * sizeof(float));
         batch.mark("upload");
         bands_.push_back(std::move(b));
         // Staging memory is held until the submit: one band (<= 128 MiB) per submit.
@@ -198,7 +193,7 @@ void TransferField::download(float* transfer_out) {
         const Band& b = bands_[k];
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
             batch.download(b.transfer, std::span<float>(transfer_out + i * texels_ + b.first, b.texels),
-                           i * padded(b.texels) * sizeof(float));
+                           i * padded_to_quads(b.texels) * sizeof(float));
         batch.mark("download");
         if ((k + 1) % kBandsPerSubmit == 0) {
             batch.submit_and_wait();
@@ -253,7 +248,7 @@ void TransferField::update_rect(int grid_width, int col0, int row0, int w, int h
         if (a >= e) continue;
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
             batch.upload(b.transfer, bytes_of(host_copy_.data() + i * texels_ + a, e - a),
-                         (i * padded(b.texels) + (a - b.first)) * sizeof(float));
+                         (i * padded_to_quads(b.texels) + (a - b.first)) * sizeof(float));
         batch.mark("upload");
     }
     batch.submit_and_wait();
@@ -281,13 +276,13 @@ std::vector<StageTime> shade_transfer(const Context& context, const float* trans
     const Buffer light_buffer = batch.upload_new(std::span<const float>(light.data(), light.size()));
     for (std::size_t first = 0; first < texels; first += band) {
         const std::size_t n = std::min(band, texels - first);
-        const Buffer t = context.create_buffer(padded(n) * kCoeffs * sizeof(float));
-        const Buffer rgb = context.create_buffer(padded(n) * 3 * sizeof(float));
-        if (padded(n) != n) batch.fill(t);  // the quad's spare texels: zeros, not stale memory
+        const Buffer t = context.create_buffer(padded_to_quads(n) * kCoeffs * sizeof(float));
+        const Buffer rgb = context.create_buffer(padded_to_quads(n) * 3 * sizeof(float));
+        if (padded_to_quads(n) != n) batch.fill(t);  // the quad's spare texels: zeros, not stale memory
         for (VkDeviceSize i = 0; i < kCoeffs; ++i)
-            batch.upload(t, bytes_of(transfer + i * texels + first, n), i * padded(n) * sizeof(float));
+            batch.upload(t, bytes_of(transfer + i * texels + first, n), i * padded_to_quads(n) * sizeof(float));
         batch.mark("upload");
-        batch.dispatch(kernel, {t, light_buffer, rgb}, shade_push(n), groups_for(padded(n) / 4, kShadeGroup));
+        batch.dispatch(kernel, {t, light_buffer, rgb}, shade_push(n), groups_for(padded_to_quads(n) / 4, kShadeGroup));
         batch.mark("shade");
         batch.download(rgb, std::span<glm::vec3>(rgb_out + first, n));
         batch.mark("download");

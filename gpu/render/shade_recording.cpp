@@ -14,7 +14,6 @@ namespace {
 
 constexpr VkDeviceSize kLightBytes = 16 * 4 * sizeof(float);
 
-std::size_t padded(std::size_t texels) { return padded_to_quads(texels); }
 
 // Host-visible memory the kernel may write and the host read back fast: device-local (no
 // copy across a bus) and cached (host reads are not uncached reads of write-combined memory).
@@ -45,7 +44,7 @@ ShadeRecording::ShadeRecording(const Context& context, const Kernel& shade, std:
       fence_(context.vk_device()) {
     for (const BandInput& in : bands) {
         if (!in.transfer) throw std::invalid_argument("gpu::render::ShadeRecording: null transfer buffer");
-        const VkDeviceSize rgb_bytes = padded(in.texels) * 3 * sizeof(float);
+        const VkDeviceSize rgb_bytes = padded_to_quads(in.texels) * 3 * sizeof(float);
         Band b{in.first, in.texels, Buffer(), context.create_buffer(rgb_bytes, MemoryKind::host_visible)};
         if (readback == Readback::staging || !kernel_writes_host_memory(b.host_rgb)) b.device_rgb = context.create_buffer(rgb_bytes);
         bands_.push_back(std::move(b));
@@ -96,7 +95,7 @@ void ShadeRecording::record(const Kernel& shade, std::span<const BandInput> inpu
         const VkDescriptorSet set = descriptors_.allocate(shade.set_layout(), 3);
         const VkBuffer bound[3] = {inputs[k].transfer->get(), light_.get(), out.get()};
         write_storage_buffers(context_.vk_device(), set, bound);
-        const std::uint32_t quads = std::uint32_t(padded(b.texels) / 4);
+        const std::uint32_t quads = std::uint32_t(padded_to_quads(b.texels) / 4);
         const ShadePush push{quads, quads};
         vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, shade.pipeline_layout(), 0, 1, &set, 0,
                                 nullptr);

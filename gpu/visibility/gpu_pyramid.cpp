@@ -1,4 +1,5 @@
 #include "gpu/visibility/gpu_pyramid.hpp"
+#include "gpu/visibility/gpu_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,12 +44,8 @@ struct HorizonPush {
     float curvature, z_top;
 };
 
-constexpr int kMaxHeightParts = 4;             // bindings 0..3 of vis_pyramid_levels.glsl
 constexpr std::uint32_t kTile = 8;             // local size of both pyramid shaders (8 x 8)
 constexpr std::uint32_t kStorageBuffers = 7;   // the pyramid's bindings 0..6
-// log-SH loops ~17 times per direction and llvmpipe ends an invocation's loops after 65535
-// iterations in all (as gpu_visibility.cpp).
-constexpr int kMaxGpuDirections = 2048;
 
 // Where the levels live on the device (vis_pyramid_levels.glsl) and how level 0 is split.
 struct PyramidLayout {

@@ -1,4 +1,5 @@
 #include "gpu/visibility/gpu_visibility.hpp"
+#include "gpu/visibility/gpu_limits.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -44,7 +45,6 @@ constexpr VkDeviceSize kWalkStateBytes = 32 + 64 * 16;
 // Line samples per sweep pass: llvmpipe ends an invocation's loops after 65535 iterations in
 // all; a sample costs ~50 (plus hull / 16 for the rebase), so 128 samples stay far below.
 constexpr long kPassSamples = 128;
-constexpr int kMaxGpuDirections = 2048;
 // FarEntry of the shaders: 16 bytes per line and window position.
 constexpr VkDeviceSize kFarEntryBytes = 16;
 
@@ -149,7 +149,6 @@ SweepPlan plan_sweep(const terrain::HeightGrid& g, const vis::RowMetrics& m, con
 }
 
 // How the heights are split by rows into storage buffers (vis_surface.glsl's height_at).
-constexpr int kMaxHeightParts = 4;
 struct HeightParts {
     int parts = 1, rows_per_part = 0;
 };

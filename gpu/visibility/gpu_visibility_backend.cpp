@@ -1,4 +1,5 @@
 #include "gpu/visibility/gpu_visibility_backend.hpp"
+#include "gpu/visibility/gpu_limits.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -16,9 +17,6 @@ namespace ts::gpu::visibility {
 namespace {
 
 namespace vis = ts::visibility;
-
-// Directions beyond what the device's loops allow (gpu_visibility.cpp).
-constexpr int kMaxGpuDirections = 2048;
 
 class GpuVisibilityBackend final : public vis::VisibilityBackend {
 public:

@@ -7,6 +7,6 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh test
 ctest --preset release -j"$(nproc)"
 cmake --preset asan >/dev/null
-cmake --build --preset asan -j"$(nproc)"
+cmake --build --preset asan -j"$(nproc)" --target ts_core_tests
 ctest --preset asan -j"$(nproc)"
 bash scripts/fuzz.sh "${TS_FUZZ_SECONDS:-30}"

@@ -10,7 +10,8 @@
 #   (hgt hgt_zip geotiff mesh_file mesh_scene)
 #
 # New inputs that reach new code are written to build/fuzz/corpus/<reader>/, not to the
-# committed seeds. FUZZ_JOBS=N runs N processes per target (default 1).
+# committed seeds. FUZZ_JOBS=N runs N processes per target (default 1); the targets themselves run
+# FUZZ_PARALLEL at a time (default: one per core).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET="${1:-60}"
@@ -29,10 +30,11 @@ cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DTERRASHADE_FUZZ=ON -DTERRASHADE_BUILD_GPU=OFF -DTERRASHADE_BUILD_TESTS=OFF >/dev/null
 targets=()
 for r in "${READERS[@]}"; do targets+=("fuzz_$r"); done
-cmake --build "$BUILD" --target "${targets[@]}" -j"${FUZZ_BUILD_JOBS:-2}"
+cmake --build "$BUILD" --target "${targets[@]}" -j"${FUZZ_BUILD_JOBS:-$(nproc)}"
 
-status=0
-for r in "${READERS[@]}"; do
+# One target's run; its lines go to the terminal as whole lines, its log to build/fuzz/fuzz_R.log.
+fuzz_one() {
+  local r="$1"
   corpus="$BUILD/corpus/$r"
   artifacts="$BUILD/artifacts/$r"
   mkdir -p "$corpus" "$artifacts"
@@ -57,9 +59,24 @@ for r in "${READERS[@]}"; do
     echo "fuzz: $r FAILED; inputs in $artifacts:" >&2
     ls -1 "$artifacts" | grep -E "^(crash|leak|oom|timeout|slow-unit)-" >&2 || true
     grep -m1 -E "ERROR: |runtime error" "$log" >&2 || tail -5 "$log" >&2
-    status=1
+    return 1
   else
     grep -E "stat::number_of_executed_units|cov: " "$log" | tail -2 | sed "s/^/fuzz: $r: /"
   fi
+}
+
+# The targets run side by side, one per core (FUZZ_PARALLEL, default the core count): each is
+# one single-threaded process, so two cores fuzz two targets in the time of one.
+PARALLEL="${FUZZ_PARALLEL:-$(nproc)}"
+status_dir="$BUILD/status"
+rm -rf "$status_dir" && mkdir -p "$status_dir"
+for r in "${READERS[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$PARALLEL" ]; do wait -n || true; done
+  ( if fuzz_one "$r"; then echo 0 > "$status_dir/$r"; else echo 1 > "$status_dir/$r"; fi ) &
+done
+wait
+status=0
+for r in "${READERS[@]}"; do
+  [ "$(cat "$status_dir/$r" 2>/dev/null)" = 0 ] || status=1
 done
 exit "$status"

@@ -19,6 +19,7 @@
 #include "core/visibility/sun_visibility.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "synthetic_terrain.hpp"
+#include "tests/support/shared_data.hpp"
 
 using namespace ts::visibility;
 using ts::visibility::testing::make_terrain;
@@ -93,9 +94,6 @@ void expect_agreement(const ts::terrain::HeightGrid& grid, const std::string& na
     }
 }
 
-fs::path dem_path(const std::string& name) {
-    return fs::path(TS_SHARED_DATA) / "dem" / name;
-}
 
 }  // namespace
 
@@ -103,7 +101,7 @@ fs::path dem_path(const std::string& name) {
 // to IoU >= 0.99 and the fractions to a mean of 0.005 at every sun position.
 TEST(SunSweep, AgreesWithExactOnRealDems) {
     for (const std::string name : {"copernicus_N45E005_grenoble_500px.tif", "srtm3_N39E040_1000px.tif", "N00E010.hgt"}) {
-        const ts::dem::Dem dem = ts::dem::read_dem(dem_path(name));
+        const ts::dem::Dem dem = ts::dem::read_dem(ts::test::shared_dem(name));
         const VisibilityGrid vgrid(dem);
         const ts::terrain::GridCrop crop = ts::terrain::centre_crop(vgrid.view(), 160, 160);
         expect_agreement(crop.grid, name, 0.99, 0.005);
@@ -113,7 +111,7 @@ TEST(SunSweep, AgreesWithExactOnRealDems) {
 // A global 1-degree grid: rows from pole to pole, whose east-west spacing shrinks 100-fold.
 // Few texels are shadowed there (slopes over 111 km are gentle), so the IoU is of a handful.
 TEST(SunSweep, AgreesWithExactOnAGlobalGrid) {
-    const ts::dem::Dem dem = ts::dem::read_dem(dem_path("etopo1_global_1deg.tif"));
+    const ts::dem::Dem dem = ts::dem::read_dem(ts::test::shared_dem("etopo1_global_1deg.tif"));
     const VisibilityGrid vgrid(dem);
     expect_agreement(vgrid.view(), "etopo1", 0.9, 0.002);
 }

@@ -20,6 +20,7 @@
 #include "core/visibility/exact_azimuth.hpp"
 #include "core/visibility/visibility_grid.hpp"
 #include "synthetic_terrain.hpp"
+#include "tests/support/shared_data.hpp"
 
 using namespace ts::visibility;
 using ts::visibility::testing::make_terrain;
@@ -85,9 +86,6 @@ void expect_same_sums(const ts::terrain::HeightGrid& grid, const HorizonOptions&
     }
 }
 
-fs::path dem_path(const std::string& name) {
-    return fs::path(TS_SHARED_DATA) / "dem" / name;
-}
 
 // Voids: a block, a diagonal streak, single texels and a void on the grid's edge.
 void punch_voids(std::vector<float>& z, int w, int h) {
@@ -107,7 +105,7 @@ TEST(SweepLanes, RealDemCropsBitIdentical) {
     for (const std::string name : {"N00E010.hgt", "copernicus_N45E005_grenoble_500px.tif", "srtm3_N39E040_1000px.tif",
                                    "etopo1_global_1deg.tif", "nodata_3x3.tif"}) {
         SCOPED_TRACE(name);
-        const ts::dem::Dem dem = ts::dem::read_dem(dem_path(name));
+        const ts::dem::Dem dem = ts::dem::read_dem(ts::test::shared_dem(name));
         const VisibilityGrid vgrid(dem);
         const ts::terrain::GridCrop crop = ts::terrain::centre_crop(vgrid.view(), 150, 120);
         HorizonOptions o;
@@ -119,7 +117,7 @@ TEST(SweepLanes, RealDemCropsBitIdentical) {
 
 // The whole etopo grid (geographic, pole rows where the lines bend hardest): odd azimuths too.
 TEST(SweepLanes, GlobalGridWithPoles) {
-    const ts::dem::Dem dem = ts::dem::read_dem(dem_path("etopo1_global_1deg.tif"));
+    const ts::dem::Dem dem = ts::dem::read_dem(ts::test::shared_dem("etopo1_global_1deg.tif"));
     const VisibilityGrid vgrid(dem);
     HorizonOptions o;
     o.directions = 13;

@@ -123,6 +123,16 @@ bool is_water(bool was_void, float h, float nz, const MaterialRule& rule) {
     return double(h) <= rule.sea_level_m && double(nz) >= cos_max;
 }
 
+TexelCover texel_cover(const terrain::HeightGrid& g, const NormalField& n, const std::vector<std::uint8_t>& worldcover,
+                       const MaterialRule& rule, int c, int r) {
+    const std::size_t i = g.index(c, r);
+    const float h = g.z[i];
+    TexelCover t;
+    t.known = i < worldcover.size() && surface_from_worldcover(worldcover[i], t.surface);
+    t.water = std::isnan(h) || is_water(g.was_void(c, r), h, n.z[i], rule) || (t.known && t.surface == Surface::water);
+    return t;
+}
+
 MaterialRaster rule_materials(const terrain::HeightGrid& g, const NormalField& n, const MaterialRule& rule) {
     const std::size_t count = std::size_t(g.width) * std::size_t(g.height);
     MaterialRaster m = allocate(count);
@@ -146,15 +156,13 @@ MaterialRaster landcover_materials(const terrain::HeightGrid& g, const NormalFie
     for (int r = 0; r < g.height; ++r)
         for (int c = 0; c < g.width; ++c) {
             const std::size_t i = g.index(c, r);
-            const float h = g.z[i];
-            Surface s{};
-            const bool known = i < worldcover.size() && surface_from_worldcover(worldcover[i], s);
-            if (std::isnan(h) || is_water(g.was_void(c, r), h, n.z[i], rule) || (known && s == Surface::water)) {
+            const TexelCover t = texel_cover(g, n, worldcover, rule, c, r);
+            if (t.water) {
                 store_water(m, i);
-            } else if (known) {
-                store(m, i, blend_of(s), s);
+            } else if (t.known) {
+                store(m, i, blend_of(t.surface), t.surface);
             } else {
-                rule_texel(m, i, h, slope_deg(n.z[i]), rule);
+                rule_texel(m, i, g.z[i], slope_deg(n.z[i]), rule);
             }
         }
     return m;

@@ -78,6 +78,15 @@ struct MaterialRaster {
 // Water rule: void (source nodata), or flat and at or below sea level.
 bool is_water(bool was_void, float height_m, float normal_z, const MaterialRule& rule);
 
+// What texel (c, r) is before any colour: water (no height, the water rule, or WorldCover's
+// water) or land, with its WorldCover class when the raster gives one (`known`).
+struct TexelCover {
+    bool water = false, known = false;
+    Surface surface{};
+};
+TexelCover texel_cover(const terrain::HeightGrid& grid, const NormalField& normals,
+                       const std::vector<std::uint8_t>& worldcover, const MaterialRule& rule, int c, int r);
+
 MaterialRaster rule_materials(const terrain::HeightGrid& grid, const NormalField& normals,
                               const MaterialRule& rule = {});
 

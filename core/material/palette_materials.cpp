@@ -42,18 +42,17 @@ MaterialRaster palette_materials(const terrain::HeightGrid& g, const NormalField
         for (int c = 0; c < g.width; ++c) {
             const std::size_t i = g.index(c, r);
             const float h = g.z[i];
-            Surface cover{};
-            const bool known = i < worldcover.size() && surface_from_worldcover(worldcover[i], cover);
-            if (std::isnan(h) || is_water(g.was_void(c, r), h, n.z[i], rule) || (known && cover == Surface::water)) {
+            const TexelCover cover = texel_cover(g, n, worldcover, rule, c, r);
+            if (cover.water) {
                 m.albedo_r[i] = m.albedo_g[i] = m.albedo_b[i] = water.albedo.x;
                 m.water[i] = 1;
                 m.surface[i] = Surface::water;
                 continue;
             }
             MaterialParams land;
-            if (known) {
-                land = surface_params(cover);
-                m.surface[i] = cover;
+            if (cover.known) {
+                land = surface_params(cover.surface);
+                m.surface[i] = cover.surface;
             } else {
                 land.albedo = design.palette.albedo_at(h);
             }

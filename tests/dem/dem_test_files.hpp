@@ -6,25 +6,12 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include "tests/support/scratch_dir.hpp"
 
 namespace ts::dem::test_files {
 
 // A fresh, empty directory under a per-process temp folder that is removed when the process ends.
-inline std::filesystem::path fresh_dir(const std::string& name) {
-    struct Root {
-        std::filesystem::path path = std::filesystem::temp_directory_path() / ("ts_dem_" + std::to_string(::getpid()));
-        ~Root() {
-            std::error_code ec;
-            std::filesystem::remove_all(path, ec);
-        }
-    };
-    static const Root root;
-    auto d = root.path / name;
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d;
-}
+using ts::test::fresh_dir;
 
 void write_bytes(const std::filesystem::path& path, const std::string& bytes);
 

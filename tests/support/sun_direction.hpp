@@ -1,14 +1,15 @@
 #pragma once
-// A sun direction in east-north-up from azimuth (degrees clockwise from north) and elevation.
-#include <cmath>
+// A sun direction in east-north-up from azimuth (degrees clockwise from north) and elevation,
+// through core/geo's one azimuth convention.
 #include <glm/vec3.hpp>
-#include <numbers>
+
+#include "core/geo/azimuth.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::test {
 
 inline glm::dvec3 sun_from(double azimuth_cw_deg, double elevation_deg) {
-    const double phi = (90.0 - azimuth_cw_deg) * std::numbers::pi / 180.0, e = elevation_deg * std::numbers::pi / 180.0;
-    return {std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi), std::sin(e)};
+    return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(azimuth_cw_deg), radians(elevation_deg));
 }
 
 }  // namespace ts::test

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/util/compiler_hints.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/visibility/bilinear_march.hpp"
@@ -73,7 +74,7 @@ inline float near_slope(float zs, float z0, const NearStep& st) {
 // every corner exists and is valid (finish_rows checks). Compiled for AVX2 where the CPU has
 // it; the loop is the same float arithmetic either way.
 // clang-format off
-[[gnu::optimize("O3"), gnu::target_clones("avx2", "default")]]
+TS_OPTIMIZE_O3 [[gnu::target_clones("avx2", "default")]]
 // clang-format on
 void near_step_row(const float* __restrict p0, int w, const float* __restrict z0, const NearStep& st, int begin, int end,
                    float* __restrict best) {
@@ -238,7 +239,7 @@ template <bool kVoidFree>
 // The two sweeps are compiled at -O3, as near_step_row: a few per cent faster (measured), and
 // the same floating-point operations (no fast-math; no FMA on the baseline ISA).
 template <bool kVoidFree>
-[[gnu::optimize("O3")]] void sweep_columns(const SweepContext& cx, double phi, long n_begin, long n_end,
+TS_OPTIMIZE_O3 void sweep_columns(const SweepContext& cx, double phi, long n_begin, long n_end,
                                            FarFieldSums& acc) {
     const auto& g = cx.grid;
     const auto& metrics = cx.metrics;
@@ -290,7 +291,7 @@ template <bool kVoidFree>
 
 // Lines sampled at every integer row.
 template <bool kVoidFree>
-[[gnu::optimize("O3")]] void sweep_rows(const SweepContext& cx, double phi, long n_begin, long n_end,
+TS_OPTIMIZE_O3 void sweep_rows(const SweepContext& cx, double phi, long n_begin, long n_end,
                                         FarFieldSums& acc) {
     const auto& g = cx.grid;
     const auto& metrics = cx.metrics;

@@ -13,6 +13,7 @@
 
 #include "core/geo/azimuth.hpp"
 #include "core/util/angles.hpp"
+#include "core/util/compiler_hints.hpp"
 #include "core/util/error.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/bilinear_march.hpp"
@@ -112,7 +113,7 @@ TS_SUN_CLONES void tent_lines(const TentLines& t, int i_lo, int i_hi) {
         const float sum = (v0 ? (1 - wt) * t0 : 0.0f) + (v1 ? wt * t1 : 0.0f);
         const float wsum = (v0 ? 1 - wt : 0.0f) + (v1 ? wt : 0.0f);
         // Both lines valid (the common case): the weights sum to 1, no division.
-        dst[i] = v0 & v1 ? sum : wsum > 0 ? sum / wsum : -std::numeric_limits<float>::infinity();
+        dst[i] = (v0 & v1) ? sum : wsum > 0 ? sum / wsum : -std::numeric_limits<float>::infinity();
     }
 }
 
@@ -184,7 +185,7 @@ TS_SUN_CLONES void advance_lines(long jb, long je, int k, int delay, float tan_e
         dist[j] = d;
         start[j] = st;
         const float t = shared::ts_shadow_tangent(sh, zl, d, tan_e);
-        tangent[j] = (kVoids & std::isnan(zl)) | (sh == kNoShadow) ? kNaN : t;
+        tangent[j] = ((kVoids & std::isnan(zl)) | (sh == kNoShadow)) ? kNaN : t;
     }
 }
 
@@ -568,7 +569,7 @@ TS_SUN_CLONES void SunShadowSweep::near_field_rows(const Frame& f, int row_begin
                 if (!(st.dist < need)) break;
                 const float* __restrict p = z + std::size_t(row + st.row0) * w + st.col0;
                 const float w00 = st.w00, w10 = st.w10, w01 = st.w01, w11 = st.w11, inv_s = st.inv_s, drop = st.drop;
-#pragma GCC ivdep
+TS_LOOP_IVDEP
                 for (int c = cb; c < ce; ++c) {
                     const float zs = w00 * p[c] + w10 * p[c + 1] + w01 * p[c + w] + w11 * p[c + w + 1];
                     const float v = (zs - z0[c]) * inv_s - drop;

@@ -30,11 +30,17 @@ bool sweep_lanes_supported() {
 }
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+// Every function of this part is compiled for AVX-512 (GCC's target pragma; clang applies the
+// target attribute to each function).
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx512f,avx512vl,avx512dq"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512vl,avx512dq")
 // GCC 12 reports the intrinsics' own _mm*_undefined_* placeholders as maybe-uninitialized.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 namespace {
 
@@ -528,8 +534,12 @@ long sweep_groups(const SweepSetup& su, const SweepPlan& plan, long n_begin, lon
 
 }  // namespace
 
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC diagnostic pop
 #pragma GCC pop_options
+#endif
 #endif
 
 long sweep_lines_simd(const sweep_geometry::SweepSetup& setup, const SweepPlan& plan, long n_begin, long n_end,

@@ -6,7 +6,7 @@ if(TERRASHADE_SANITIZE)
   # preset's -O1 it flags std::regex and std::function inside libstdc++); the release build keeps
   # the warning for our code.
   target_compile_options(ts_warnings INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
-                                               -Wno-maybe-uninitialized)
+                                               $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)
   target_link_options(ts_warnings INTERFACE -fsanitize=address,undefined)
 endif()
 # Fuzzing: our code gets libFuzzer's coverage instrumentation (the targets in tests/fuzz link

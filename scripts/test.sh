@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the whole test suite: every test in the release build, the core/
-# tests again under AddressSanitizer and UBSan, then the DEM readers fuzzed for a bounded time
-# (scripts/fuzz.sh, libFuzzer + ASan + UBSan; TS_FUZZ_SECONDS per reader, default 30).
+# Sets up, builds and runs the whole test suite:
+#   1. the release build: terrashade, terrashade-bench and every test that is not a core test
+#      (ts_release_tests: the command line, Vulkan, fly, Slurm, the browser page, the CLI fuzzer);
+#   2. the core/ tests, built once, under AddressSanitizer and UBSan (preset asan, -O1):
+#      the same tests and checks with the memory and UB checks on;
+#   3. the DEM readers and the mesh import fuzzed for a bounded time (scripts/fuzz.sh,
+#      libFuzzer + ASan + UBSan; TS_FUZZ_SECONDS per target, default 30).
+# `ctest --preset release` after a full build (scripts/build.sh test) runs everything unsanitized.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh test
-ctest --preset release -j"$(nproc)"
+bash scripts/build.sh test ts_release_tests
+ctest --preset release -j"$(nproc)" -LE core
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j"$(nproc)" --target ts_core_tests
 ctest --preset asan -j"$(nproc)"

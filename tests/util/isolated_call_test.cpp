@@ -1,6 +1,6 @@
-// A child process's work comes back as bytes; its failures (an error, a crash, a hang, an
-// allocation beyond the allowance) come back as one ts::InputError naming what was read, and
-// the caller goes on.
+// A child process's work comes back as bytes; its failures (an error, a crash, a hang; an
+// allocation beyond the allowance in isolated_call_memory_test.cpp) come back as one
+// ts::InputError naming what was read, and the caller goes on.
 #include "core/util/isolated_call.hpp"
 
 #include <csignal>
@@ -10,20 +10,12 @@
 
 #include <gtest/gtest.h>
 
-#include "core/util/error.hpp"
+#include "tests/util/isolated_error.hpp"
 
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
-
-std::string error_of(const std::function<Bytes()>& work, const ts::IsolationLimits& limits = {}) {
-    try {
-        ts::run_isolated(work, "model.obj", limits);
-    } catch (const ts::InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using ts::test::Bytes;
+using ts::test::error_of;
 
 TEST(IsolatedCall, ReturnsTheChildsBytesLargerThanAPipeBuffer) {
     Bytes big(3'000'000);
@@ -56,19 +48,5 @@ TEST(IsolatedCall, AHungChildIsKilledAtTheTimeout) {
         limits);
     EXPECT_EQ(e.rfind("model.obj: reading it did not finish", 0), 0u) << e;
 }
-
-#if !defined(__SANITIZE_ADDRESS__)
-TEST(IsolatedCall, AnAllocationBeyondTheAllowanceIsOutOfMemory) {
-    ts::IsolationLimits limits;
-    limits.extra_address_space_bytes = 64ull << 20;
-    const std::string e = error_of(
-        []() -> Bytes {
-            Bytes huge(std::size_t(1) << 30, 1);
-            return Bytes(huge.begin(), huge.begin() + 1);
-        },
-        limits);
-    EXPECT_EQ(e, "model.obj: reading it needs more memory than is available");
-}
-#endif
 
 }  // namespace

@@ -81,4 +81,21 @@ inline std::string terrashade() {
     return TS_BIN;
 }
 
+// What most command tests run on: the shipped sample DEM, a 0.2 x 0.2 degree crop of it (101 x
+// 101 texels, --crop keeps both edge texels: the city, the Isere and two massifs) and a sun.
+inline const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
+inline const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
+inline const std::string kSun = " --sun-azimuth 135 --sun-elevation 30";
+// The shared DEMs' folder (../shared/data/dem/), with its trailing slash.
+inline const std::string kSharedDems = std::string(TS_SHARED_DATA) + "/dem/";
+// The driver manifests pointed at nothing: the Vulkan loader finds no device.
+inline const std::string kNoVulkan = "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json ";
+
+// The terrashade binary, unquoted, to prefix a command with.
+inline const std::string kBin = terrashade();
+// `terrashade ARGS` as a shell command.
+inline std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+// Runs `terrashade ARGS` after `env` (variable assignments such as kNoVulkan, or nothing).
+inline Result run_ts(const std::string& args, const std::string& env = "") { return run(env + ts_cmd(args)); }
+
 }  // namespace ts::cli_test

@@ -21,10 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kSun = " --sun-azimuth 135 --sun-elevation 20";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
+const std::string kLowSun = " --sun-azimuth 135 --sun-elevation 20";
 
 double linear(unsigned char c) {
     const double v = c / 255.0;
@@ -85,12 +82,12 @@ Picture render(const std::string& name, const std::string& options) {
 TEST(ColorsCli, DefaultMapReadsAsTheGreyRelief) {
     // Relief first: the default palette's map and a uniform grey terrain's under the same sun and
     // sky differ in colour, not in where it is light and dark.
-    const Picture colour = render("default", kSun), grey = render("grey", kSun + " --colors grey");
+    const Picture colour = render("default", kLowSun), grey = render("grey", kLowSun + " --colors grey");
     ASSERT_EQ(colour.y.size(), grey.y.size());
     const double sunlit = correlation(colour.y, grey.y);
     EXPECT_GE(sunlit, 0.97);
-    const Picture colour_overcast = render("default_overcast", " --sky overcast" + kSun),
-                  grey_overcast = render("grey_overcast", " --sky overcast --colors grey" + kSun);
+    const Picture colour_overcast = render("default_overcast", " --sky overcast" + kLowSun),
+                  grey_overcast = render("grey_overcast", " --sky overcast --colors grey" + kLowSun);
     const double overcast = correlation(colour_overcast.y, grey_overcast.y);
     EXPECT_GE(overcast, 0.9);
     std::printf("luminance correlation, default palette vs grey: sunlit %.4f, overcast %.4f\n", sunlit, overcast);
@@ -100,7 +97,7 @@ TEST(ColorsCli, AColourTableColoursByHeight) {
     // Green at the lowest height, red at the highest (percent stops), in gdaldem's format.
     const fs::path table = temp_dir("colors") / "green_red.txt";
     std::ofstream(table) << "# low green, high red\n0% 0 200 0\n100%,200,0,0\nnv 0 0 0 0\n";
-    const Picture p = render("table", kSun + " --colors " + quote(table.string()));
+    const Picture p = render("table", kLowSun + " --colors " + quote(table.string()));
     const std::vector<double> z = dem_heights();
     ASSERT_EQ(z.size(), p.r.size());
     std::vector<double> redness(z.size());
@@ -109,7 +106,7 @@ TEST(ColorsCli, AColourTableColoursByHeight) {
 }
 
 TEST(ColorsCli, SnowOnlyAboveTheSnowLine) {
-    const Picture plain = render("no_snow", kSun), winter = render("snow", kSun + " --snow-line 2000");
+    const Picture plain = render("no_snow", kLowSun), winter = render("snow", kLowSun + " --snow-line 2000");
     const std::vector<double> z = dem_heights();
     double high_plain = 0, high_winter = 0, low_plain = 0, low_winter = 0;
     int high = 0, low = 0;
@@ -128,7 +125,7 @@ TEST(ColorsCli, BadColourInputIsOneLineBeforeAnyWork) {
     const fs::path dir = temp_dir("colors_bad");
     const fs::path bad = dir / "bad.txt";
     std::ofstream(bad) << "0 10 20 30\n1000 brown\n";
-    const std::string out = kSun + " --out " + quote((dir / "x.png").string());
+    const std::string out = kLowSun + " --out " + quote((dir / "x.png").string());
     for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
              {"render " + quote(kDem) + " --colors rainbow" + out, "--colors rainbow: neither a built-in palette"},
              {"render " + quote(kDem) + " --colors " + quote(bad.string()) + out, "bad.txt: line 2: give HEIGHT R G B"},

@@ -21,10 +21,8 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
+const std::string kCopernicusGrenoble = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
 using ts::test::kCessna;
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 
 std::filesystem::path write_path(const std::filesystem::path& dir) {
     const auto p = dir / "path.csv";
@@ -40,7 +38,7 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     const auto dir = temp_dir("fly_frames");
     const auto out = dir / "frames";
     const Result r = run("TERRASHADE_VALIDATION=1 " +
-                         ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+                         ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 3 --size 320x180 --directions 8 --path " +
                                 quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
                                 " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()) +
                                 " --out " + quote(out.string())));
@@ -76,7 +74,7 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     // The Cessna, chased from 60 m behind, is what differs from the same frame without it: a
     // small patch in the middle of the picture.
     const auto bare = dir / "bare";
-    const Result b = run(ts_cmd("fly " + quote(kDem) + " --frames 3 --size 320x180 --directions 8 --path " +
+    const Result b = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 3 --size 320x180 --directions 8 --path " +
                                 quote(write_path(dir).string()) + " --out " + quote(bare.string())));
     ASSERT_EQ(b.exit_code, 0) << b.err;
     int w = 0, h = 0;
@@ -103,7 +101,7 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
 // are unaffected).
 TEST(FlyCli, TheHudIsDrawnInTheTopLeftCornerOnly) {
     const auto dir = temp_dir("fly_hud");
-    const std::string args = "fly " + quote(kDem) + " --frames 2 --size 480x270 --directions 8 --path " +
+    const std::string args = "fly " + quote(kCopernicusGrenoble) + " --frames 2 --size 480x270 --directions 8 --path " +
                              quote(write_path(dir).string()) + " --out ";
     const Result on = run("TERRASHADE_VALIDATION=1 " + ts_cmd(args + quote((dir / "on").string()) + " --hud on"));
     ASSERT_EQ(on.exit_code, 0) << on.err;
@@ -140,7 +138,7 @@ TEST(FlyCli, TheHudIsDrawnInTheTopLeftCornerOnly) {
 }
 
 TEST(FlyCli, WithoutADisplayOneLinePointsToFrames) {
-    const Result r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + ts_cmd("fly " + quote(kDem)));
+    const Result r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + ts_cmd("fly " + quote(kCopernicusGrenoble)));
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -156,7 +154,7 @@ TEST(FlyCli, TheWindowOpensAndClosesUnderXvfb) {
     // a lost race (the server gone under us) is tried once more.
     const std::string server = std::to_string(200 + int(::getpid() % 500));
     const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
-                                ts_cmd("fly " + quote(kDem) +
+                                ts_cmd("fly " + quote(kCopernicusGrenoble) +
                                        " --size 320x180 --directions 8 --exit-after 5 --vsync off --path " +
                                        quote(write_path(dir).string()) + " --mesh " + quote(kCessna) +
                                        " --mesh-forward -x --sphere-cache-dir " + quote((dir / "cache").string()));
@@ -173,7 +171,7 @@ TEST(FlyCli, AStreamedDemFliesInTheWindowUnderXvfb) {
     const auto dir = temp_dir("fly_window_stream");
     const std::string server = std::to_string(700 + int(::getpid() % 500));
     const std::string command = "TERRASHADE_VALIDATION=1 xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24' " +
-                                ts_cmd("fly " + quote(kDem) +
+                                ts_cmd("fly " + quote(kCopernicusGrenoble) +
                                        " --stream on --memory-budget 256 --size 320x180 --directions 8 --exit-after 8"
                                        " --vsync off --path " + quote(write_path(dir).string()) + " --mesh " +
                                        quote(kCessna) + " --mesh-forward -x --sphere-cache-dir " +
@@ -191,32 +189,32 @@ TEST(FlyCli, StreamingFlagsAreCheckedBeforeWork) {
     for (const std::string& flags : {std::string(" --stream maybe"), std::string(" --memory-budget 10"),
                                      std::string(" --overview-level 13"), std::string(" --stream on --crop 5.6,45.1,5.8,45.3"),
                                      std::string(" --stream on --max-error 0.05"), std::string(" --stream on --no-fill")}) {
-        const Result r = run(ts_cmd("fly " + quote(kDem) + frames + flags));
+        const Result r = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + frames + flags));
         EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
     }
     // A budget that holds fewer than four detail tiles says how much it needs.
-    const Result tight = run(ts_cmd("fly " + quote(kDem) + frames + " --stream on --memory-budget 64 --overview-level 2"));
+    const Result tight = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + frames + " --stream on --memory-budget 64 --overview-level 2"));
     EXPECT_EQ(tight.exit_code, 2) << tight.err;
     EXPECT_NE(tight.err.find("--memory-budget"), std::string::npos) << tight.err;
 }
 
 TEST(FlyCli, BadInputExitsTwoBeforeWork) {
     const auto dir = temp_dir("fly_bad");
-    const Result no_out = run(ts_cmd("fly " + quote(kDem) + " --frames 2"));
+    const Result no_out = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 2"));
     EXPECT_EQ(no_out.exit_code, 2);
     EXPECT_NE(no_out.err.find("--out"), std::string::npos) << no_out.err;
-    const Result size = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --size 12"));
+    const Result size = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 2 --out " + quote(dir.string()) + " --size 12"));
     EXPECT_EQ(size.exit_code, 2);
     EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
     // The path lies beside the output folder: one inside it is refused as an input the output could clear.
     const auto bad = temp_dir("fly_bad_path") / "bad.csv";
     std::ofstream(bad) << "0,5.6,45.1,2000,0,0\n";
-    const Result path = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --path " +
+    const Result path = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 2 --out " + quote(dir.string()) + " --path " +
                                    quote(bad.string())));
     EXPECT_EQ(path.exit_code, 2);
     EXPECT_NE(path.err.find("7 numbers"), std::string::npos) << path.err;
-    const Result spheres = run(ts_cmd("fly " + quote(kDem) + " --frames 2 --out " + quote(dir.string()) + " --mesh " +
+    const Result spheres = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 2 --out " + quote(dir.string()) + " --mesh " +
                                       quote(kCessna) + " --spheres 4"));
     EXPECT_EQ(spheres.exit_code, 2);
     EXPECT_NE(spheres.err.find("--spheres"), std::string::npos) << spheres.err;

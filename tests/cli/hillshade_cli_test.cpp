@@ -32,11 +32,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kBin = TS_BIN;
-const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
-
 // Runs a shell command (terrashade or a GDAL oracle).
 using ts::cli_test::Result;
+using ts::cli_test::kBin;
+using ts::cli_test::kSharedDems;
 using ts::cli_test::run;
 
 struct Image {
@@ -97,9 +96,9 @@ protected:
         if (fs::exists(out)) return out;
         std::string cmd;
         if (name == "grenoble_l93.tif") {
-            cmd = "gdalwarp -q -overwrite -t_srs EPSG:2154 -tr 200 200 -r bilinear " + kDem + "copernicus_N45E005_grenoble_500px.tif ";
+            cmd = "gdalwarp -q -overwrite -t_srs EPSG:2154 -tr 200 200 -r bilinear " + kSharedDems + "copernicus_N45E005_grenoble_500px.tif ";
         } else {
-            cmd = "gdalwarp -q -overwrite -t_srs EPSG:32637 -tr 120 120 -r bilinear " + kDem + "srtm3_N39E040_1000px.tif ";
+            cmd = "gdalwarp -q -overwrite -t_srs EPSG:32637 -tr 120 120 -r bilinear " + kSharedDems + "srtm3_N39E040_1000px.tif ";
         }
         const Result r = run(cmd + out.string());
         EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -167,11 +166,11 @@ void expect_geographic_band_matches(const fs::path& dir, const std::string& src,
     const fs::path band = dir / ("band_" + std::to_string(row0) + "_" + fs::path(src).stem().string() + ".tif");
     const fs::path metric = dir / ("metric_" + band.filename().string());
     // The full width: a window wider than the source would be padded with zeros by gdal_translate.
-    const std::string src_info = capture("gdalinfo " + kDem + src);
+    const std::string src_info = capture("gdalinfo " + kSharedDems + src);
     int src_w = 0, src_h = 0;
     ASSERT_EQ(std::sscanf(src_info.substr(src_info.find("Size is")).c_str(), "Size is %d, %d", &src_w, &src_h), 2);
     ASSERT_EQ(run("gdal_translate -q -srcwin 0 " + std::to_string(row0) + " " + std::to_string(src_w) + " " + std::to_string(rows) +
-                      " " + kDem + src + " " + band.string()).exit_code, 0);
+                      " " + kSharedDems + src + " " + band.string()).exit_code, 0);
     // Read the band's geotransform back from gdalinfo: "Origin = (x,y)" and "Pixel Size = (dx,-dy)".
     const std::string info = capture("gdalinfo " + band.string());
     double x0 = 0, y0 = 0, sx = 0, sy = 0;
@@ -213,7 +212,7 @@ TEST_F(HillshadeCli, GeographicDemUsesTrueMetricSpacing) {
 
 TEST_F(HillshadeCli, WritesGeoreferencedTiffAndPng) {
     const fs::path tif = p("grenoble.tif"), png = p("grenoble.png");
-    const std::string dem = kDem + "copernicus_N45E005_grenoble_500px.tif";
+    const std::string dem = kSharedDems + "copernicus_N45E005_grenoble_500px.tif";
     ASSERT_EQ(run(kBin + " hillshade " + dem + " --out " + tif.string()).exit_code, 0);
     ASSERT_EQ(run(kBin + " hillshade " + dem + " -o " + png.string()).exit_code, 0);
     const Image a = read_image(tif), b = read_image(png);
@@ -234,7 +233,7 @@ TEST_F(HillshadeCli, WritesGeoreferencedTiffAndPng) {
 }
 
 TEST_F(HillshadeCli, BadFlagsExitTwoWithOneLine) {
-    const std::string dem = kDem + "nodata_3x3.tif";
+    const std::string dem = kSharedDems + "nodata_3x3.tif";
     const fs::path out = p("bad.tif");
     // The unit tests cover every boundary; here one of each kind reaches the user as one line.
     for (const std::string flags : {"--altitude 95", "--azimuth nan", "--z-factor 0", "--altitude abc"}) {

@@ -14,15 +14,14 @@ namespace {
 
 using ts::cli_test::quote;
 using ts::cli_test::Result;
+using ts::cli_test::run_ts;
 
-Result run(const std::string& args) { return ts::cli_test::run(std::string(TS_BIN) + " " + args); }
-
-const std::string kDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif") + " --crop 5.70,45.15,5.80,45.25";
+const std::string kCroppedDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif") + " --crop 5.70,45.15,5.80,45.25";
 
 TEST(InsolationCli, TwoDaysGiveTenDescribedBandsAndAQuicklook) {
     const auto dir = ts::cli_test::temp_dir("insolation_ok");
     const std::string tif = (dir / "i.tif").string(), png = (dir / "i.png").string();
-    const Result r = run("insolation " + kDem + " --from 2024-06-20 --to 2024-06-21 --by day --out " + quote(tif) +
+    const Result r = run_ts("insolation " + kCroppedDem + " --from 2024-06-20 --to 2024-06-21 --by day --out " + quote(tif) +
                          " --quicklook " + quote(png));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("wrote " + tif + " (10 bands"), std::string::npos) << r.out;
@@ -49,7 +48,7 @@ TEST(InsolationCli, BadInputIsOneLineExitTwoAndNoOutput) {
          {"--year 2024 --linke-monthly 1,2,3", "--from 2024-05-02 --to 2024-05-01", "--from 2023-02-29 --to 2023-03-01",
           "--year 2024 --from 2024-01-01 --to 2024-01-02", "--year 2024 --albedo -0.5", "--year 2024 --linke 0",
           "--year 2024 --clear-sky-index 0", "--year 2024 --step 0", "--from 2024-01-01", "--year 9000"}) {
-        const Result r = run("insolation " + kDem + " " + args + " --out " + quote(tif));
+        const Result r = run_ts("insolation " + kCroppedDem + " " + args + " --out " + quote(tif));
         EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(tif)) << args;

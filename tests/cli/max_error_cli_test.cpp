@@ -13,11 +13,6 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
-
 // The chosen line: "--max-error E: D directions, sun shadows ... (predicted ...)".
 bool has_choice_line(const std::string& out, const std::string& e) {
     return out.find("--max-error " + e + ": ") != std::string::npos && out.find(" directions, sun shadows ") != std::string::npos &&

@@ -12,12 +12,6 @@ namespace ts::cli_test {
 namespace {
 namespace fs = std::filesystem;
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
-const std::string kSun = " --sun-azimuth 135 --sun-elevation 30";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
-
 TEST(MessagesCli, AWordForANumberSaysNotANumberInEveryCommand) {
     const std::string out = quote((temp_dir("msg_numbers") / "x.png").string());
     const std::string dem = quote(kDem) + kCrop;

@@ -21,12 +21,7 @@ namespace ts::cli_test {
 namespace {
 namespace fs = std::filesystem;
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
-const std::string kSun = " --sun-azimuth 135 --sun-elevation 30";
 using ts::test::kCessna;
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 
 int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 

@@ -17,13 +17,9 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
 // A June day at Grenoble, every 2 hours: 02Z and 20Z are in twilight or night (sun -14 and -5
 // degrees), 04Z just after sunrise (+1), 12Z near the highest sun (68).
 const std::string kDay = " --times 2025-06-21T02:00:00Z/2025-06-21T20:00:00Z/PT2H --directions 8";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 
 struct CsvRow {
     std::string file, time;

@@ -16,14 +16,6 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
-// 0.2 x 0.2 degrees around Grenoble: 101 x 101 texels (--crop keeps both edge texels), the city, the Isere and two massifs.
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
-
-std::string ts_cmd(const std::string& args) {
-    return quote(terrashade()) + " " + args;
-}
-
 // Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23).
 std::pair<int, int> png_size(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 using ts::cli_test::Result;
+using ts::cli_test::run_ts;
 
-const std::string kBin = TS_BIN;
 // 101 x 101 texels around Grenoble (lon 5.65..5.85, lat 45.10..45.30).
 const std::string kRender = "render " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
                             " --crop 5.65,45.10,5.85,45.30 --sun-azimuth 135 --sun-elevation 25 --directions 16";
@@ -30,8 +30,6 @@ const std::string kRender = "render " + std::string(TS_SOURCE_DIR) + "/data/gren
 constexpr double kX0 = 634521.0975, kY0 = 5645166.9086, kX1 = 656784.9957, kY1 = 5660965.1103;
 const std::string kExtent = " --extent 634521.0975,5645166.9086,656784.9957,5660965.1103 --extent-crs EPSG:3857";
 constexpr int kW = 120, kH = 90;
-
-Result run(const std::string& args) { return ts::cli_test::run(kBin + " " + args); }
 
 struct Image {
     int width = 0, height = 0, channels = 0;
@@ -54,14 +52,14 @@ nlohmann::json gdalinfo(const fs::path& path) {
 
 TEST(RenderExtentCli, WebMercatorExtentIsGeoreferencedAndSamplesTheGridRender) {
     const fs::path dir = ts::cli_test::temp_dir("extent");
-    const Result grid_exr = run(kRender + " --device cpu --out " + (dir / "grid.exr").string());
+    const Result grid_exr = run_ts(kRender + " --device cpu --out " + (dir / "grid.exr").string());
     ASSERT_EQ(grid_exr.exit_code, 0) << grid_exr.err;
-    const Result grid_tif = run(kRender + " --device cpu --out " + (dir / "grid.tif").string());
+    const Result grid_tif = run_ts(kRender + " --device cpu --out " + (dir / "grid.tif").string());
     ASSERT_EQ(grid_tif.exit_code, 0) << grid_tif.err;
     const std::string size = " --size " + std::to_string(kW) + "x" + std::to_string(kH);
-    const Result ext_exr = run(kRender + kExtent + size + " --out " + (dir / "extent.exr").string());
+    const Result ext_exr = run_ts(kRender + kExtent + size + " --out " + (dir / "extent.exr").string());
     ASSERT_EQ(ext_exr.exit_code, 0) << ext_exr.err;
-    const Result ext_tif = run(kRender + kExtent + size + " --out " + (dir / "extent.tif").string());
+    const Result ext_tif = run_ts(kRender + kExtent + size + " --out " + (dir / "extent.tif").string());
     ASSERT_EQ(ext_tif.exit_code, 0) << ext_tif.err;
 
     // The GeoTIFF: the requested size, bounds and CRS, RGBA.
@@ -133,7 +131,7 @@ TEST(RenderExtentCli, BadExtentsFailBeforeTheWork) {
                                   " --extent 634521,5645166,656784,5660965 --extent-crs EPSG:999999",
                                   " --extent-crs EPSG:3857",
                                   " --extent 0,0,1000,1000 --extent-crs EPSG:3857"}) {
-        const Result r = run(kRender + bad + out);
+        const Result r = run_ts(kRender + bad + out);
         EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
         EXPECT_FALSE(fs::exists(dir / "x.png")) << bad;
     }

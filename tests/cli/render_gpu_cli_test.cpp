@@ -17,11 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kBin = TS_BIN;
 // 101 x 101 texels around Grenoble (as render_cli_test.cpp): the city, the Isere, two massifs.
 const std::string kRender = "render " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
                             " --crop 5.65,45.10,5.85,45.30 --sun-azimuth 135 --sun-elevation 25";
-const std::string kNoVulkan = "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json ";
 
 // Tolerance between the two pictures (linear EXR, per channel, relative to the CPU value).
 // The GPU backend keeps T in fp32; the default CPU path streams T in fp16 (its stated 1e-3 of
@@ -32,9 +30,8 @@ constexpr double kMaxRel = 2e-3;
 constexpr double kFlipFraction = 1e-3;
 
 using ts::cli_test::Result;
-Result run(const std::string& args, const std::string& env = "") {
-    return ts::cli_test::run(env + kBin + " " + args);
-}
+using ts::cli_test::run_ts;
+using ts::cli_test::kNoVulkan;
 
 std::vector<float> read_rgb(const fs::path& path, int& width) {
     auto in = OIIO::ImageInput::open(path.string());
@@ -59,7 +56,7 @@ TEST_F(RenderGpuCli, VulkanGivesTheCpuPicture) {
         SCOPED_TRACE(method);
         const auto out = [&](const std::string& tag) { return (dir_ / (method + tag + ".exr")).string(); };
         for (const std::string tag : {"gpu", "cpu"}) {
-            const Result r = run(kRender + " --exp-method " + method + " --out " + out(tag) +
+            const Result r = run_ts(kRender + " --exp-method " + method + " --out " + out(tag) +
                                  (tag == "cpu" ? " --device cpu" : " --device vulkan"));
             ASSERT_EQ(r.exit_code, 0) << r.err;
             // Which path ran: "..., on cpu" or "..., on <device name>".
@@ -89,25 +86,25 @@ TEST_F(RenderGpuCli, VulkanGivesTheCpuPicture) {
 
 TEST_F(RenderGpuCli, NoVulkanTakesTheCpuPathUnlessVulkanWasAskedFor) {
     const std::string png = (dir_ / "map.png").string();
-    const Result fallback = run(kRender + " --directions 8 --out " + png, kNoVulkan);
+    const Result fallback = run_ts(kRender + " --directions 8 --out " + png, kNoVulkan);
     ASSERT_EQ(fallback.exit_code, 0) << fallback.err;
     EXPECT_NE(fallback.out.find(", on cpu\n"), std::string::npos) << fallback.out;
     EXPECT_TRUE(fs::exists(png));
 
-    const Result asked = run(kRender + " --directions 8 --device 0 --out " + png, kNoVulkan);
+    const Result asked = run_ts(kRender + " --directions 8 --device 0 --out " + png, kNoVulkan);
     EXPECT_EQ(asked.exit_code, 2) << asked.err;
-    const Result both = run(kRender + " --cpu --device 0 --out " + png);
+    const Result both = run_ts(kRender + " --cpu --device 0 --out " + png);
     EXPECT_EQ(both.exit_code, 2);
-    const Result bad_index = run(kRender + " --device 99 --out " + png);
+    const Result bad_index = run_ts(kRender + " --device 99 --out " + png);
     EXPECT_EQ(bad_index.exit_code, 2) << bad_index.err;
     // An exponentiation the GPU lacks keeps the transfer on the CPU, with a note.
-    const Result taylor = run(kRender + " --directions 8 --exp-method taylor --device vulkan --out " + png);
+    const Result taylor = run_ts(kRender + " --directions 8 --exp-method taylor --device vulkan --out " + png);
     ASSERT_EQ(taylor.exit_code, 0) << taylor.err;
     EXPECT_NE(taylor.err.find("--exp-method taylor runs on the CPU"), std::string::npos) << taylor.err;
 }
 
 TEST_F(RenderGpuCli, RelightAndBenchRelightSayWhereTheyRan) {
-    const Result relight = run("relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
+    const Result relight = run_ts("relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
                                " --crop 5.65,45.10,5.85,45.30 --directions 8 --times "
                                "2025-06-21T08:00Z/2025-06-21T10:00Z/PT1H --device vulkan --out " +
                                (dir_ / "frames").string());
@@ -116,7 +113,7 @@ TEST_F(RenderGpuCli, RelightAndBenchRelightSayWhereTheyRan) {
     EXPECT_EQ(relight.out.find("sky shading on cpu"), std::string::npos) << relight.out;
     EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_0002_2025-06-21T1000Z.png"));
 
-    const Result bench = run("bench relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
+    const Result bench = run_ts("bench relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
                              " --crop 5.65,45.10,5.85,45.30 --directions 8 --frames 2 --device vulkan --compare-cpu");
     ASSERT_EQ(bench.exit_code, 0) << bench.err;
     EXPECT_NE(bench.out.find("backend: "), std::string::npos) << bench.out;

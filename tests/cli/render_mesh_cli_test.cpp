@@ -17,13 +17,9 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kDem = std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif";
 using ts::test::kCessna;
-const std::string kCrop = " --crop 5.65,45.10,5.85,45.30";
 // Low sun in the south-east, a fixed exposure so the two pictures compare code for code.
 const std::string kLight = " --sun-azimuth 135 --sun-elevation 15 --exposure 13";
-
-std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 
 struct Image {
     int w = 0, h = 0, channels = 0;

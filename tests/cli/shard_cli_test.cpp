@@ -12,9 +12,9 @@ namespace {
 
 using ts::cli_test::quote;
 using ts::cli_test::Result;
+using ts::cli_test::run_ts;
 
-Result run(const std::string& args) { return ts::cli_test::run(std::string(TS_BIN) + " " + args); }
-const std::string kDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif");
+const std::string kQuotedDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif");
 
 int count_lines(const std::string& s, const std::string& prefix) {
     int n = 0;
@@ -26,14 +26,14 @@ int count_lines(const std::string& s, const std::string& prefix) {
 TEST(ShardCli, MalformedShardIsOneLineExit2BeforeWork) {
     const auto dir = ts::cli_test::temp_dir("bad_shard");
     for (const char* bad : {"3/3", "1", "x/4", "-1/2", "0/0"}) {
-        const Result r = run("tiles " + kDem + " --zoom 0-8 --style hillshade --shard " + bad + " --out " +
+        const Result r = run_ts("tiles " + kQuotedDem + " --zoom 0-8 --style hillshade --shard " + bad + " --out " +
                              quote((dir / "t.mbtiles").string()));
         EXPECT_EQ(r.exit_code, 2) << bad;
         EXPECT_EQ(count_lines(r.err, "terrashade:"), 1) << r.err;
         EXPECT_NE(r.err.find("--shard"), std::string::npos) << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / "t.mbtiles.partial"));
     }
-    const Result r = run("relight " + kDem + " --times 2025-06-21T06:00Z/2025-06-21T12:00Z/PT3H --exposure 13 --shard 2/2 --out " +
+    const Result r = run_ts("relight " + kQuotedDem + " --times 2025-06-21T06:00Z/2025-06-21T12:00Z/PT3H --exposure 13 --shard 2/2 --out " +
                          quote((dir / "frames").string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--shard 2/2"), std::string::npos) << r.err;
@@ -43,11 +43,11 @@ TEST(ShardCli, EnvironmentGivesTheShard) {
     const auto dir = ts::cli_test::temp_dir("env_shard");
     // --array=1-3: task 2 is shard 1 of 3.
     const Result r = ts::cli_test::run("SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3 " +
-                                       std::string(TS_BIN) + " tiles " + kDem + " --zoom 0-9 --style hillshade --out " +
+                                       std::string(TS_BIN) + " tiles " + kQuotedDem + " --zoom 0-9 --style hillshade --out " +
                                        quote((dir / "s.mbtiles").string()));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("shard 1/3 (from SLURM_ARRAY_TASK_ID)"), std::string::npos) << r.out;
-    const Result k = ts::cli_test::run("JOB_COMPLETION_INDEX=0 " + std::string(TS_BIN) + " tiles " + kDem +
+    const Result k = ts::cli_test::run("JOB_COMPLETION_INDEX=0 " + std::string(TS_BIN) + " tiles " + kQuotedDem +
                                        " --zoom 0-9 --style hillshade --out " + quote((dir / "k.mbtiles").string()));
     EXPECT_EQ(k.exit_code, 2);
     EXPECT_NE(k.err.find("TERRASHADE_SHARD_COUNT"), std::string::npos) << k.err;
@@ -55,7 +55,7 @@ TEST(ShardCli, EnvironmentGivesTheShard) {
 
 TEST(ShardCli, RelightShardNeedsAFixedExposure) {
     const auto dir = ts::cli_test::temp_dir("relight_auto");
-    const Result r = run("relight " + kDem + " --times 2025-06-21T06:00Z/2025-06-21T12:00Z/PT3H --shard 0/2 --out " +
+    const Result r = run_ts("relight " + kQuotedDem + " --times 2025-06-21T06:00Z/2025-06-21T12:00Z/PT3H --shard 0/2 --out " +
                          quote((dir / "frames").string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--exposure EV"), std::string::npos) << r.err;
@@ -64,16 +64,16 @@ TEST(ShardCli, RelightShardNeedsAFixedExposure) {
 TEST(ShardCli, MergeReportsMissingShardsAndWritesNothing) {
     const auto dir = ts::cli_test::temp_dir("merge_missing");
     for (int k : {0, 2}) {
-        const Result r = run("tiles " + kDem + " --zoom 0-9 --style hillshade --shard " + std::to_string(k) + "/3 --out " +
+        const Result r = run_ts("tiles " + kQuotedDem + " --zoom 0-9 --style hillshade --shard " + std::to_string(k) + "/3 --out " +
                              quote((dir / ("s" + std::to_string(k) + ".mbtiles")).string()));
         ASSERT_EQ(r.exit_code, 0) << r.err;
     }
-    const Result r = run("merge " + quote((dir / "s0.mbtiles").string()) + " " + quote((dir / "s2.mbtiles").string()) +
+    const Result r = run_ts("merge " + quote((dir / "s0.mbtiles").string()) + " " + quote((dir / "s2.mbtiles").string()) +
                          " --out " + quote((dir / "all.mbtiles").string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("1 of 3 shards missing (1)"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "all.mbtiles"));
-    const Result kinds = run("merge " + quote((dir / "s0.mbtiles").string()) + " --out " + quote((dir / "all").string()));
+    const Result kinds = run_ts("merge " + quote((dir / "s0.mbtiles").string()) + " --out " + quote((dir / "all").string()));
     EXPECT_EQ(kinds.exit_code, 2);
 }
 
@@ -85,9 +85,9 @@ std::string file_bytes(const std::filesystem::path& p) {
 TEST(ShardCli, RelightShardsMergeIntoTheSingleRun) {
     const auto dir = ts::cli_test::temp_dir("relight_merge");
     const std::string flags = " --times 2025-06-21T06:00Z/2025-06-21T16:00Z/PT2H --exposure 13 --directions 8 --out ";
-    ASSERT_EQ(run("relight " + kDem + flags + quote((dir / "single").string())).exit_code, 0);
+    ASSERT_EQ(run_ts("relight " + kQuotedDem + flags + quote((dir / "single").string())).exit_code, 0);
     for (int k : {0, 1, 2})
-        ASSERT_EQ(run("relight " + kDem + flags + quote((dir / ("s" + std::to_string(k))).string()) + " --shard " +
+        ASSERT_EQ(run_ts("relight " + kQuotedDem + flags + quote((dir / ("s" + std::to_string(k))).string()) + " --shard " +
                       std::to_string(k) + "/3")
                       .exit_code,
                   0);
@@ -95,10 +95,10 @@ TEST(ShardCli, RelightShardsMergeIntoTheSingleRun) {
     EXPECT_TRUE(std::filesystem::exists(dir / "s1" / "frame_0002_2025-06-21T1000Z.png"));
     EXPECT_FALSE(std::filesystem::exists(dir / "s1" / "frame_0000_2025-06-21T0600Z.png"));
     const auto s = [&](int k) { return quote((dir / ("s" + std::to_string(k))).string()); };
-    const Result missing = run("merge " + s(0) + " " + s(2) + " --out " + quote((dir / "all").string()));
+    const Result missing = run_ts("merge " + s(0) + " " + s(2) + " --out " + quote((dir / "all").string()));
     EXPECT_EQ(missing.exit_code, 2);
     EXPECT_FALSE(std::filesystem::exists(dir / "all"));
-    const Result r = run("merge " + s(2) + " " + s(0) + " " + s(1) + " --out " + quote((dir / "all").string()));
+    const Result r = run_ts("merge " + s(2) + " " + s(0) + " " + s(1) + " --out " + quote((dir / "all").string()));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::size_t files = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir / "single")) {
@@ -110,7 +110,7 @@ TEST(ShardCli, RelightShardsMergeIntoTheSingleRun) {
 }
 
 TEST(ShardCli, PlanTilesCountsTilesAndShards) {
-    const Result r = run("plan tiles " + kDem + " --zoom 0-12 --style hillshade --wall-time 10s --sample 50");
+    const Result r = run_ts("plan tiles " + kQuotedDem + " --zoom 0-12 --style hillshade --wall-time 10s --sample 50");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // 328 tiles (the single run's 327 written + 1 without data, tests/scale), per zoom and in all.
     EXPECT_NE(r.out.find("  all           328"), std::string::npos) << r.out;
@@ -120,10 +120,10 @@ TEST(ShardCli, PlanTilesCountsTilesAndShards) {
     EXPECT_NE(r.out.find("storage: "), std::string::npos) << r.out;
     // A given rate: 328 tiles at 10 tiles/s in 10 s of wall time take 4 shards (no shading measured
     // without a sample).
-    const Result g = run("plan tiles " + kDem + " --zoom 0-12 --style hillshade --wall-time 10s --rate 10 --sample 0");
+    const Result g = run_ts("plan tiles " + kQuotedDem + " --zoom 0-12 --style hillshade --wall-time 10s --rate 10 --sample 0");
     ASSERT_EQ(g.exit_code, 0) << g.err;
     EXPECT_NE(g.out.find("shards: 4 for --wall-time 10s"), std::string::npos) << g.out;
-    const Result bad = run("plan tiles " + kDem + " --zoom 0-12 --wall-time soon");
+    const Result bad = run_ts("plan tiles " + kQuotedDem + " --zoom 0-12 --wall-time soon");
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("--wall-time soon"), std::string::npos) << bad.err;
 }
@@ -133,10 +133,10 @@ TEST(ShardCli, PlanRelightCountsTheFramesRelightRenders) {
     // leaves it out; with --night include all ten are frames.
     const std::string day = " --times 2025-06-21T02:00:00Z/2025-06-21T20:00:00Z/PT2H --crop 5.65,45.10,5.85,45.30"
                             " --directions 8 --wall-time 1h --rate 10 --setup-seconds 1";
-    const Result r = run("plan relight " + kDem + day);
+    const Result r = run_ts("plan relight " + kQuotedDem + day);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find(": 9 frames (101x101 texels), 1 night instants left out"), std::string::npos) << r.out;
-    const Result all = run("plan relight " + kDem + day + " --night include");
+    const Result all = run_ts("plan relight " + kQuotedDem + day + " --night include");
     ASSERT_EQ(all.exit_code, 0) << all.err;
     EXPECT_NE(all.out.find(": 10 frames (101x101 texels)\n"), std::string::npos) << all.out;
 }

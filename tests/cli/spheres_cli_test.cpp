@@ -14,10 +14,9 @@ namespace {
 namespace fs = std::filesystem;
 using ts::cli_test::quote;
 using ts::cli_test::Result;
+using ts::cli_test::run_ts;
 
 const std::string kTruck = std::string(TS_SHARED_DATA) + "/meshes/CesiumMilkTruck/CesiumMilkTruck.gltf";
-
-Result run(const std::string& args) { return ts::cli_test::run(ts::cli_test::terrashade() + " " + args); }
 
 nlohmann::json read_json(const fs::path& p) {
     std::ifstream in(p);
@@ -35,7 +34,7 @@ TEST(SpheresCli, WritesJsonPreviewAndUsesTheCache) {
     const fs::path out = dir / "truck.json", png = dir / "truck.png", cache = dir / "cache";
     const std::string args = "spheres " + quote(kTruck) + " --count 32 --out " + quote(out.string()) + " --preview " +
                              quote(png.string()) + " --cache-dir " + quote(cache.string());
-    const Result r = run(args);
+    const Result r = run_ts(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = read_json(out);
     EXPECT_EQ(j.at("count").get<int>(), int(j.at("spheres").size()));
@@ -52,7 +51,7 @@ TEST(SpheresCli, WritesJsonPreviewAndUsesTheCache) {
     ASSERT_TRUE(fs::exists(png));
     EXPECT_GT(fs::file_size(png), 1000u);
 
-    const Result again = run(args);
+    const Result again = run_ts(args);
     ASSERT_EQ(again.exit_code, 0) << again.err;
     const auto k = read_json(out);
     EXPECT_TRUE(k.at("cached").get<bool>());
@@ -65,19 +64,19 @@ TEST(SpheresCli, WritesJsonPreviewAndUsesTheCache) {
 TEST(SpheresCli, BadInputIsOneLineAndExit2) {
     const fs::path dir = ts::cli_test::temp_dir("spheres_bad");
     const std::string out = " --out " + quote((dir / "s.json").string()) + " --no-cache";
-    expect_one_line_error(run("spheres " + quote(kTruck) + " --count 7" + out));
-    expect_one_line_error(run("spheres " + quote(kTruck) + " --count 513" + out));
-    expect_one_line_error(run("spheres " + quote(kTruck) + " --count many" + out));
-    const Result missing = run("spheres " + quote((dir / "nope.gltf").string()) + out);
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + " --count 7" + out));
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + " --count 513" + out));
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + " --count many" + out));
+    const Result missing = run_ts("spheres " + quote((dir / "nope.gltf").string()) + out);
     expect_one_line_error(missing);
     EXPECT_NE(missing.err.find("nope.gltf"), std::string::npos) << missing.err;
     std::ofstream(dir / "empty.obj").flush();
-    expect_one_line_error(run("spheres " + quote((dir / "empty.obj").string()) + out));
+    expect_one_line_error(run_ts("spheres " + quote((dir / "empty.obj").string()) + out));
     std::ofstream(dir / "junk.ac") << "not an AC3D file\n";
-    expect_one_line_error(run("spheres " + quote((dir / "junk.ac").string()) + out));
-    expect_one_line_error(run("spheres " + quote(kTruck) + " --out " + quote((dir / "s.txt").string())));
-    expect_one_line_error(run("spheres " + quote(kTruck) + " --out " + quote((dir / "no_dir" / "s.json").string())));
-    expect_one_line_error(run("spheres " + quote(kTruck) + out + " --preview " + quote((dir / "p.jpg").string())));
+    expect_one_line_error(run_ts("spheres " + quote((dir / "junk.ac").string()) + out));
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + " --out " + quote((dir / "s.txt").string())));
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + " --out " + quote((dir / "no_dir" / "s.json").string())));
+    expect_one_line_error(run_ts("spheres " + quote(kTruck) + out + " --preview " + quote((dir / "p.jpg").string())));
     EXPECT_FALSE(fs::exists(dir / "s.json"));
 }
 

@@ -13,9 +13,7 @@
 namespace {
 
 using ts::cli_test::Result;
-
-// Runs terrashade with `args`, stdout and stderr captured apart.
-Result run(const std::string& args) { return ts::cli_test::run(std::string(TS_BIN) + " " + args); }
+using ts::cli_test::run_ts;
 
 // The SPA paper's example: 2003-10-17 12:30:30 at UTC-7, Golden CO, 1830.14 m, 820 hPa, 11 C, delta T 67 s.
 const std::string kPublished =
@@ -23,7 +21,7 @@ const std::string kPublished =
     "--pressure-hpa 820 --temperature-c 11 --delta-t 67";
 
 TEST(SunCli, PublishedExampleAsJson) {
-    const Result r = run(kPublished + " --json");
+    const Result r = run_ts(kPublished + " --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     // Published: zenith 50.11162, azimuth 194.34024 (5 decimals); the SPA claims 0.0003 deg,
@@ -37,7 +35,7 @@ TEST(SunCli, PublishedExampleAsJson) {
 }
 
 TEST(SunCli, PublishedExampleAsText) {
-    const Result r = run(kPublished);
+    const Result r = run_ts(kPublished);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("azimuth      194.34024 deg"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("zenith        50.11162 deg"), std::string::npos) << r.out;
@@ -45,9 +43,9 @@ TEST(SunCli, PublishedExampleAsText) {
 }
 
 TEST(SunCli, DefaultsAreTheStandardAtmosphereAndTheDeltaTModel) {
-    const Result r = run("sun --time 2024-06-21T12:00:00Z --lat 45 --lon 360 --json");  // lon 360 is absurd
+    const Result r = run_ts("sun --time 2024-06-21T12:00:00Z --lat 45 --lon 360 --json");  // lon 360 is absurd
     EXPECT_EQ(r.exit_code, 2);
-    const Result ok = run("sun --time 2024-06-21T12:00:00Z --lat 45 --lon 0 --height-m 2000 --json");
+    const Result ok = run_ts("sun --time 2024-06-21T12:00:00Z --lat 45 --lon 0 --height-m 2000 --json");
     ASSERT_EQ(ok.exit_code, 0) << ok.err;
     const auto j = nlohmann::json::parse(ok.out);
     EXPECT_NEAR(j.at("pressure_hpa").get<double>(), 795.0, 0.1);  // ICAO standard atmosphere at 2 km
@@ -59,9 +57,9 @@ TEST(SunCli, DefaultsAreTheStandardAtmosphereAndTheDeltaTModel) {
 }
 
 TEST(SunCli, LongitudesBeyond180Wrap) {
-    const Result east = run(kPublished + " --json");
+    const Result east = run_ts(kPublished + " --json");
     const Result wrapped =
-        run("sun --time 2003-10-17T12:30:30-07:00 --lat 39.742476 --lon 254.8214 "
+        run_ts("sun --time 2003-10-17T12:30:30-07:00 --lat 39.742476 --lon 254.8214 "
             "--height-m 1830.14 --pressure-hpa 820 --temperature-c 11 --delta-t 67 --json");
     ASSERT_EQ(wrapped.exit_code, 0) << wrapped.err;
     EXPECT_NEAR(nlohmann::json::parse(wrapped.out).at("azimuth_deg").get<double>(),
@@ -77,7 +75,7 @@ TEST(SunCli, AbsurdFlagsExitTwoWithOneLine) {
           "sun --time 2024-06-21T12:00:00Z --lat abc --lon 0",
           "sun --time 2024-06-21T12:00:00Z --lat 45 --lon 0 --pressure-hpa -5",
           "sun --time 2024-06-21T12:00:00Z --lat 45 --lon 0 --delta-t 1e9"}) {
-        const Result r = run(args);
+        const Result r = run_ts(args);
         EXPECT_EQ(r.exit_code, 2) << args;
         EXPECT_TRUE(r.out.empty()) << args << ": " << r.out;
         ASSERT_FALSE(r.err.empty()) << args;

@@ -39,14 +39,14 @@ using ts::cli_test::Pixels;
 using ts::cli_test::read_pixels;
 using ts::cli_test::quote;
 using ts::cli_test::run;
+using ts::cli_test::kSharedDems;
 using ts::cli_test::temp_dir;
 using ts::cli_test::terrashade;
 
 namespace {
 
-const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
-const std::string kGrenoble = kDem + "copernicus_N45E005_grenoble_500px.tif";
-const std::string kAnatolia = kDem + "srtm3_N39E040_1000px.tif";
+const std::string kGrenoble = kSharedDems + "copernicus_N45E005_grenoble_500px.tif";
+const std::string kAnatolia = kSharedDems + "srtm3_N39E040_1000px.tif";
 
 std::string read_bytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -483,7 +483,7 @@ TEST(TilesCli, BadInputExitsTwoWithOneLine) {
     }
     // A DEM that covers no tile: beyond Web Mercator's 85.05 deg.
     const fs::path polar = d / "polar.tif";
-    ASSERT_EQ(run("gdal_translate -q -a_ullr 0 89.9 3 89.0 " + quote(kDem + "nodata_3x3.tif") + " " +
+    ASSERT_EQ(run("gdal_translate -q -a_ullr 0 89.9 3 89.0 " + quote(kSharedDems + "nodata_3x3.tif") + " " +
                   quote(polar.string()))
                   .exit_code,
               0);

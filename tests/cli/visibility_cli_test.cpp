@@ -22,13 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kBin = TS_BIN;
-const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
-
 using ts::cli_test::Result;
-
-// Runs terrashade with `args`.
-Result run(const std::string& args) { return ts::cli_test::run(kBin + " " + args); }
+using ts::cli_test::run_ts;
+using ts::cli_test::kSharedDems;
 
 class VisibilityCli : public ::testing::Test {
 protected:
@@ -44,16 +40,16 @@ protected:
 
 // A 0.1 x 0.1 degree window (121 x 121 texels) of the Gabon SRTM tile: the raymarch reference
 // stays quick there.
-const std::string kWindow = "visibility " + kDem + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
+const std::string kWindow = "visibility " + kSharedDems + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
 
 }  // namespace
 
 TEST_F(VisibilityCli, WritesGeoreferencedRasters) {
     const fs::path svf = dir_ / "svf.tif", sky = dir_ / "sky.tif", hz = dir_ / "hz.tif", sh = dir_ / "sh.tif";
-    const Result r = run(kWindow + " --directions 16 --svf " + svf.string() + " --sky-visible " + sky.string() +
+    const Result r = run_ts(kWindow + " --directions 16 --svf " + svf.string() + " --sky-visible " + sky.string() +
                                     " --horizons " + hz.string() + " --sh " + sh.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const auto in = ts::dem::read_dem(kDem + "N00E010.hgt");
+    const auto in = ts::dem::read_dem(kSharedDems + "N00E010.hgt");
     const auto out = ts::dem::read_dem(svf);
     ASSERT_GT(out.width, 100);
     // Same CRS and the window's corner on the input's pixel grid (1e-9 degree).
@@ -81,7 +77,7 @@ TEST_F(VisibilityCli, WritesGeoreferencedRasters) {
 // (east, counter-clockwise): band 1 faces north, band 5 east, band 13 west for D = 16.
 TEST_F(VisibilityCli, HorizonBandsGoClockwiseFromNorth) {
     const fs::path hz = dir_ / "hz_order.tif";
-    ASSERT_EQ(run(kWindow + " --directions 16 --horizons " + hz.string()).exit_code, 0);
+    ASSERT_EQ(run_ts(kWindow + " --directions 16 --horizons " + hz.string()).exit_code, 0);
     const Result info = ts::cli_test::run("gdalinfo " + hz.string());
     ASSERT_EQ(info.exit_code, 0) << info.err;
     for (int band = 1; band <= 16; ++band) {
@@ -112,8 +108,8 @@ TEST_F(VisibilityCli, HorizonBandsGoClockwiseFromNorth) {
 
 TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
     const fs::path a = dir_ / "exact.tif", b = dir_ / "ray.tif";
-    ASSERT_EQ(run(kWindow + " --directions 16 --method exact --svf " + a.string()).exit_code, 0);
-    ASSERT_EQ(run(kWindow + " --directions 16 --method raymarch --svf " + b.string()).exit_code, 0);
+    ASSERT_EQ(run_ts(kWindow + " --directions 16 --method exact --svf " + a.string()).exit_code, 0);
+    ASSERT_EQ(run_ts(kWindow + " --directions 16 --method raymarch --svf " + b.string()).exit_code, 0);
     const auto ea = ts::dem::read_dem(a), eb = ts::dem::read_dem(b);
     double se = 0;
     int n = 0;
@@ -126,8 +122,8 @@ TEST_F(VisibilityCli, ExactAgreesWithRaymarchOnRealWindow) {
 
 TEST_F(VisibilityCli, PngQuickLookIsTheFloatRasterStretched) {
     const fs::path tif = dir_ / "svf.tif", png = dir_ / "svf.png";
-    ASSERT_EQ(run(kWindow + " --directions 8 --svf " + tif.string()).exit_code, 0);
-    const Result r = run(kWindow + " --directions 8 --svf " + png.string());
+    ASSERT_EQ(run_ts(kWindow + " --directions 8 --svf " + tif.string()).exit_code, 0);
+    const Result r = run_ts(kWindow + " --directions 8 --svf " + png.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // The stretch is printed: "...: grey 1..255 = LO..HI (the 1st to 99th percentile ...".
     const auto at = r.out.find("grey 1..255 = ");
@@ -184,7 +180,7 @@ TEST_F(VisibilityCli, VoidReceiverIsNaN) {
     // nodata_3x3.tif: a 3x3 grid whose lower-right 2x2 block is nodata (9999).
     const fs::path svf = dir_ / "svf.tif";
     const Result r =
-        run("visibility " + kDem + "nodata_3x3.tif --directions 8 --no-curvature --svf " + svf.string());
+        run_ts("visibility " + kSharedDems + "nodata_3x3.tif --directions 8 --no-curvature --svf " + svf.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto out = ts::dem::read_dem(svf);
     ASSERT_EQ(out.width, 3);
@@ -195,10 +191,10 @@ TEST_F(VisibilityCli, VoidReceiverIsNaN) {
 
 TEST_F(VisibilityCli, BadUsageExitsTwoWithOneLine) {
     for (const std::string& args :
-         {"visibility " + kDem + "N00E010.hgt --method nonsense --svf x.tif",
-          "visibility " + kDem + "N00E010.hgt --directions 0 --svf x.tif", "visibility " + kDem + "N00E010.hgt",
+         {"visibility " + kSharedDems + "N00E010.hgt --method nonsense --svf x.tif",
+          "visibility " + kSharedDems + "N00E010.hgt --directions 0 --svf x.tif", "visibility " + kSharedDems + "N00E010.hgt",
           std::string("visibility /nonexistent.hgt --svf x.tif")}) {
-        const Result r = run(args);
+        const Result r = run_ts(args);
         EXPECT_EQ(r.exit_code, 2) << args;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
     }

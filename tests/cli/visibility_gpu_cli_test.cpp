@@ -17,17 +17,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kBin = TS_BIN;
-const std::string kDem = std::string(TS_SHARED_DATA) + "/dem/";
-// 121 x 121 texels of the Gabon tile (as visibility_cli_test.cpp).
-const std::string kWindow = "visibility " + kDem + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
-// The driver manifests pointed at nothing: the Vulkan loader finds no device.
-const std::string kNoVulkan = "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json ";
-
+using ts::cli_test::kNoVulkan;
+using ts::cli_test::kSharedDems;
 using ts::cli_test::Result;
-Result run(const std::string& args, const std::string& env = "") {
-    return ts::cli_test::run(env + kBin + " " + args);
-}
+using ts::cli_test::run_ts;
+
+// 121 x 121 texels of the Gabon tile (as visibility_cli_test.cpp).
+const std::string kWindow = "visibility " + kSharedDems + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
 
 // Every band of a float GeoTIFF, band-interleaved by pixel as OIIO reads it.
 std::vector<float> read_all_bands(const fs::path& path, int& bands) {
@@ -64,7 +60,7 @@ protected:
 TEST_F(VisibilityGpuCli, VulkanAgreesWithCpu) {
     const auto out = [&](const std::string& tag, const std::string& what) { return (dir_ / (tag + what)).string(); };
     for (const std::string tag : {"vulkan", "cpu"}) {
-        const Result r = run(kWindow + " --directions 16 --svf " + out(tag, "svf.tif") + " --sky-visible " +
+        const Result r = run_ts(kWindow + " --directions 16 --svf " + out(tag, "svf.tif") + " --sky-visible " +
                              out(tag, "sky.tif") + " --log-sh " + out(tag, "lsh.tif") + " --horizons " +
                              out(tag, "hz.tif") + " --device " + tag);
         ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -95,13 +91,13 @@ TEST_F(VisibilityGpuCli, VulkanAgreesWithCpu) {
 // The default (--device auto) takes the path `terrashade devices` says it takes, for the reason
 // it gives; --verbose says so.
 TEST_F(VisibilityGpuCli, DefaultTakesThePathDevicesNames) {
-    const Result devices = run("devices");
+    const Result devices = run_ts("devices");
     ASSERT_EQ(devices.exit_code, 0) << devices.err;
     const std::string key = "--device auto (every command's default): ";
     const auto at = devices.out.find(key);
     ASSERT_NE(at, std::string::npos) << devices.out;
     const std::string reason = devices.out.substr(at + key.size(), devices.out.find('\n', at) - at - key.size());
-    const Result r = run(kWindow + " --directions 8 --verbose --svf " + (dir_ / "svf.tif").string());
+    const Result r = run_ts(kWindow + " --directions 8 --verbose --svf " + (dir_ / "svf.tif").string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("(auto: " + reason + ")"), std::string::npos) << r.out << "\nreason: " << reason;
     const bool cpu_path = reason.find("the CPU path") != std::string::npos;
@@ -109,11 +105,11 @@ TEST_F(VisibilityGpuCli, DefaultTakesThePathDevicesNames) {
 }
 
 TEST_F(VisibilityGpuCli, WhatTheDeviceLacksRunsOnTheCpuAndSaysSo) {
-    const Result r = run(kWindow + " --directions 8 --method raymarch --device vulkan --svf " +
+    const Result r = run_ts(kWindow + " --directions 8 --method raymarch --device vulkan --svf " +
                          (dir_ / "p.tif").string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("horizons (raymarch) on cpu"), std::string::npos) << r.out;
-    const Result constant = run(kWindow + " --directions 8 --wedges constant --device vulkan --svf " +
+    const Result constant = run_ts(kWindow + " --directions 8 --wedges constant --device vulkan --svf " +
                                 (dir_ / "c.tif").string());
     ASSERT_EQ(constant.exit_code, 0) << constant.err;
     EXPECT_NE(constant.out.find("svf (constant wedges) on cpu"), std::string::npos) << constant.out;
@@ -125,7 +121,7 @@ TEST_F(VisibilityGpuCli, WhatTheDeviceLacksRunsOnTheCpuAndSaysSo) {
 TEST_F(VisibilityGpuCli, PyramidRunsOnTheDeviceAndAgreesWithCpu) {
     const auto out = [&](const std::string& tag) { return (dir_ / (tag + "svf.tif")).string(); };
     for (const std::string tag : {"vulkan", "cpu"}) {
-        const Result r = run(kWindow + " --directions 8 --method pyramid --svf " + out(tag) + " --device " + tag);
+        const Result r = run_ts(kWindow + " --directions 8 --method pyramid --svf " + out(tag) + " --device " + tag);
         ASSERT_EQ(r.exit_code, 0) << r.err;
         EXPECT_EQ(r.out.find("horizons (pyramid) on cpu") != std::string::npos, tag == "cpu") << r.out;
     }
@@ -138,21 +134,21 @@ TEST_F(VisibilityGpuCli, PyramidRunsOnTheDeviceAndAgreesWithCpu) {
 
 TEST_F(VisibilityGpuCli, NoVulkanTakesTheCpuPathUnlessVulkanWasAskedFor) {
     const std::string svf = (dir_ / "svf.tif").string();
-    const Result fallback = run(kWindow + " --directions 8 --verbose --svf " + svf, kNoVulkan);
+    const Result fallback = run_ts(kWindow + " --directions 8 --verbose --svf " + svf, kNoVulkan);
     ASSERT_EQ(fallback.exit_code, 0) << fallback.err;
     EXPECT_NE(fallback.out.find("device: cpu (auto: "), std::string::npos) << fallback.out;
     EXPECT_TRUE(fs::exists(svf));
 
     for (const std::string device : {"0", "vulkan"}) {
-        const Result asked = run(kWindow + " --directions 8 --device " + device + " --svf " + svf, kNoVulkan);
+        const Result asked = run_ts(kWindow + " --directions 8 --device " + device + " --svf " + svf, kNoVulkan);
         EXPECT_EQ(asked.exit_code, 2) << device;
         EXPECT_NE(asked.err.find("mesa-vulkan-drivers"), std::string::npos) << asked.err;
     }
-    const Result both = run(kWindow + " --cpu --device 0 --svf " + svf);
+    const Result both = run_ts(kWindow + " --cpu --device 0 --svf " + svf);
     EXPECT_EQ(both.exit_code, 2);
-    const Result bad_index = run(kWindow + " --device 99 --svf " + svf);
+    const Result bad_index = run_ts(kWindow + " --device 99 --svf " + svf);
     EXPECT_EQ(bad_index.exit_code, 2) << bad_index.err;
-    const Result bad_word = run(kWindow + " --device gpu --svf " + svf);
+    const Result bad_word = run_ts(kWindow + " --device gpu --svf " + svf);
     EXPECT_EQ(bad_word.exit_code, 2) << bad_word.err;
     EXPECT_NE(bad_word.err.find("give auto, cpu, vulkan or a device index"), std::string::npos) << bad_word.err;
 }

@@ -21,6 +21,7 @@ DEMO_PKGS=(
   mold                      # the linker, ~4x faster than GNU ld here (docs/dependencies.md)
   libgeographiclib-dev      # geodesy: local ENU frames, geodesics, UTM/UPS
   libopenimageio-dev        # EXR/HDR environment maps (the lazily loaded image module); image I/O in tests
+  openimageio-tools         # Debian's OpenImageIO CMake config fails without its tools (/usr/bin/iconvert)
   libisal-dev               # PNG compression: ISA-L igzip, the fastest deflate (docs/dependencies.md)
   libdeflate-dev            # PNG compression at higher levels, and CRC-32 (docs/dependencies.md)
   libtiff-dev libgeotiff-dev  # GeoTIFF tags and GeoKeys (OIIO 2.4 does not expose them)
@@ -38,7 +39,6 @@ DEMO_PKGS=(
 TEST_PKGS=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev  # GoogleTest
   libpng-dev                # tests: a PNG decoder besides OpenImageIO, and the earlier encoder as a reference
-  openimageio-tools
   vulkan-tools vulkan-validationlayers  # every GPU test runs with the validation layer on
   gdal-bin                  # gdalinfo / gdalwarp / gdaldem as test oracles
   python3-gdal              # gdal2tiles.py: the classic tile pipeline `bench tiles` compares with

@@ -1,5 +1,7 @@
 #include "app/bench_forward.hpp"
 
+#include "app/exit_codes.hpp"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,7 +13,6 @@
 
 namespace ts::app {
 namespace {
-constexpr int kExitBadInput = 2;
 constexpr const char* kBenchExecutable = "terrashade-bench";
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include "app/options/max_error_option.hpp"
 #include "app/options/mesh_forward_option.hpp"
 #include "app/options/quantity_flags.hpp"
+#include "app/options/size_option.hpp"
 #include "app/options/sky_option.hpp"
 #include "app/options/sun_options.hpp"
 #include "app/options/verbose_option.hpp"
@@ -128,13 +129,6 @@ FlyErrorBounds parse_fly_max_error(const std::string& text) {
     return b;
 }
 
-void parse_size(const std::string& text, int& w, int& h) {
-    char x = 0;
-    char rest = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X') || w < 16 ||
-        h < 16 || w > 8192 || h > 8192)
-        throw InputError("--size " + text + ": give WIDTHxHEIGHT, 16..8192 each (e.g. 960x540)");
-}
 
 fly::CameraMode parse_camera_mode(const std::string& s) {
     if (s == "chase") return fly::CameraMode::chase;
@@ -251,7 +245,7 @@ void refuse_poses_below_terrain(const gpu::Flythrough& flight, const fly::Flight
 
 void run_fly(const FlyArgs& a) {
     gpu::FlySettings settings;
-    parse_size(a.size, settings.width, settings.height);
+    parse_size(a.size, SizeRange{16, 8192, "960x540"}, settings.width, settings.height);
     if (a.vsync != "on" && a.vsync != "off") throw InputError("--vsync " + a.vsync + ": give on or off");
     const fly::CameraMode mode = parse_camera_mode(a.camera);
     const light::UtcTime time = light::parse_utc_time(a.time);

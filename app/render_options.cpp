@@ -22,23 +22,10 @@
 #include "core/sh/exp_method.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/sun_visibility.hpp"
+#include "app/options/size_option.hpp"
 #include "app/options/within_range.hpp"
 
 namespace ts::app {
-namespace {
-
-void parse_size(const std::string& text, int& w, int& h) {
-    const auto x = text.find('x');
-    auto number = [&](std::string_view s, int& out) {
-        const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-        return ec == std::errc() && p == s.data() + s.size() && out >= 1 && out <= 16384;
-    };
-    if (x == std::string::npos || !number(std::string_view(text).substr(0, x), w) ||
-        !number(std::string_view(text).substr(x + 1), h))
-        throw InputError("--size " + text + ": give WIDTHxHEIGHT, each 1..16384 (e.g. 1280x720)");
-}
-
-}  // namespace
 
 void add_render_options(CLI::App& cmd, RenderArgs& a) {
     add_dem_input_options(cmd, a.dem);
@@ -120,7 +107,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     }
     if (!a.size.empty()) {
         int w = 0, h = 0;
-        parse_size(a.size, w, h);
+        parse_size(a.size, SizeRange{1, 16384, "1280x720"}, w, h);
         if (o.view == render::ViewKind::perspective)
             o.perspective.width = w, o.perspective.height = h;
         else

@@ -5,15 +5,13 @@
 #include <new>
 #include <string>
 
+#include "app/exit_codes.hpp"
 #include "app/job_memory.hpp"
 #include "app/options/quantity_flags.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::app {
 namespace {
-constexpr int kExitOk = 0;
-constexpr int kExitBug = 1;
-constexpr int kExitBadInput = 2;
 
 // "render", "bench transfer": the subcommands parsed, for the flags of their quantities.
 std::string command_path(const CLI::App& root) {

@@ -91,8 +91,6 @@ inline const std::string kSharedDems = std::string(TS_SHARED_DATA) + "/dem/";
 // The driver manifests pointed at nothing: the Vulkan loader finds no device.
 inline const std::string kNoVulkan = "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json ";
 
-// The terrashade binary, unquoted, to prefix a command with.
-inline const std::string kBin = terrashade();
 // `terrashade ARGS` as a shell command.
 inline std::string ts_cmd(const std::string& args) { return quote(terrashade()) + " " + args; }
 // Runs `terrashade ARGS` after `env` (variable assignments such as kNoVulkan, or nothing).

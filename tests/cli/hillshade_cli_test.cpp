@@ -34,9 +34,9 @@ namespace {
 
 // Runs a shell command (terrashade or a GDAL oracle).
 using ts::cli_test::Result;
-using ts::cli_test::kBin;
 using ts::cli_test::kSharedDems;
 using ts::cli_test::run;
+using ts::cli_test::ts_cmd;
 
 struct Image {
     int width = 0, height = 0, channels = 0;
@@ -119,7 +119,7 @@ void expect_matches_gdaldem(const fs::path& dir, const fs::path& dem, const std:
     const fs::path gd_out = dir / (dem.stem().string() + "_gd.tif");
     const Result gd = run("gdaldem hillshade -q " + gd_flags + " " + dem.string() + " " + gd_out.string());
     ASSERT_EQ(gd.exit_code, 0) << gd.err;
-    const Result ts = run(kBin + " hillshade " + dem.string() + " --out " + ts_out.string() + " " + ts_flags);
+    const Result ts = run(ts_cmd("hillshade " + dem.string() + " --out " + ts_out.string() + " " + ts_flags));
     ASSERT_EQ(ts.exit_code, 0) << ts.err;
     const Image a = read_image(ts_out), b = read_image(gd_out);
     ASSERT_EQ(a.width, b.width);
@@ -191,7 +191,7 @@ void expect_geographic_band_matches(const fs::path& dir, const std::string& src,
     const fs::path ts_out = dir / ("ts_" + band.filename().string());
     const fs::path gd_out = dir / ("gd_" + band.filename().string());
     ASSERT_EQ(run("gdaldem hillshade -q " + metric.string() + " " + gd_out.string()).exit_code, 0);
-    const Result ts = run(kBin + " hillshade --no-fill --no-edges " + band.string() + " --out " + ts_out.string());
+    const Result ts = run(ts_cmd("hillshade --no-fill --no-edges " + band.string() + " --out " + ts_out.string()));
     ASSERT_EQ(ts.exit_code, 0) << ts.err;
     const Image a = read_image(ts_out), b = read_image(gd_out);
     ASSERT_EQ(a.width, b.width);
@@ -213,8 +213,8 @@ TEST_F(HillshadeCli, GeographicDemUsesTrueMetricSpacing) {
 TEST_F(HillshadeCli, WritesGeoreferencedTiffAndPng) {
     const fs::path tif = p("grenoble.tif"), png = p("grenoble.png");
     const std::string dem = kSharedDems + "copernicus_N45E005_grenoble_500px.tif";
-    ASSERT_EQ(run(kBin + " hillshade " + dem + " --out " + tif.string()).exit_code, 0);
-    ASSERT_EQ(run(kBin + " hillshade " + dem + " -o " + png.string()).exit_code, 0);
+    ASSERT_EQ(run(ts_cmd("hillshade " + dem + " --out " + tif.string())).exit_code, 0);
+    ASSERT_EQ(run(ts_cmd("hillshade " + dem + " -o " + png.string())).exit_code, 0);
     const Image a = read_image(tif), b = read_image(png);
     ASSERT_EQ(a.width, 500);
     ASSERT_EQ(b.width, 500);
@@ -237,22 +237,22 @@ TEST_F(HillshadeCli, BadFlagsExitTwoWithOneLine) {
     const fs::path out = p("bad.tif");
     // The unit tests cover every boundary; here one of each kind reaches the user as one line.
     for (const std::string flags : {"--altitude 95", "--azimuth nan", "--z-factor 0", "--altitude abc"}) {
-        const Result r = run(kBin + " hillshade " + dem + " --out " + out.string() + " " + flags);
+        const Result r = run(ts_cmd("hillshade " + dem + " --out " + out.string() + " " + flags));
         EXPECT_EQ(r.exit_code, 2) << flags;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << ": " << r.err;
         EXPECT_FALSE(fs::exists(out)) << flags;
     }
-    const Result ext = run(kBin + " hillshade " + dem + " --out " + p("x.jpg").string());
+    const Result ext = run(ts_cmd("hillshade " + dem + " --out " + p("x.jpg").string()));
     EXPECT_EQ(ext.exit_code, 2);
     EXPECT_NE(ext.err.find("x.jpg"), std::string::npos) << ext.err;
-    const Result no_out = run(kBin + " hillshade " + dem);
+    const Result no_out = run(ts_cmd("hillshade " + dem));
     EXPECT_EQ(no_out.exit_code, 2);
 }
 
 TEST_F(HillshadeCli, MissingDemLeavesExistingOutputUntouched) {
     const fs::path out = p("keep.tif");
     { std::ofstream(out) << "keep"; }
-    const Result r = run(kBin + " hillshade " + p("no_such.hgt").string() + " --out " + out.string());
+    const Result r = run(ts_cmd("hillshade " + p("no_such.hgt").string() + " --out " + out.string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("no_such.hgt"), std::string::npos) << r.err;
     std::ifstream in(out);

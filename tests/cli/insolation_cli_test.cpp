@@ -16,7 +16,7 @@ using ts::cli_test::quote;
 using ts::cli_test::Result;
 using ts::cli_test::run_ts;
 
-const std::string kCroppedDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif") + " --crop 5.70,45.15,5.80,45.25";
+const std::string kCroppedDem = quote(ts::cli_test::kDem) + " --crop 5.70,45.15,5.80,45.25";
 
 TEST(InsolationCli, TwoDaysGiveTenDescribedBandsAndAQuicklook) {
     const auto dir = ts::cli_test::temp_dir("insolation_ok");

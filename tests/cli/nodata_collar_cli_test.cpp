@@ -41,7 +41,7 @@ const fs::path& reprojected() {
         const fs::path out = temp_dir("nodata_collar") / "grenoble_3035.tif";
         fs::remove(out);
         const Result r = run("gdalwarp -q -t_srs EPSG:3035 -tr 1000 1000 " +
-                             quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif") + " " + quote(out.string()));
+                             quote(ts::cli_test::kDem) + " " + quote(out.string()));
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return out;
     }();

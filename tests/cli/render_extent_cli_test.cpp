@@ -24,8 +24,8 @@ using ts::cli_test::Result;
 using ts::cli_test::run_ts;
 
 // 101 x 101 texels around Grenoble (lon 5.65..5.85, lat 45.10..45.30).
-const std::string kRender = "render " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
-                            " --crop 5.65,45.10,5.85,45.30 --sun-azimuth 135 --sun-elevation 25 --directions 16";
+const std::string kRender = "render " + ts::cli_test::kDem + ts::cli_test::kCrop +
+                            " --sun-azimuth 135 --sun-elevation 25 --directions 16";
 // lon 5.70..5.90, lat 45.15..45.25 in EPSG:3857: the eastern quarter lies off the crop.
 constexpr double kX0 = 634521.0975, kY0 = 5645166.9086, kX1 = 656784.9957, kY1 = 5660965.1103;
 const std::string kExtent = " --extent 634521.0975,5645166.9086,656784.9957,5660965.1103 --extent-crs EPSG:3857";

@@ -18,8 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // 101 x 101 texels around Grenoble (as render_cli_test.cpp): the city, the Isere, two massifs.
-const std::string kRender = "render " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
-                            " --crop 5.65,45.10,5.85,45.30 --sun-azimuth 135 --sun-elevation 25";
+const std::string kRender = "render " + ts::cli_test::kDem + ts::cli_test::kCrop + " --sun-azimuth 135 --sun-elevation 25";
 
 // Tolerance between the two pictures (linear EXR, per channel, relative to the CPU value).
 // The GPU backend keeps T in fp32; the default CPU path streams T in fp16 (its stated 1e-3 of
@@ -104,8 +103,7 @@ TEST_F(RenderGpuCli, NoVulkanTakesTheCpuPathUnlessVulkanWasAskedFor) {
 }
 
 TEST_F(RenderGpuCli, RelightAndBenchRelightSayWhereTheyRan) {
-    const Result relight = run_ts("relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
-                               " --crop 5.65,45.10,5.85,45.30 --directions 8 --times "
+    const Result relight = run_ts("relight " + ts::cli_test::kDem + ts::cli_test::kCrop + " --directions 8 --times "
                                "2025-06-21T08:00Z/2025-06-21T10:00Z/PT1H --device vulkan --out " +
                                (dir_ / "frames").string());
     ASSERT_EQ(relight.exit_code, 0) << relight.err;
@@ -113,8 +111,8 @@ TEST_F(RenderGpuCli, RelightAndBenchRelightSayWhereTheyRan) {
     EXPECT_EQ(relight.out.find("sky shading on cpu"), std::string::npos) << relight.out;
     EXPECT_TRUE(fs::exists(dir_ / "frames" / "frame_0002_2025-06-21T1000Z.png"));
 
-    const Result bench = run_ts("bench relight " + std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif" +
-                             " --crop 5.65,45.10,5.85,45.30 --directions 8 --frames 2 --device vulkan --compare-cpu");
+    const Result bench = run_ts("bench relight " + ts::cli_test::kDem + ts::cli_test::kCrop +
+                                " --directions 8 --frames 2 --device vulkan --compare-cpu");
     ASSERT_EQ(bench.exit_code, 0) << bench.err;
     EXPECT_NE(bench.out.find("backend: "), std::string::npos) << bench.out;
     EXPECT_NE(bench.out.find("device / cpu time:"), std::string::npos) << bench.out;

@@ -14,7 +14,7 @@ using ts::cli_test::quote;
 using ts::cli_test::Result;
 using ts::cli_test::run_ts;
 
-const std::string kQuotedDem = quote(std::string(TS_SOURCE_DIR) + "/data/grenoble_500px.tif");
+const std::string kQuotedDem = quote(ts::cli_test::kDem);
 
 int count_lines(const std::string& s, const std::string& prefix) {
     int n = 0;

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "app/bench/bench_command.hpp"
-#include "app/bench/synthetic_mosaic.hpp"
+#include "app/bench/study/synthetic_mosaic.hpp"
 #include "app/io_plan.hpp"
 #include "core/raster/geotiff_georef.hpp"
 #include "core/raster/tiff_file.hpp"

@@ -15,7 +15,7 @@
 #include "app/bench/bench_command.hpp"
 #include "app/bench/process_usage.hpp"
 #include "app/bench/shell_command.hpp"
-#include "app/bench/synthetic_mosaic.hpp"
+#include "app/bench/study/synthetic_mosaic.hpp"
 #include "app/bench/tile_knobs_study.hpp"
 #include "app/dem_input.hpp"
 #include "app/io_plan.hpp"

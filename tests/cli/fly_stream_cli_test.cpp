@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/bench/synthetic_mosaic.hpp"
+#include "app/bench/study/synthetic_mosaic.hpp"
 #include "cli_support.hpp"
 #include "frame_pixels.hpp"
 #include "core/dem/dem_source.hpp"

@@ -1,4 +1,4 @@
-#include "app/bench/synthetic_mosaic.hpp"
+#include "app/bench/study/synthetic_mosaic.hpp"
 
 #include <algorithm>
 #include <cmath>

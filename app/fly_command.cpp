@@ -129,7 +129,6 @@ FlyErrorBounds parse_fly_max_error(const std::string& text) {
     return b;
 }
 
-
 fly::CameraMode parse_camera_mode(const std::string& s) {
     if (s == "chase") return fly::CameraMode::chase;
     if (s == "cockpit") return fly::CameraMode::cockpit;

@@ -21,7 +21,7 @@
 namespace ts::cli_test {
 namespace {
 
-const std::string kCopernicusGrenoble = std::string(TS_SHARED_DATA) + "/dem/copernicus_N45E005_grenoble_500px.tif";
+const std::string kCopernicusGrenoble = kSharedDems + "copernicus_N45E005_grenoble_500px.tif";
 using ts::test::kCessna;
 
 std::filesystem::path write_path(const std::filesystem::path& dir) {

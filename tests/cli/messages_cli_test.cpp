@@ -126,7 +126,7 @@ namespace {
 // TERRASHADE_MEMORY_LIMIT stands in for a small machine.
 TEST(JobMemoryCli, AJobLargerThanTheMemoryIsRefusedBeforeTheWork) {
     const fs::path dir = temp_dir("job_memory");
-    const std::string dem = quote(std::string(TS_SHARED_DATA) + "/dem/N00E010.hgt");
+    const std::string dem = quote(kSharedDems + "N00E010.hgt");
     const std::string limit = "TERRASHADE_MEMORY_LIMIT=100MB ";
     for (const std::string& args :
          {"visibility " + dem + " --svf " + quote((dir / "svf.tif").string()),

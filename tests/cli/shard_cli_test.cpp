@@ -42,13 +42,12 @@ TEST(ShardCli, MalformedShardIsOneLineExit2BeforeWork) {
 TEST(ShardCli, EnvironmentGivesTheShard) {
     const auto dir = ts::cli_test::temp_dir("env_shard");
     // --array=1-3: task 2 is shard 1 of 3.
-    const Result r = ts::cli_test::run("SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3 " +
-                                       std::string(TS_BIN) + " tiles " + kQuotedDem + " --zoom 0-9 --style hillshade --out " +
-                                       quote((dir / "s.mbtiles").string()));
+    const Result r = run_ts("tiles " + kQuotedDem + " --zoom 0-9 --style hillshade --out " + quote((dir / "s.mbtiles").string()),
+                            "SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3 ");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("shard 1/3 (from SLURM_ARRAY_TASK_ID)"), std::string::npos) << r.out;
-    const Result k = ts::cli_test::run("JOB_COMPLETION_INDEX=0 " + std::string(TS_BIN) + " tiles " + kQuotedDem +
-                                       " --zoom 0-9 --style hillshade --out " + quote((dir / "k.mbtiles").string()));
+    const Result k = run_ts("tiles " + kQuotedDem + " --zoom 0-9 --style hillshade --out " + quote((dir / "k.mbtiles").string()),
+                            "JOB_COMPLETION_INDEX=0 ");
     EXPECT_EQ(k.exit_code, 2);
     EXPECT_NE(k.err.find("TERRASHADE_SHARD_COUNT"), std::string::npos) << k.err;
 }

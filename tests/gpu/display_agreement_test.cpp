@@ -20,7 +20,7 @@ namespace ts::gpu::embedded {
 extern const SpirvBlob display_agreement_comp;  // tests/gpu/shaders/display_agreement.comp
 }
 
-namespace ts::gpu {
+namespace ts::gpu::display_agreement {
 namespace {
 
 struct Push {
@@ -83,4 +83,4 @@ TEST_F(DisplayAgreementTest, FilmicAndSrgbAgreeWithTheEncoders) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::display_agreement

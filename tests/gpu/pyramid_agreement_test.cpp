@@ -26,7 +26,7 @@
 #include "tests/gpu/horizon_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
-namespace ts::gpu {
+namespace ts::gpu::pyramid_agreement {
 namespace {
 
 namespace vis = ts::visibility;
@@ -323,4 +323,4 @@ TEST_F(GpuPyramidTest, BadOptionsAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::pyramid_agreement

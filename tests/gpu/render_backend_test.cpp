@@ -33,7 +33,7 @@
 #include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
-namespace ts::gpu {
+namespace ts::gpu::render_backend_agreement {
 namespace {
 
 namespace vis = ts::visibility;
@@ -382,4 +382,4 @@ TEST_F(GpuRenderBackendTest, FramesMatchTheCpuPaths) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::render_backend_agreement

@@ -20,7 +20,7 @@ namespace ts::gpu::embedded {
 extern const SpirvBlob sh_agreement_comp;  // tests/gpu/shaders/sh_agreement.comp, embedded by CMake
 }
 
-namespace ts::gpu {
+namespace ts::gpu::sh_agreement {
 namespace {
 
 namespace shared = ts::sh::shared;
@@ -203,4 +203,4 @@ TEST_F(ShAgreementTest, RealisticLogEpsilon) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::sh_agreement

@@ -23,7 +23,7 @@ namespace ts::gpu::embedded {
 extern const SpirvBlob sphere_occlusion_agreement_comp;  // tests/gpu/shaders/sphere_occlusion_agreement.comp
 }
 
-namespace ts::gpu {
+namespace ts::gpu::sphere_occlusion_agreement {
 namespace {
 
 struct Push {
@@ -125,4 +125,4 @@ TEST_F(SphereOcclusionAgreementTest, SunAndSkyCoversAgreeWithTheCpu) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::sphere_occlusion_agreement

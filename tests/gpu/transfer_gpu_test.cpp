@@ -24,7 +24,7 @@
 #include "tests/gpu/transfer_agreement.hpp"
 #include "tests/gpu/validated_context.hpp"
 
-namespace ts::gpu {
+namespace ts::gpu::transfer_agreement {
 namespace {
 
 namespace vis = ts::visibility;
@@ -293,4 +293,4 @@ TEST_F(GpuTransferTest, OnlyTheHybridMethodRunsOnTheGpu) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::transfer_agreement

@@ -26,7 +26,7 @@
 #include "tests/gpu/validated_context.hpp"
 #include "tests/visibility/synthetic_terrain.hpp"
 
-namespace ts::gpu {
+namespace ts::gpu::visibility_agreement {
 namespace {
 
 namespace vis = ts::visibility;
@@ -415,4 +415,4 @@ TEST_F(GpuVisibilityTest, WholeTileAgrees) {
 }
 
 }  // namespace
-}  // namespace ts::gpu
+}  // namespace ts::gpu::visibility_agreement

@@ -11,10 +11,11 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "core/dem/read_dem.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace ts::cli_test {
 namespace {
@@ -35,29 +36,24 @@ struct Picture {
 
 Picture read_picture(const fs::path& p) {
     Picture pic;
-    auto in = OIIO::ImageInput::open(p.string());
-    EXPECT_TRUE(in) << p;
-    if (!in) return pic;
-    pic.width = in->spec().width, pic.height = in->spec().height;
-    const int ch = in->spec().nchannels;
-    std::vector<unsigned char> px(std::size_t(pic.width) * std::size_t(pic.height) * std::size_t(ch));
-    in->read_image(0, 0, 0, ch, OIIO::TypeDesc::UINT8, px.data());
-    for (std::size_t i = 0; i < std::size_t(pic.width) * std::size_t(pic.height); ++i) {
-        const unsigned char* q = &px[i * std::size_t(ch)];
-        pic.r.push_back(linear(q[0])), pic.g.push_back(linear(q[1])), pic.b.push_back(linear(q[2]));
-        pic.y.push_back(0.2126 * pic.r.back() + 0.7152 * pic.g.back() + 0.0722 * pic.b.back());
-    }
+    const Pixels px = read_pixels(p);
+    EXPECT_GE(px.channels, 3) << p;
+    if (px.channels < 3) return pic;
+    pic.width = px.width, pic.height = px.height;
+    for (int r = 0; r < px.height; ++r)
+        for (int c = 0; c < px.width; ++c) {
+            pic.r.push_back(linear(px.at(c, r, 0))), pic.g.push_back(linear(px.at(c, r, 1)));
+            pic.b.push_back(linear(px.at(c, r, 2)));
+            pic.y.push_back(0.2126 * pic.r.back() + 0.7152 * pic.g.back() + 0.0722 * pic.b.back());
+        }
     return pic;
 }
 
-// The shipped DEM's heights in metres (Int16 samples: read as such, not normalised to 0..1).
+// The shipped DEM's heights in metres (it has no voids).
 std::vector<double> dem_heights() {
-    auto in = OIIO::ImageInput::open(kDem);
-    EXPECT_TRUE(in);
-    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::INT16);
-    std::vector<std::int16_t> z(std::size_t(in->spec().width) * std::size_t(in->spec().height));
-    in->read_image(0, 0, 0, 1, OIIO::TypeDesc::INT16, z.data());
-    return {z.begin(), z.end()};
+    const dem::Dem dem = dem::read_dem(kDem);
+    EXPECT_EQ(dem.void_count(), 0u);
+    return {dem.z.begin(), dem.z.end()};
 }
 
 double correlation(const std::vector<double>& a, const std::vector<double>& b) {

@@ -11,7 +11,6 @@
 
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"

@@ -3,7 +3,6 @@
 // in a child whose peak RSS is measured, and `--stream off` on the same file is refused at once
 // instead of shading tens of gigabytes. Also `bench dem`'s file itself: its tags, and heights
 // equal to the one definition of the noise (app/bench/synthetic_mosaic.cpp), and its bad flags.
-#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,22 +1,29 @@
 #pragma once
-// A written picture's bytes (OpenImageIO), for the CLI tests of commands that write pictures.
+// A written picture's samples, for the CLI tests of commands that write pictures. Read through
+// terrashade's own image module (core/raster/image_io_plugin: OpenImageIO, loaded on first use)
+// rather than by linking OpenImageIO: every test case runs in its own process, and loading
+// OpenImageIO's ~260 shared libraries at start-up cost each of them 0.3 s.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <exception>
 #include <filesystem>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+
+#include "core/raster/image_io_plugin/float_image_io.hpp"
 
 namespace ts::cli_test {
 
-inline std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
-    auto in = OIIO::ImageInput::open(p.string());
-    EXPECT_TRUE(in) << p;
-    if (!in) return {};
-    w = in->spec().width, h = in->spec().height;
-    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
-    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
-    return px;
+// Every channel of a picture as floats (integer samples scaled to 0..1, as OpenImageIO scales
+// them); empty (width 0) if it cannot be read.
+inline raster::FloatPixels read_float_pixels(const std::filesystem::path& path) {
+    try {
+        return raster::read_float_pixels(path);
+    } catch (const std::exception&) {
+        return {};
+    }
 }
 
 // Every channel of a picture, 8-bit, interleaved; empty (width 0) if it cannot be read.
@@ -28,14 +35,29 @@ struct Pixels {
     }
 };
 
+// 8-bit samples as OpenImageIO converts to them: clamped to 0..1, scaled and rounded (an 8-bit
+// file's codes come back unchanged).
 inline Pixels read_pixels(const std::filesystem::path& path) {
+    const raster::FloatPixels f = read_float_pixels(path);
     Pixels p;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return p;
-    p.width = in->spec().width, p.height = in->spec().height, p.channels = in->spec().nchannels;
-    p.data.resize(std::size_t(p.width) * std::size_t(p.height) * std::size_t(p.channels));
-    in->read_image(0, 0, 0, p.channels, OIIO::TypeDesc::UINT8, p.data.data());
+    p.width = f.width, p.height = f.height, p.channels = f.channels;
+    p.data.resize(f.data.size());
+    for (std::size_t i = 0; i < f.data.size(); ++i)
+        p.data[i] = (unsigned char)std::lround(std::clamp(double(f.data[i]), 0.0, 1.0) * 255.0);
     return p;
+}
+
+// The first three channels, 8-bit (a grey picture's one channel three times).
+inline std::vector<unsigned char> read_rgb(const std::filesystem::path& path, int& w, int& h) {
+    const Pixels p = read_pixels(path);
+    EXPECT_GT(p.width, 0) << path << " cannot be read as a picture";
+    w = p.width, h = p.height;
+    if (p.channels == 0) return {};
+    std::vector<unsigned char> rgb(std::size_t(w) * std::size_t(h) * 3);
+    const std::size_t n = std::size_t(p.channels);
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
+        for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = p.data[i * n + (n >= 3 ? c : 0)];
+    return rgb;
 }
 
 }  // namespace ts::cli_test

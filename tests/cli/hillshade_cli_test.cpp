@@ -23,16 +23,18 @@
 #include <vector>
 
 #include <GeographicLib/Geodesic.hpp>
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 // Runs a shell command (terrashade or a GDAL oracle).
+using ts::cli_test::Pixels;
+using ts::cli_test::read_pixels;
 using ts::cli_test::Result;
 using ts::cli_test::kSharedDems;
 using ts::cli_test::run;
@@ -45,15 +47,12 @@ struct Image {
 };
 
 Image read_image(const fs::path& path) {
+    Pixels p = read_pixels(path);
     Image img;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return img;
-    const OIIO::ImageSpec& spec = in->spec();
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.pixels.resize(std::size_t(img.width) * std::size_t(img.height) * std::size_t(img.channels));
-    in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::UINT8, img.pixels.data());
+    img.width = p.width;
+    img.height = p.height;
+    img.channels = p.channels;
+    img.pixels = std::move(p.data);
     return img;
 }
 

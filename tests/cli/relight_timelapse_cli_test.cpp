@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace ts::cli_test {
 namespace {
@@ -46,15 +46,12 @@ std::vector<CsvRow> read_times_csv(const std::filesystem::path& p) {
 
 // Mean of the 8-bit channels (0..255) of a PNG.
 double mean_code(const std::filesystem::path& p) {
-    auto in = OIIO::ImageInput::open(p.string());
-    EXPECT_TRUE(in) << p;
-    if (!in) return -1;
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<unsigned char> px(std::size_t(spec.width) * spec.height * spec.nchannels);
-    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, px.data());
+    const Pixels px = read_pixels(p);
+    EXPECT_GT(px.width, 0) << p;
+    if (px.width == 0) return -1;
     double sum = 0;
-    for (unsigned char c : px) sum += c;
-    return sum / double(px.size());
+    for (unsigned char c : px.data) sum += c;
+    return sum / double(px.data.size());
 }
 
 TEST(RelightTimeLapse, NamesCarryTheInstantAndTimesCsvListsEveryFrame) {

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <string>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace ts::cli_test {
 namespace {
@@ -57,15 +57,6 @@ TEST(RenderCli, MapTifIsGeoreferencedAndSunVisibilityInRange) {
     // A low sun over the Alps: some texels in shadow, some lit.
     EXPECT_LT(s["minimum"].get<double>(), 0.01);
     EXPECT_GT(s["maximum"].get<double>(), 0.99);
-}
-
-std::vector<unsigned char> read_rgb(const std::filesystem::path& p, int& w, int& h) {
-    auto in = OIIO::ImageInput::open(p.string());
-    if (!in) return {};
-    w = in->spec().width, h = in->spec().height;
-    std::vector<unsigned char> px(std::size_t(w) * std::size_t(h) * 3);
-    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data());
-    return px;
 }
 
 // A map .tif is a Cloud-Optimized GeoTIFF: gdalinfo reports the COG layout, 256-px blocks,

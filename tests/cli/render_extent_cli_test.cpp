@@ -12,9 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace fs = std::filesystem;
 
@@ -36,12 +35,10 @@ struct Image {
     std::vector<float> px;
 };
 Image read(const fs::path& path) {
+    ts::raster::FloatPixels f = ts::cli_test::read_float_pixels(path);
     Image im;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return im;
-    im.width = in->spec().width, im.height = in->spec().height, im.channels = in->spec().nchannels;
-    im.px.resize(std::size_t(im.width) * im.height * im.channels);
-    if (!in->read_image(0, 0, 0, im.channels, OIIO::TypeDesc::FLOAT, im.px.data())) im.px.clear();
+    im.width = f.width, im.height = f.height, im.channels = f.channels;
+    im.px = std::move(f.data);
     return im;
 }
 

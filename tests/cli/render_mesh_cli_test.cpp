@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 #include "tests/support/shared_data.hpp"
 
 namespace ts::cli_test {
@@ -27,14 +27,11 @@ struct Image {
 };
 
 Image read_png(const std::filesystem::path& p) {
+    Pixels px = read_pixels(p);
+    EXPECT_GT(px.width, 0) << p;
     Image img;
-    auto in = OIIO::ImageInput::open(p.string());
-    EXPECT_TRUE(in) << p;
-    if (!in) return img;
-    const OIIO::ImageSpec& spec = in->spec();
-    img.w = spec.width, img.h = spec.height, img.channels = spec.nchannels;
-    img.px.resize(std::size_t(img.w) * img.h * img.channels);
-    in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::UINT8, img.px.data());
+    img.w = px.width, img.h = px.height, img.channels = px.channels;
+    img.px = std::move(px.data);
     return img;
 }
 

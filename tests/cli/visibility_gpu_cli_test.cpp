@@ -8,10 +8,9 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "core/dem/read_dem.hpp"
 #include "tests/cli/cli_support.hpp"
+#include "tests/cli/frame_pixels.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,15 +24,11 @@ using ts::cli_test::run_ts;
 // 121 x 121 texels of the Gabon tile (as visibility_cli_test.cpp).
 const std::string kWindow = "visibility " + kSharedDems + "N00E010.hgt --crop 10.45,0.45,10.55,0.55";
 
-// Every band of a float GeoTIFF, band-interleaved by pixel as OIIO reads it.
+// Every band of a float GeoTIFF, band-interleaved by pixel.
 std::vector<float> read_all_bands(const fs::path& path, int& bands) {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) return {};
-    const auto& spec = in->spec();
-    bands = spec.nchannels;
-    std::vector<float> v(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(bands));
-    if (!in->read_image(0, 0, 0, bands, OIIO::TypeDesc::FLOAT, v.data())) return {};
-    return v;
+    ts::raster::FloatPixels f = ts::cli_test::read_float_pixels(path);
+    bands = f.channels;
+    return std::move(f.data);
 }
 
 double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {

@@ -26,7 +26,7 @@ namespace {
 // static state that must outlive any caller).
 struct Plugin {
     fs::path path;
-    decltype(&ts_image_io_read_float_rgb) read = nullptr;
+    decltype(&ts_image_io_read_float) read = nullptr;
     decltype(&ts_image_io_free) free_pixels = nullptr;
     decltype(&ts_image_io_write_exr) write_exr = nullptr;
     std::string error;  // why it could not be loaded (empty when loaded)
@@ -63,7 +63,7 @@ Plugin load_plugin() {
         }
         using AbiFn = decltype(&ts_image_io_abi_version);
         auto abi = reinterpret_cast<AbiFn>(::dlsym(handle, "ts_image_io_abi_version"));
-        plugin.read = reinterpret_cast<decltype(plugin.read)>(::dlsym(handle, "ts_image_io_read_float_rgb"));
+        plugin.read = reinterpret_cast<decltype(plugin.read)>(::dlsym(handle, "ts_image_io_read_float"));
         plugin.free_pixels = reinterpret_cast<decltype(plugin.free_pixels)>(::dlsym(handle, "ts_image_io_free"));
         plugin.write_exr = reinterpret_cast<decltype(plugin.write_exr)>(::dlsym(handle, "ts_image_io_write_exr"));
         if (abi == nullptr || plugin.read == nullptr || plugin.free_pixels == nullptr || plugin.write_exr == nullptr ||
@@ -99,22 +99,39 @@ fs::path image_io_plugin_path() {
     return require_plugin().path;
 }
 
-FloatImage read_float_image(const fs::path& path) {
+FloatPixels read_float_pixels(const fs::path& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) throw input_error(path.string(), "no such file");
     const Plugin& p = require_plugin();
     std::array<char, 512> error{};
     int width = 0;
     int height = 0;
+    int channels = 0;
     float* pixels = nullptr;
-    if (p.read(path.c_str(), &width, &height, &pixels, error.data(), error.size()) != 0 || pixels == nullptr) {
+    if (p.read(path.c_str(), &width, &height, &channels, &pixels, error.data(), error.size()) != 0 ||
+        pixels == nullptr) {
         throw input_error(path.string(), std::string("cannot read image: ") + error.data());
     }
     std::unique_ptr<float, decltype(p.free_pixels)> owned(pixels, p.free_pixels);
-    FloatImage image;
+    FloatPixels image;
     image.width = width;
     image.height = height;
-    image.rgb.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+    image.channels = channels;
+    image.data.assign(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
+                                           static_cast<std::size_t>(channels));
+    return image;
+}
+
+FloatImage read_float_image(const fs::path& path) {
+    const FloatPixels in = read_float_pixels(path);
+    const std::size_t count = static_cast<std::size_t>(in.width) * static_cast<std::size_t>(in.height);
+    const std::size_t nch = static_cast<std::size_t>(in.channels);
+    FloatImage image;
+    image.width = in.width;
+    image.height = in.height;
+    image.rgb.resize(count * 3);
+    for (std::size_t p = 0; p < count; ++p)
+        for (std::size_t c = 0; c < 3; ++c) image.rgb[p * 3 + c] = in.data[p * nch + (nch >= 3 ? c : 0)];
     return image;
 }
 

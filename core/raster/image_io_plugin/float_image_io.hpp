@@ -22,6 +22,19 @@ struct FloatImage {
     }
 };
 
+// Every channel of an image as interleaved floats, row-major from the top row; integer samples
+// scaled as OpenImageIO scales them (0..1 for unsigned ones: an 8-bit code k is k / 255).
+struct FloatPixels {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<float> data;  // width * height * channels
+};
+
+// Reads the first subimage of any image OpenImageIO reads, every channel. Throws ts::InputError
+// "path: problem" for a missing or unreadable file or a missing image module.
+FloatPixels read_float_pixels(const std::filesystem::path& path);
+
 // Reads any image OpenImageIO reads (.exr, .hdr, ...) as float RGB (grey replicated, alpha
 // dropped). Throws ts::InputError "path: problem" for a missing or unreadable file or a missing
 // image module.

@@ -6,7 +6,6 @@
 #include <exception>
 #include <limits>
 #include <string>
-#include <vector>
 
 #include "core/raster/image_io_plugin/image_io_plugin_api.h"
 
@@ -34,8 +33,9 @@ __attribute__((visibility("default"))) int ts_image_io_abi_version(void) {
     return TS_IMAGE_IO_PLUGIN_ABI;
 }
 
-__attribute__((visibility("default"))) int ts_image_io_read_float_rgb(const char* path, int* width, int* height,
-                                                                      float** pixels, char* error, size_t error_size) {
+__attribute__((visibility("default"))) int ts_image_io_read_float(const char* path, int* width, int* height,
+                                                                  int* channels, float** pixels, char* error,
+                                                                  size_t error_size) {
     try {
         *pixels = nullptr;
         auto in = OIIO::ImageInput::open(path);
@@ -54,22 +54,16 @@ __attribute__((visibility("default"))) int ts_image_io_read_float_rgb(const char
         if (count > (std::numeric_limits<size_t>::max() / 4) / sizeof(float) / static_cast<size_t>(nch)) {
             return fail(error, error_size, "image too large");
         }
-        const int read_channels = nch >= 3 ? 3 : 1;
-        std::vector<float> raw(count * static_cast<size_t>(read_channels));
-        if (!in->read_image(0, 0, 0, read_channels, OIIO::TypeDesc::FLOAT, raw.data())) {
+        auto* out = static_cast<float*>(std::malloc(count * static_cast<size_t>(nch) * sizeof(float)));
+        if (out == nullptr) return fail(error, error_size, "out of memory");
+        if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, out)) {
+            std::free(out);
             return fail(error, error_size, in->geterror());
         }
         in->close();
-        auto* out = static_cast<float*>(std::malloc(count * 3 * sizeof(float)));
-        if (out == nullptr) return fail(error, error_size, "out of memory");
-        for (size_t p = 0; p < count; ++p) {
-            for (int c = 0; c < 3; ++c) {
-                out[p * 3 + static_cast<size_t>(c)] =
-                    raw[p * static_cast<size_t>(read_channels) + static_cast<size_t>(read_channels == 3 ? c : 0)];
-            }
-        }
         *width = w;
         *height = h;
+        *channels = nch;
         *pixels = out;
         return 0;
     } catch (const std::exception& e) {

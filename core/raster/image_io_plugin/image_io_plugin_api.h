@@ -11,17 +11,18 @@
 extern "C" {
 #endif
 
-#define TS_IMAGE_IO_PLUGIN_ABI 1
+#define TS_IMAGE_IO_PLUGIN_ABI 2
 
 /* The ABI version the module was built for (TS_IMAGE_IO_PLUGIN_ABI). */
 int ts_image_io_abi_version(void);
 
-/* Reads the first subimage of `path` as interleaved float RGB, top row first: grey images are
- * replicated, a fourth and further channels dropped. On success *pixels is a malloc'ed block of
- * width*height*3 floats (release with ts_image_io_free) and 0 is returned; on failure a nonzero
- * value and a one-line message in error (NUL-terminated, truncated to error_size). */
-int ts_image_io_read_float_rgb(const char* path, int* width, int* height, float** pixels, char* error,
-                               size_t error_size);
+/* Reads the first subimage of `path`, every channel, as interleaved floats, top row first
+ * (integer samples scaled as OpenImageIO scales them: 0..1 for unsigned ones). On success
+ * *pixels is a malloc'ed block of width*height*channels floats (release with ts_image_io_free)
+ * and 0 is returned; on failure a nonzero value and a one-line message in error
+ * (NUL-terminated, truncated to error_size). */
+int ts_image_io_read_float(const char* path, int* width, int* height, int* channels, float** pixels, char* error,
+                           size_t error_size);
 
 void ts_image_io_free(float* pixels);
 

@@ -10,8 +10,8 @@
 #   (hgt hgt_zip geotiff mesh_file mesh_scene)
 #
 # New inputs that reach new code are written to build/fuzz/corpus/<reader>/, not to the
-# committed seeds. FUZZ_JOBS=N runs N processes per target (default 1); the targets themselves run
-# FUZZ_PARALLEL at a time (default: one per core).
+# committed seeds. FUZZ_JOBS=N runs N processes per target (default 1); the targets share
+# FUZZ_PARALLEL cores (default: every core), each target fuzzed for its seconds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET="${1:-60}"
@@ -36,18 +36,19 @@ targets=()
 for r in "${READERS[@]}"; do targets+=("fuzz_$r"); done
 cmake --build "$BUILD" --target "${targets[@]}" -j"${FUZZ_BUILD_JOBS:-$(nproc)}"
 
-# One target's run; its lines go to the terminal as whole lines, its log to build/fuzz/fuzz_R.log.
+# One run of a target for SECONDS; its lines go to the terminal as whole lines, its log to
+# build/fuzz/fuzz_R.log (a target run in two pieces appends the second).
 fuzz_one() {
-  local r="$1"
+  local r="$1" seconds="$2"
   corpus="$BUILD/corpus/$r"
   artifacts="$BUILD/artifacts/$r"
   mkdir -p "$corpus" "$artifacts"
   log="$BUILD/fuzz_$r.log"
-  echo "fuzz: $r for ${SECONDS_PER_TARGET}s (log $log)"
+  echo "fuzz: $r for ${seconds}s (log $log)"
   # -timeout: one input taking over 10 s is a hang. The readers' memory guard is capped at
   # 32 MB while fuzzing (dem_fuzz_inputs.hpp), so one allocation over 128 MB is a reader
   # spending before it checked (-malloc_limit_mb), and 2 GB resident a leak (-rss_limit_mb).
-  args=(-max_total_time="$SECONDS_PER_TARGET" -timeout=10 -malloc_limit_mb=128 -rss_limit_mb=2048 -print_final_stats=1
+  args=(-max_total_time="$seconds" -timeout=10 -malloc_limit_mb=128 -rss_limit_mb=2048 -print_final_stats=1
         -artifact_prefix="$artifacts/")
   # Several jobs log to fuzz-N.log in the current folder: run them from the artifacts folder.
   # mesh_file imports each input in a child process (core/util/isolated_call.hpp), which
@@ -59,7 +60,7 @@ fuzz_one() {
   if [ -f "tests/fuzz/$r.dict" ]; then args+=(-dict="$ROOT/tests/fuzz/$r.dict"); fi
   if [ "$JOBS" -gt 1 ]; then args+=(-jobs="$JOBS" -workers="$JOBS"); fi
   if ! (cd "$artifacts" && "$BUILD/tests/fuzz/fuzz_$r" "${args[@]}" "$corpus" "$ROOT/tests/fuzz/corpus/$r") \
-      >"$log" 2>&1; then
+      >>"$log" 2>&1; then
     echo "fuzz: $r FAILED; inputs in $artifacts:" >&2
     ls -1 "$artifacts" | grep -E "^(crash|leak|oom|timeout|slow-unit)-" >&2 || true
     grep -m1 -E "ERROR: |runtime error" "$log" >&2 || tail -5 "$log" >&2
@@ -69,18 +70,34 @@ fuzz_one() {
   fi
 }
 
-# The targets run side by side, one per core (FUZZ_PARALLEL, default the core count): each is
-# one single-threaded process, so two cores fuzz two targets in the time of one.
+# The targets share the cores (FUZZ_PARALLEL, default the core count) so that each fuzzes for its
+# seconds and the cores end together: laid end to end on one timeline cut into equal spans, one
+# span a core (McNaughton's wrap-around rule). A target cut at a span's end runs its two pieces on
+# two cores at times that do not overlap, the second from the corpus the first grew. Five targets
+# on two cores: 2.5 targets' time, not 3 rounds with one core idle in the last.
 PARALLEL="${FUZZ_PARALLEL:-$(nproc)}"
+count="${#READERS[@]}"
+[ "$PARALLEL" -le "$count" ] || PARALLEL="$count"
+span=$(( (count * SECONDS_PER_TARGET + PARALLEL - 1) / PARALLEL ))
 status_dir="$BUILD/status"
 rm -rf "$status_dir" && mkdir -p "$status_dir"
-for r in "${READERS[@]}"; do
-  while [ "$(jobs -rp | wc -l)" -ge "$PARALLEL" ]; do wait -n || true; done
-  ( if fuzz_one "$r"; then echo 0 > "$status_dir/$r"; else echo 1 > "$status_dir/$r"; fi ) &
+for r in "${READERS[@]}"; do : > "$BUILD/fuzz_$r.log"; done
+for ((core = 0; core < PARALLEL; ++core)); do
+  (
+    from=$(( core * span )); to=$(( (core + 1) * span ))
+    for ((i = 0; i < count; ++i)); do
+      begin=$(( i * SECONDS_PER_TARGET )); end=$(( (i + 1) * SECONDS_PER_TARGET ))
+      (( begin < from )) && begin=$from
+      (( end > to )) && end=$to
+      (( end > begin )) || continue
+      r="${READERS[$i]}"
+      if fuzz_one "$r" $(( end - begin )); then :; else echo 1 > "$status_dir/$r.$core"; fi
+    done
+  ) &
 done
 wait
 status=0
 for r in "${READERS[@]}"; do
-  [ "$(cat "$status_dir/$r" 2>/dev/null)" = 0 ] || status=1
+  if compgen -G "$status_dir/$r.*" >/dev/null; then status=1; fi
 done
 exit "$status"

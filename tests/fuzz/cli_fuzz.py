@@ -18,7 +18,7 @@ It must:
 
 Usage: cli_fuzz.py TERRASHADE_BIN SOURCE_DIR [--seconds S] [--seed N] [--timeout T]
                    [--commands info,render,...] [--replay 'ARGS...'] [--keep]
-Environment: TERRASHADE_CLI_FUZZ_SECONDS (default 75) and TERRASHADE_CLI_FUZZ_SEED (default 31;
+Environment: TERRASHADE_CLI_FUZZ_SECONDS (default 60) and TERRASHADE_CLI_FUZZ_SEED (default 31;
 "random" for a new one, printed) override the defaults, for longer runs and replays. Exit status 0 if every
 invocation passed, 1 with each finding (its seed, command line and what went wrong) otherwise.
 Dependency-free: Python 3 standard library only.
@@ -672,7 +672,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("binary")
     ap.add_argument("source_dir")
-    ap.add_argument("--seconds", type=float, default=float(os.environ.get("TERRASHADE_CLI_FUZZ_SECONDS", 75)))
+    ap.add_argument("--seconds", type=float, default=float(os.environ.get("TERRASHADE_CLI_FUZZ_SECONDS", 60)))
     ap.add_argument("--seed", type=int, default=None)
     ap.add_argument("--timeout", type=float, default=20.0)
     ap.add_argument("--commands", default="")

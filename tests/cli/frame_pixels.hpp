@@ -26,6 +26,22 @@ inline raster::FloatPixels read_float_pixels(const std::filesystem::path& path) 
     }
 }
 
+// A picture's first three channels as floats (a grey picture's one channel three times), as
+// terrashade reads pictures; empty (width 0) if it cannot be read.
+inline raster::FloatImage read_float_rgb(const std::filesystem::path& path) {
+    try {
+        return raster::read_float_image(path);
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+// An 8-bit code as OpenImageIO converts a float to one: clamped to 0..1, scaled and rounded (an
+// 8-bit file's codes come back unchanged).
+inline unsigned char to_code(float v) {
+    return (unsigned char)std::lround(std::clamp(double(v), 0.0, 1.0) * 255.0);
+}
+
 // Every channel of a picture, 8-bit, interleaved; empty (width 0) if it cannot be read.
 struct Pixels {
     int width = 0, height = 0, channels = 0;
@@ -35,28 +51,22 @@ struct Pixels {
     }
 };
 
-// 8-bit samples as OpenImageIO converts to them: clamped to 0..1, scaled and rounded (an 8-bit
-// file's codes come back unchanged).
 inline Pixels read_pixels(const std::filesystem::path& path) {
     const raster::FloatPixels f = read_float_pixels(path);
     Pixels p;
     p.width = f.width, p.height = f.height, p.channels = f.channels;
     p.data.resize(f.data.size());
-    for (std::size_t i = 0; i < f.data.size(); ++i)
-        p.data[i] = (unsigned char)std::lround(std::clamp(double(f.data[i]), 0.0, 1.0) * 255.0);
+    std::transform(f.data.begin(), f.data.end(), p.data.begin(), to_code);
     return p;
 }
 
 // The first three channels, 8-bit (a grey picture's one channel three times).
 inline std::vector<unsigned char> read_rgb(const std::filesystem::path& path, int& w, int& h) {
-    const Pixels p = read_pixels(path);
-    EXPECT_GT(p.width, 0) << path << " cannot be read as a picture";
-    w = p.width, h = p.height;
-    if (p.channels == 0) return {};
-    std::vector<unsigned char> rgb(std::size_t(w) * std::size_t(h) * 3);
-    const std::size_t n = std::size_t(p.channels);
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
-        for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = p.data[i * n + (n >= 3 ? c : 0)];
+    const raster::FloatImage f = read_float_rgb(path);
+    EXPECT_GT(f.width, 0) << path << " cannot be read as a picture";
+    w = f.width, h = f.height;
+    std::vector<unsigned char> rgb(f.rgb.size());
+    std::transform(f.rgb.begin(), f.rgb.end(), rgb.begin(), to_code);
     return rgb;
 }
 

@@ -33,14 +33,9 @@ using ts::cli_test::kNoVulkan;
 
 // The first three channels as floats (0..1 for an 8-bit picture).
 std::vector<float> read_rgb_float(const fs::path& path, int& width) {
-    const ts::raster::FloatPixels f = ts::cli_test::read_float_pixels(path);
+    ts::raster::FloatImage f = ts::cli_test::read_float_rgb(path);
     width = f.width;
-    if (f.channels < 3) return {};
-    const std::size_t n = std::size_t(f.channels), count = std::size_t(f.width) * std::size_t(f.height);
-    std::vector<float> v(count * 3);
-    for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t c = 0; c < 3; ++c) v[i * 3 + c] = f.data[i * n + c];
-    return v;
+    return std::move(f.rgb);
 }
 
 class RenderGpuCli : public ::testing::Test {

@@ -11,9 +11,6 @@
 namespace ts::app {
 namespace {
 
-// The stops of "inferno" sampled at 0, .25, .5, .75, 1.
-constexpr float kInferno[5][3] = {{0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}};
-
 void text(std::vector<std::uint8_t>& img, int width, int height, int x0, int y0, const std::string& s) {
     for (std::size_t k = 0; k < s.size(); ++k)
         for (int y = 0; y < fly::kGlyphRows; ++y)
@@ -32,18 +29,6 @@ std::string number(float v) {
 }
 
 }  // namespace
-
-void inferno_ramp(float x, std::uint8_t* rgb) {
-    x = std::clamp(x, 0.0f, 1.0f) * 4.0f;
-    const int i = std::min(3, int(x));
-    const float f = x - float(i);
-    for (int c = 0; c < 3; ++c)
-        rgb[c] = std::uint8_t(std::lround(kInferno[i][c] + f * (kInferno[i + 1][c] - kInferno[i][c])));
-}
-
-void grey_ramp(float x, std::uint8_t* rgb) {
-    rgb[0] = rgb[1] = rgb[2] = std::uint8_t(1.5f + std::clamp(x, 0.0f, 1.0f) * 254.0f);
-}
 
 int legend_height() { return 4 + fly::kLineAdvance + 10 + 2 + fly::kLineAdvance; }
 

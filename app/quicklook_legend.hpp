@@ -7,14 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "core/raster/colour_ramp.hpp"
+
 namespace ts::app {
 
-// A ramp: x in [0, 1] to 8-bit RGB.
-using Ramp = void (*)(float x, std::uint8_t* rgb);
-// matplotlib's "inferno" (a public colour map) through five stops: for energies.
-void inferno_ramp(float x, std::uint8_t* rgb);
-// Grey 1..255, as the fraction quick-looks are stretched.
-void grey_ramp(float x, std::uint8_t* rgb);
+using raster::grey_ramp;
+using raster::inferno_ramp;
+using raster::Ramp;
 
 struct Legend {
     std::string title;  // what the picture shows, e.g. "sky view factor"

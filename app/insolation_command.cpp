@@ -11,10 +11,12 @@
 
 #include "app/command.hpp"
 #include "app/compute_device.hpp"
+#include "app/dem_sun_tables.hpp"
 #include "app/dem_input.hpp"
 #include "app/insolation_quicklook.hpp"
 #include "app/io_plan.hpp"
 #include "app/job_memory.hpp"
+#include "app/options/insolation_options.hpp"
 #include "app/options/threads_option.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/solar/insolation_map.hpp"
@@ -34,11 +36,8 @@ namespace {
 
 struct InsolationOptions {
     DemInput dem;
-    int year = 0;  // 0: not given
-    std::string from, to, by = "year";
-    double linke = 3.0;
-    std::vector<double> linke_monthly;
-    double albedo = 0.2, clear_sky_index = 1.0, step_minutes = 2.0;
+    InsolationArgs sun;
+    std::string by = "year";
     double band_step_deg = 0.05, level_step_m = 1000.0;
     int directions = 64, bins_per_direction = 4;
     int threads = 0;
@@ -50,36 +49,13 @@ constexpr int kMaxBands = 2000;  // --by day over ~a year at most (5 quantities 
 
 // Everything a user can get wrong, before the DEM is read.
 solar::InsolationSettings check_options(const InsolationOptions& o) {
-    solar::CalendarDate first, last;
-    if (o.year != 0) {
-        if (!o.from.empty() || !o.to.empty()) throw InputError("--year: give either --year or --from/--to, not both");
-        if (o.year < 1 || o.year > 5999) throw InputError("--year " + std::to_string(o.year) + ": must be in 1..5999");
-        first = {o.year, 1, 1}, last = {o.year, 12, 31};
-    } else {
-        if (o.from.empty() || o.to.empty()) throw InputError("insolation: give --year Y, or --from DATE and --to DATE");
-        first = solar::parse_calendar_date(o.from, "--from");
-        last = solar::parse_calendar_date(o.to, "--to");
-        if (first.year > 5999 || last.year > 5999) throw InputError("--from/--to: years must be in 1..5999");
-    }
-    solar::InsolationSettings s;
+    const auto [first, last] = insolation_dates(o.sun);
+    solar::InsolationSettings s = insolation_settings(o.sun);
     s.periods = solar::make_periods(first, last, solar::parse_period_split(o.by), 0.0);
     if (s.periods.size() * solar::kQuantities > std::size_t(kMaxBands))
         throw InputError("insolation: " + std::to_string(s.periods.size()) + " periods would make " +
                          std::to_string(s.periods.size() * solar::kQuantities) + " bands (at most " +
                          std::to_string(kMaxBands) + "); use a coarser --by or a shorter range");
-    if (!o.linke_monthly.empty()) {
-        if (o.linke_monthly.size() != 12)
-            throw InputError("--linke-monthly: needs 12 values (January..December), got " +
-                             std::to_string(o.linke_monthly.size()));
-        std::copy(o.linke_monthly.begin(), o.linke_monthly.end(), s.linke_monthly.begin());
-    } else {
-        s.linke_monthly.fill(o.linke);
-    }
-    for (double tl : s.linke_monthly)
-        if (!(tl > 0) || tl > 10) throw InputError("Linke turbidity " + std::to_string(tl) + ": must be in (0, 10]");
-    s.albedo = o.albedo;
-    s.clear_sky_index = o.clear_sky_index;
-    s.step_minutes = o.step_minutes;
     s.azimuth_bins = o.directions * o.bins_per_direction;
     s.svf_stride = o.bins_per_direction;
     s.threads = o.threads;
@@ -112,24 +88,6 @@ void run_insolation(InsolationOptions& o) {
                      visibility_peak_bytes(texels, o.directions, false) + texels * (bands * 8 + 16),
                      "use --crop, a coarser --by, or fewer --directions");
     const terrain::HeightGrid grid = terrain::metric_view(dem);
-    // The clock of days and months: mean solar time at the DEM's centre.
-    const glm::dvec2 centre = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5);
-    if (!std::isfinite(centre.x) || !std::isfinite(centre.y))
-        throw InputError(dem.source + ": its CRS gives no longitude and latitude");
-    settings.clock_longitude_deg = centre.x;
-    const solar::CalendarDate first =
-        o.year ? solar::CalendarDate{o.year, 1, 1} : solar::parse_calendar_date(o.from, "--from");
-    const solar::CalendarDate last =
-        o.year ? solar::CalendarDate{o.year, 12, 31} : solar::parse_calendar_date(o.to, "--to");
-    settings.periods = solar::make_periods(first, last, solar::parse_period_split(o.by), centre.x);
-    const std::vector<float> latitude = solar::texel_latitudes(dem.georef, o.threads);
-    float lat_min = 90, lat_max = -90, z_min = 1e30f, z_max = -1e30f;
-    for (std::size_t i = 0; i < latitude.size(); ++i) {
-        lat_min = std::min(lat_min, latitude[i]), lat_max = std::max(lat_max, latitude[i]);
-        if (std::isfinite(dem.z[i])) z_min = std::min(z_min, dem.z[i]), z_max = std::max(z_max, dem.z[i]);
-    }
-    if (!(z_max >= z_min)) z_min = z_max = 0;
-
     // Horizons.
     const ComputeDevice device(o.device);
     visibility::VisibilityRequest request;
@@ -144,31 +102,16 @@ void run_insolation(InsolationOptions& o) {
     const render::NormalField normals = render::terrain_normals(grid, o.threads);
 
     // The period's sun: tables per latitude band and elevation level.
-    const Stopwatch t_tables;
-    // The tables hold a few MB per latitude band and elevation level (a year: ~2.5 MB at 256
-    // bins); a DEM spanning many degrees or kilometres gets coarser bands and levels, said.
-    constexpr int kMaxLevels = 8, kMaxTableGroups = 160;
-    double level_step = o.level_step_m, band_step = o.band_step_deg;
-    if ((z_max - z_min) / level_step > kMaxLevels - 1) level_step = (z_max - z_min) / (kMaxLevels - 1);
-    const int n_levels = (z_max - z_min) > 1e-9 ? int(std::ceil((z_max - z_min) / level_step - 1e-9)) + 1 : 1;
-    const int max_bands = std::max(1, kMaxTableGroups / n_levels);
-    if ((lat_max - lat_min) / band_step > max_bands - 1) {
-        band_step = (lat_max - lat_min) / (max_bands - 1);
-        settings.interpolate_bands = true;
-        std::fprintf(stderr,
-                     "terrashade: note: the DEM spans %.3g degrees of latitude: sun tables every %.3g degrees (%d bands, "
-                     "each texel linear between two) and %d elevation levels, to keep them in memory\n",
-                     double(lat_max - lat_min), band_step, max_bands, n_levels);
-    }
-    const int n_bands = int(std::ceil((lat_max - lat_min) / band_step - 1e-9)) + 1;
-    ProgressBar table_bar("sun tables", std::uint64_t(std::max(1, n_bands)), "latitude bands");
-    const solar::InsolationModel model(settings, lat_min, lat_max, band_step, z_min, z_max, level_step, &table_bar);
-    table_bar.finish();
-    const double tables_s = t_tables.seconds();
+    const auto [first, last] = insolation_dates(o.sun);
+    const DemSunTables sun = build_dem_sun_tables(dem, settings, first, last, solar::parse_period_split(o.by),
+                                                  o.band_step_deg, o.level_step_m);
+    settings = sun.settings;
+    const solar::InsolationModel& model = *sun.model;
+    const double tables_s = sun.seconds;
 
     const Stopwatch t_sum;
     ProgressBar sum_bar("insolation", texels, "texels");
-    const solar::InsolationMap map = solar::integrate_insolation(model, grid, vis.horizons, normals, latitude, &sum_bar);
+    const solar::InsolationMap map = solar::integrate_insolation(model, grid, vis.horizons, normals, sun.latitude, &sum_bar);
     sum_bar.finish();
     const double sum_s = t_sum.seconds();
 
@@ -221,23 +164,10 @@ void add_insolation_command(CLI::App& root) {
         "exact horizons, diffuse through each texel's sky view): global, beam, diffuse, reflected (kWh/m2) and "
         "hours of direct sun, one band each per period (docs/insolation.md)");
     add_dem_input_options(*cmd, o->dem);
-    cmd->add_option("--year", o->year, "Sum over this calendar year (local mean solar time at the DEM's centre)");
-    cmd->add_option("--from", o->from, "First day, YYYY-MM-DD (with --to)");
-    cmd->add_option("--to", o->to, "Last day, YYYY-MM-DD, included");
+    add_insolation_options(*cmd, o->sun);
     cmd->add_option("--by", o->by, "One set of bands per year, month or day of the range")
         ->capture_default_str()
         ->check(CLI::IsMember({"year", "month", "day"}));
-    cmd->add_option("--linke", o->linke, "Linke turbidity of the whole range (r.sun's linke_value)")
-        ->capture_default_str();
-    cmd->add_option("--linke-monthly", o->linke_monthly, "Linke turbidity per month, 12 values January..December")
-        ->delimiter(',')
-        ->type_name("L1,...,L12");
-    cmd->add_option("--albedo", o->albedo, "Ground albedo for the reflected irradiation, [0, 1]")->capture_default_str();
-    cmd->add_option("--clear-sky-index", o->clear_sky_index,
-                    "Real-sky / clear-sky ratio applied to beam and diffuse (1 = clear sky)")
-        ->capture_default_str();
-    cmd->add_option("--step", o->step_minutes, "Time step of the sun's path in minutes (costs only in the tables)")
-        ->capture_default_str();
     cmd->add_option("--directions", o->directions, "Horizon azimuths D (the sun is looked up in 4 D azimuth bins)")
         ->capture_default_str()
         ->check(within(8, 1024));

@@ -152,6 +152,7 @@ void run_tiles(const TilesCommandArgs& a) {
         interrupt::report_kept("any tiles written stay in " + a.out + " for --resume");
     }
 
+    set_tile_insolation(a.tiles, dem, job);  // after the output: a conflicting job is refused first
     const Stopwatch watch;
     tiles::TileExportStats stats;
     {

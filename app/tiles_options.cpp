@@ -8,12 +8,15 @@
 #include "app/options/verbose_option.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string_view>
 #include <vector>
 
+#include "app/dem_sun_tables.hpp"
 #include "core/light/utc_time.hpp"
+#include "core/tiles/tile_insolation.hpp"
 #include "core/quality/radiance_quality.hpp"
 #include "core/quality/visibility_quality.hpp"
 #include "core/tiles/dem_level.hpp"
@@ -52,7 +55,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
     cmd.add_option("--exaggeration", a.exaggeration,
                    "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
         ->capture_default_str();
-    add_directions_option(cmd, a.directions, &a.directions_given);  // relief, svf, color
+    add_directions_option(cmd, a.directions, &a.directions_given);  // relief, svf, color, insolation
     add_max_error_option(cmd, a.max_error);                          // relief, color: per zoom
     cmd.add_option("--block-texels", a.block_texels,
                    "relief/svf/color: levels larger than this many texels a side are shaded in blocks of it, "
@@ -78,8 +81,109 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "relief/svf/color in blocks: the sky's terrain beyond the halo, exact (the whole level swept per "
                    "block: slow) or marched over coarser levels: fast, balanced, fine, finest")
         ->capture_default_str();
+    add_insolation_options(cmd, a.insolation);  // insolation
+    a.insolation.added.push_back(
+        cmd.add_option("--quantity", a.quantity,
+                       "insolation: global, beam, diffuse, reflected (kWh/m2 over the days) or sun-hours (h)")
+            ->capture_default_str());
+    a.insolation.added.push_back(cmd.add_option(
+        "--ramp", a.ramp,
+        "insolation: the colour ramp's ends LO,HI in the quantity's unit (default: from open flat ground's value; "
+        "docs/tiles.md)"));
     add_threads_option(cmd, a.threads);
     add_verbose_flag(cmd, a.verbose);
+}
+
+namespace {
+
+// "LO,HI" with LO < HI, both finite.
+tiles::RampEnds parse_ramp(const std::string& text) {
+    const auto comma = text.find(',');
+    double lo = 0, hi = 0;
+    auto number = [](std::string_view s, double& out) {
+        const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+        return !s.empty() && ec == std::errc() && p == s.data() + s.size() && std::isfinite(out);
+    };
+    const std::string_view all(text);
+    if (comma == std::string::npos || !number(all.substr(0, comma), lo) || !number(all.substr(comma + 1), hi) || !(lo < hi))
+        throw InputError("--ramp " + text + ": give LO,HI with LO < HI (e.g. 800,2400 for kWh/m2)");
+    return {float(lo), float(hi)};
+}
+
+// --quantity: global, beam, diffuse, reflected or sun-hours -> solar::Quantity.
+int parse_insolation_quantity(const std::string& text) {
+    for (int q = 0; q < solar::kQuantities; ++q)
+        if (text == tiles::insolation_quantity_name(q)) return q;
+    throw InputError("--quantity " + text + ": global, beam, diffuse, reflected or sun-hours");
+}
+
+// The --style insolation checks that need no DEM.
+void check_insolation_style(const TilesArgs& a, tiles::TileShading& s) {
+    const bool insolation = s.style->name() == "insolation";
+    if (!insolation) {
+        if (a.insolation.any_given())
+            throw InputError("--year, --from/--to, --linke, --albedo, --quantity, --ramp ... are for --style insolation, "
+                             "not " + a.style);
+        return;
+    }
+    if (!a.time.empty() || a.sun_azimuth || a.sun_elevation)
+        throw InputError("--style insolation sums every sun of its days (--year or --from/--to): --time and "
+                         "--sun-azimuth/--sun-elevation do not apply");
+    if (a.sky != "clear") throw InputError("--style insolation: its sky is ESRA's clear sky; --sky does not apply");
+    if (a.z_factor != 1.0 || (a.exaggeration != "auto" && s.exaggeration != 1.0))
+        throw InputError("--style insolation sums the sun over the true heights: --z-factor and --exaggeration do not "
+                         "apply");
+    s.exaggeration = 1.0;
+    const auto [first, last] = insolation_dates(a.insolation);
+    solar::InsolationSettings st = insolation_settings(a.insolation);
+    st.periods = solar::make_periods(first, last, solar::PeriodSplit::year, 0.0);
+    solar::check_settings(st);
+    auto ins = std::make_shared<tiles::TileInsolation>();
+    ins->quantity = parse_insolation_quantity(a.quantity);
+    if (!a.ramp.empty()) {
+        const tiles::RampEnds ramp = parse_ramp(a.ramp);
+        ins->lo = ramp.lo, ins->hi = ramp.hi;
+    }
+    // What changes the tiles' bytes, known before the DEM is read so that a conflicting job in
+    // --out is refused before the sun tables are built (the default ramp follows from the DEM
+    // and these).
+    char text[512];
+    std::string linke;
+    for (double tl : st.linke_monthly) linke += (linke.empty() ? "" : ",") + std::to_string(tl);
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d..%04d-%02d-%02d %s ramp %s linke %s albedo %.9g index %.9g step %.9g",
+                  first.year, first.month, first.day, last.year, last.month, last.day,
+                  tiles::insolation_quantity_name(ins->quantity), a.ramp.empty() ? "auto" : a.ramp.c_str(),
+                  linke.c_str(), st.albedo, st.clear_sky_index, st.step_minutes);
+    ins->describe = text;
+    s.insolation = std::move(ins);
+    // The default of `insolation` (a tile set and a GeoTIFF of the same days then agree).
+    if (!a.directions_given) s.directions = 64;
+}
+
+}  // namespace
+
+void set_tile_insolation(const TilesArgs& a, const dem::Dem& dem, tiles::TileJob& job) {
+    tiles::TileShading& s = job.shading;
+    if (s.style->name() != "insolation") return;
+    solar::InsolationSettings settings = insolation_settings(a.insolation);
+    settings.azimuth_bins = 4 * s.directions;
+    settings.svf_stride = 4;
+    settings.threads = s.threads;
+    const auto [first, last] = insolation_dates(a.insolation);
+    settings.periods = solar::make_periods(first, last, solar::PeriodSplit::year, 0.0);
+    solar::check_settings(settings);
+    const DemSunTables sun = build_dem_sun_tables(dem, settings, first, last, solar::PeriodSplit::year, 0.05, 1000.0);
+    auto ins = std::make_shared<tiles::TileInsolation>(*s.insolation);
+    ins->model = sun.model;
+    if (a.ramp.empty()) {
+        const tiles::RampEnds ramp = tiles::default_insolation_ramp(*sun.model, ins->quantity);
+        ins->lo = ramp.lo, ins->hi = ramp.hi;
+    }
+    s.insolation = std::move(ins);
+    std::printf("insolation %s: sun tables in %.2f s; colour ramp %.4g..%.4g %s\n",
+                tiles::insolation_quantity_name(s.insolation->quantity), sun.seconds, double(s.insolation->lo), double(s.insolation->hi),
+                solar::quantity_unit(s.insolation->quantity));
+    std::fflush(stdout);
 }
 
 tiles::TileJob tile_job(const TilesArgs& a) {
@@ -120,6 +224,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.relief_contrast = a.relief_contrast;
     job.level_bias = a.level_bias;
     s.threads = a.threads;
+    check_insolation_style(a, s);
     tiles::check_tile_job(job);
     return job;
 }

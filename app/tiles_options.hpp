@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/options/colors_option.hpp"
+#include "app/options/insolation_options.hpp"
 
 #include "core/dem/dem.hpp"
 #include "core/tiles/tile_export.hpp"
@@ -36,6 +37,10 @@ struct TilesArgs {
     // (core/quality/radiance_quality.hpp); --directions given too conflicts.
     std::optional<double> max_error;
     bool directions_given = false;
+    // --style insolation: the days and the sky of the sum, the quantity and its ramp.
+    InsolationArgs insolation;
+    std::string quantity = "global";
+    std::string ramp;  // "LO,HI" in the quantity's unit; empty: default_insolation_ramp
 };
 
 // `with_zoom`: add --zoom (bench tiles fixes its own).
@@ -47,6 +52,10 @@ tiles::TileJob tile_job(const TilesArgs& args);
 // one line per group of zooms saying what and why. Does nothing without --max-error or for a
 // style without visibility.
 void choose_tile_directions(const TilesArgs& args, const dem::Dem& dem, tiles::TileJob& job);
+// --style insolation: once the DEM is read (and the output opened), the sun tables of its days
+// for the whole DEM (shared by every zoom) and the default ramp into job.shading.insolation.
+// Does nothing for the other styles.
+void set_tile_insolation(const TilesArgs& args, const dem::Dem& dem, tiles::TileJob& job);
 // "Z" or "Z0-Z1" -> (z0, z1), each 0..24 with z0 <= z1.
 void parse_zoom_range(const std::string& text, int& z0, int& z1);
 

@@ -116,7 +116,13 @@ void run_bench_tiles(const BenchTilesArgs& a) {
     TilesArgs base = a.tiles;
     if (base.zoom.empty()) base.zoom = "8-12";
     tiles::TileJob job = tile_job(base);
-    for (const auto& s : a.styles) tiles::parse_tile_style(s);  // a bad name fails before any work
+    for (const auto& s : a.styles) {
+        tiles::parse_tile_style(s);  // a bad name fails before any work
+        // Its sun tables and ramp come from the days `tiles` is given (a year's: seconds).
+        if (s == "insolation")
+            throw InputError("bench tiles --styles: time insolation tiles with `terrashade tiles --style insolation` "
+                             "(it prints its shading and tile times)");
+    }
     if (a.knobs && a.csv.empty()) throw InputError("bench tiles --knobs: give --csv FILE");
     if (!a.csv.empty() && !a.knobs) throw InputError("bench tiles: --csv goes with --knobs");
     IoPlan plan;
@@ -219,7 +225,7 @@ void add_bench_tiles_command(CLI::App& bench) {
     add_dem_input_options(*cmd, a->dem);  // or synthetic:N (synthetic_mosaic.hpp)
     add_tiles_options(*cmd, a->tiles, false);
     cmd->add_option("--zoom", a->tiles.zoom, "Zooms Z0-Z1 (default 8-12)");
-    cmd->add_option("--styles", a->styles, "Styles to measure (default all)")->delimiter(',');
+    cmd->add_option("--styles", a->styles, "Styles to measure (default all but insolation)")->delimiter(',');
     cmd->add_flag("!--no-classic", a->classic, "Skip the gdaldem + gdal2tiles.py pipeline");
     cmd->add_flag("--knobs", a->knobs,
                   "Relief's block size, halo and far field against the level shaded whole, and 512- against "

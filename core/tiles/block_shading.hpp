@@ -34,6 +34,8 @@ struct BlockShading {
     const TileShading& shading;            // with this block's directions
     double flat = 1.0;                     // luminance of open flat ground (relative_to_flat)
     ProgressBar* progress = nullptr;
+    // The level's texel latitudes (degrees, level-sized) for a style that needs them, else null.
+    const std::vector<float>* latitude = nullptr;
 };
 
 // One grey Lambert material everywhere: relief shows form, not land cover.

@@ -18,6 +18,7 @@ public:
     std::string_view name() const override { return "color"; }
     bool uses_visibility() const override { return true; }
     int channels() const override { return 3; }
+    bool filmic() const override { return true; }
     bool needs_true_heights() const override { return true; }
     bool relative_to_flat() const override { return true; }
     bool takes_max_error() const override { return true; }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/quality/radiance_quality.hpp"
+#include "core/solar/insolation_map.hpp"
 #include "core/quality/visibility_quality.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/tiles/block_shading.hpp"
@@ -51,8 +52,11 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
         true_grid.z = {};
     }
     out.channels = style.channels();
+    out.filmic = style.filmic();
     out.values.resize(std::size_t(out.channels) * n);
     const double flat = style.relative_to_flat() ? flat_reference(grid, s) : 1.0;
+    const std::vector<float> latitude =
+        style.needs_latitudes() ? solar::texel_latitudes(lvl.georef, s.threads) : std::vector<float>();
 
     const std::vector<Rect> blocks = level_blocks(grid.width, grid.height, s.block_texels);
     const bool whole = blocks.size() == 1;
@@ -93,7 +97,8 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
         w.col0 = std::max(0, core.col0 - halo), w.row0 = std::max(0, core.row0 - halo);
         w.width = std::min(grid.width, core.col0 + core.width + halo) - w.col0;
         w.height = std::min(grid.height, core.row0 + core.height + halo) - w.row0;
-        const BlockShading block{grid, true_grid, w, core, whole, far.get(), bs, flat, whole ? progress : nullptr};
+        const BlockShading block{grid, true_grid, w, core, whole, far.get(), bs, flat, whole ? progress : nullptr,
+                                 style.needs_latitudes() ? &latitude : nullptr};
         const std::vector<float> values = style.shade_block(block);  // per window texel, `channels` each
         // The core's rows into the level's raster.
         const std::size_t ch = std::size_t(out.channels);

@@ -40,7 +40,8 @@ namespace ts::tiles {
 struct ShadeSource {
     int level = 0;               // 2^level DEM texels per source texel side
     int width = 0, height = 0;   // texels
-    int channels = 1;            // 1, or 3 (color)
+    int channels = 1;            // 1, or 3 (color, insolation)
+    bool filmic = false;         // RGB through the filmic curve (TileStyle::filmic)
     double vertical_scale = 1;   // z-factor x exaggeration the values were computed with
     std::vector<float> values;   // row-major, `channels` floats per texel
     std::map<int, int> blocks_by_directions;  // horizon directions -> blocks shaded with them

@@ -1,5 +1,7 @@
 #include "core/tiles/tile_export.hpp"
 
+#include "core/tiles/tile_insolation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -79,6 +81,7 @@ std::string describe_job(const TileJob& job) {
         colors = ",\"colors\":\"" + s.colors.palette.describe() + "\"";
         if (s.colors.snow_line_m) colors += ",\"snow_line\":" + number(*s.colors.snow_line_m);
     }
+    const std::string insolation = s.insolation ? ",\"insolation\":\"" + s.insolation->describe + "\"" : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -88,7 +91,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + "}\n";
+           by_zoom + max_error + dem + colors + insolation + "}\n";
 }
 
 std::string dem_identity(const dem::Dem& dem) {

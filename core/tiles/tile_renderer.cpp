@@ -84,7 +84,8 @@ const SrgbTable& srgb_table() {
 
 // The covered pixels of a visibility style's tile from its source, through `sample`.
 template <class Sampler, class LevelX>
-void shade_pixels(const Sampler& sample, int channels, const TileScratch& sc, const LevelX& level_x, TileImage& out) {
+void shade_pixels(const Sampler& sample, int channels, bool filmic, const TileScratch& sc, const LevelX& level_x,
+                  TileImage& out) {
     if (channels == 1) {
         const SrgbTable& code = srgb_table();
         for (std::size_t k = 0; k < sc.covered.size(); ++k) {
@@ -97,14 +98,15 @@ void shade_pixels(const Sampler& sample, int channels, const TileScratch& sc, co
         }
         return;
     }
-    const render::Srgb8Encoder& code = render::shared_srgb8_table();
+    const render::Srgb8Encoder& film = render::shared_srgb8_table();
+    const SrgbTable& plain = srgb_table();
     for (std::size_t k = 0; k < sc.covered.size(); ++k) {
         if (!sc.covered[k]) continue;
         const glm::dvec2 p = sc.at[k];
         const double x = level_x(p.x), y = level_x(p.y);
         const float rgb[3] = {sample(x, y, 0), sample(x, y, 1), sample(x, y, 2)};
         if (std::isnan(rgb[0] + rgb[1] + rgb[2])) continue;  // next to texels outside the terrain
-        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = code(rgb[c]);
+        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = filmic ? film(rgb[c]) : plain(rgb[c]);
         out.pixels[4 * k + 3] = 255;
     }
 }
@@ -240,9 +242,9 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
         return;
     }
     if (shading.resampling == Resampling::cubic)
-        shade_pixels(CatmullRom{source}, source.channels, sc, level_x, out);
+        shade_pixels(CatmullRom{source}, source.channels, source.filmic, sc, level_x, out);
     else
-        shade_pixels(sample, source.channels, sc, level_x, out);
+        shade_pixels(sample, source.channels, source.filmic, sc, level_x, out);
 }
 
 }  // namespace ts::tiles

@@ -14,6 +14,7 @@ const TileStyle& hillshade_tile_style();
 const TileStyle& multidirectional_tile_style();
 const TileStyle& svf_tile_style();
 const TileStyle& color_tile_style();
+const TileStyle& insolation_tile_style();
 
 const std::vector<const TileStyle*>& tile_styles() {
     static const std::vector<const TileStyle*> styles = {
@@ -22,6 +23,7 @@ const std::vector<const TileStyle*>& tile_styles() {
         &multidirectional_tile_style(),
         &svf_tile_style(),
         &color_tile_style(),
+        &insolation_tile_style(),
     };
     return styles;
 }
@@ -42,7 +44,7 @@ std::string tile_style_names(std::string_view separator) {
 
 const TileStyle& parse_tile_style(std::string_view text) {
     if (const TileStyle* s = find_tile_style(text)) return *s;
-    // "relief, hillshade, multidirectional, svf or color"
+    // "relief, hillshade, multidirectional, svf, color or insolation"
     const std::vector<const TileStyle*>& all = tile_styles();
     std::string names;
     for (std::size_t i = 0; i < all.size(); ++i)

@@ -1,6 +1,7 @@
 #pragma once
 // What a tile shows and how it is lit (docs/tiles.md, "Styles").
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,10 +15,12 @@ namespace ts::tiles {
 struct TileFrame;
 struct HornLight;
 struct BlockShading;
+struct TileInsolation;
 
 // One tile style: its name, what its zoom's source holds, how a tile's pixels are made and
 // which options it takes. One class per style, each in its own file (relief_style.cpp,
-// hillshade_style.cpp, multidirectional_style.cpp, svf_style.cpp, color_style.cpp), listed in
+// hillshade_style.cpp, multidirectional_style.cpp, svf_style.cpp, color_style.cpp,
+// insolation_style.cpp), listed in
 // tile_styles() (tile_style.cpp). A new style is one file and one line there
 // (docs/architecture.md).
 class TileStyle {
@@ -30,6 +33,9 @@ public:
     virtual bool uses_visibility() const = 0;
     // Values per source texel: 1 (grey) or 3 (RGB).
     virtual int channels() const { return 1; }
+    // RGB values are scene-linear light for the filmic curve (color); false: display-linear
+    // colours, sRGB-encoded as they are (a colour ramp's).
+    virtual bool filmic() const { return false; }
     // The level's true (not exaggerated) heights are kept for shade_block (land cover).
     virtual bool needs_true_heights() const { return false; }
     // Values relative to open flat ground under the same light (BlockShading::flat).
@@ -43,6 +49,8 @@ public:
     virtual bool takes_relief_contrast() const { return false; }
     // Colours land with TileShading::colors (a palette, a snow line); the others are grey.
     virtual bool colours_land() const { return false; }
+    // Reads each texel's latitude (BlockShading::latitude): the sun's path depends on it.
+    virtual bool needs_latitudes() const { return false; }
 
     // Styles without visibility: a tile's grey values 1..255 from its heights ((size + 2)^2
     // with the 1-px halo), written where `covered`.
@@ -101,7 +109,7 @@ struct TileShading {
     std::optional<double> exaggeration;
     light::SkyOptions sky;     // relief, color
     render::ColorDesign colors;  // color: the land colours, fitted to the whole DEM's heights
-    int directions = 16;       // horizon azimuths of the visibility (relief, svf, color)
+    int directions = 16;       // horizon azimuths of the visibility (relief, svf, color, insolation: 64)
     // --max-error (relief, color; > 0): a level shaded in blocks takes each block's directions
     // from the block's own roughness (quality::choose_radiance), so flat blocks get fewer; a
     // level in one block keeps `directions` (the zoom's choice). 0: every block `directions`.
@@ -109,16 +117,18 @@ struct TileShading {
     // Levels wider or taller than this many texels are shaded in blocks of it (relief, svf,
     // color), so memory follows the block, not the DEM (shade_source.hpp). 0 = never.
     int block_texels = 2048;
-    // relief, svf, color: each block is shaded on its window grown by this many texels per side
+    // relief, svf, color, insolation: each block is shaded on its window grown by this many texels per side
     // (the sun's cast shadows reach that far; the sky sees the exact horizons that far and the
     // far field beyond).
     int block_halo_texels = 256;
-    // relief, svf, color in blocks: the sky's terrain beyond the halo.
+    // relief, svf, color, insolation in blocks: the sky's terrain beyond the halo.
     FarFieldMethod far_field = FarFieldMethod::balanced;
     Resampling resampling = Resampling::cubic;  // relief, svf, color
     // relief: the shading's contrast in stops about open flat ground (relief_grey,
     // shade_source.hpp); 1 = the physical picture, 1.5 for print.
     double relief_contrast = 1.0;
+    // insolation: the range's sun and the ramp (tile_insolation.hpp), set once the DEM is read.
+    std::shared_ptr<const TileInsolation> insolation;
     int threads = 0;
 };
 

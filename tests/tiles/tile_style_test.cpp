@@ -21,13 +21,13 @@ TEST(TileStyle, EveryStyleIsRegisteredOnceInUserOrder) {
     std::vector<std::string> names;
     std::set<const TileStyle*> distinct;
     for (const TileStyle* s : tile_styles()) names.emplace_back(s->name()), distinct.insert(s);
-    EXPECT_EQ(names, (std::vector<std::string>{"relief", "hillshade", "multidirectional", "svf", "color"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"relief", "hillshade", "multidirectional", "svf", "color", "insolation"}));
     EXPECT_EQ(distinct.size(), names.size());
     for (const std::string& n : names) EXPECT_EQ(find_tile_style(n)->name(), n);
     EXPECT_EQ(find_tile_style("Relief"), nullptr);
     EXPECT_EQ(&default_tile_style(), find_tile_style("relief"));
     EXPECT_EQ(TileShading{}.style, find_tile_style("relief"));
-    EXPECT_EQ(tile_style_names(" | "), "relief | hillshade | multidirectional | svf | color");
+    EXPECT_EQ(tile_style_names(" | "), "relief | hillshade | multidirectional | svf | color | insolation");
 }
 
 TEST(TileStyle, ParseNamesEveryStyleInItsError) {
@@ -36,7 +36,7 @@ TEST(TileStyle, ParseNamesEveryStyleInItsError) {
         parse_tile_style("slope");
         FAIL() << "no error";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("use relief, hillshade, multidirectional, svf or color"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("use relief, hillshade, multidirectional, svf, color or insolation"), std::string::npos) << e.what();
     }
 }
 
@@ -45,13 +45,14 @@ TEST(TileStyle, EachStyleSaysWhatTheEnumSwitchesDid) {
         const char* name;
         bool visibility;
         int channels;
-        bool true_heights, flat, halo, max_error, contrast, colours = false;
+        bool true_heights, flat, halo, max_error, contrast, colours = false, latitudes = false, filmic = false;
     };
     for (const Want& w : {Want{"relief", true, 1, false, true, true, true, true},
                           Want{"hillshade", false, 1, false, false, true, false, false},
                           Want{"multidirectional", false, 1, false, false, true, false, false},
                           Want{"svf", true, 1, false, false, false, false, false},
-                          Want{"color", true, 3, true, true, true, true, false, true}}) {
+                          Want{"color", true, 3, true, true, true, true, false, true, false, true},
+                          Want{"insolation", true, 3, false, false, true, false, false, false, true, false}}) {
         const TileStyle& s = *find_tile_style(w.name);
         SCOPED_TRACE(w.name);
         EXPECT_EQ(s.uses_visibility(), w.visibility);
@@ -62,6 +63,8 @@ TEST(TileStyle, EachStyleSaysWhatTheEnumSwitchesDid) {
         EXPECT_EQ(s.halo_without_far_field(), w.halo);
         EXPECT_EQ(s.takes_max_error(), w.max_error);
         EXPECT_EQ(s.takes_relief_contrast(), w.contrast);
+        EXPECT_EQ(s.needs_latitudes(), w.latitudes);
+        EXPECT_EQ(s.filmic(), w.filmic);
     }
 }
 

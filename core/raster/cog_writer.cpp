@@ -258,6 +258,21 @@ std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, cons
     return out;
 }
 
+void lay_out_as_cog(const std::filesystem::path& file, const std::string& path) {
+    std::vector<std::uint8_t> tiff;
+    {
+        std::ifstream in(file, std::ios::binary);
+        if (!in) throw input_error(path, "cannot read back the TIFF to lay out as a COG");
+        tiff.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::vector<std::uint8_t> cog = cog_layout(tiff, path);
+    tiff = {};  // the two copies need not coexist with the write
+    std::FILE* f = std::fopen(file.c_str(), "wb");
+    if (!f) throw input_error(path, "cannot write");
+    const bool ok = std::fwrite(cog.data(), 1, cog.size(), f) == cog.size();
+    if (std::fclose(f) != 0 || !ok) throw input_error(path, "cannot write (disk full?)");
+}
+
 void write_cog_u8(const std::filesystem::path& path, int width, int height, int channels, const std::uint8_t* data,
                   const geo::Georef& georef) {
     if (width <= 0 || height <= 0) throw input_error(path.string(), "cannot write an empty image");
@@ -276,16 +291,7 @@ void write_cog_u8(const std::filesystem::path& path, int width, int height, int 
             }
             file.close();
         }
-        std::vector<std::uint8_t> tiff;
-        {
-            std::ifstream in(tmp, std::ios::binary);
-            tiff.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        }
-        const std::vector<std::uint8_t> cog = cog_layout(tiff, path.string());
-        std::FILE* f = std::fopen(tmp.c_str(), "wb");
-        if (!f) throw input_error(path.string(), "cannot write");
-        const bool ok = std::fwrite(cog.data(), 1, cog.size(), f) == cog.size();
-        if (std::fclose(f) != 0 || !ok) throw input_error(path.string(), "cannot write (disk full?)");
+        lay_out_as_cog(tmp, path.string());
     });
 }
 

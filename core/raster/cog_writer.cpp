@@ -1,6 +1,7 @@
 #include "core/raster/cog_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -118,9 +119,15 @@ struct Entry {
     std::vector<std::uint8_t> value;  // count * type_size bytes
 };
 
+// A compressed tile, where it lies in the TIFF being laid out (not copied: the input is the
+// one whole-file buffer the layout holds).
+struct TileBytes {
+    std::size_t at = 0, size = 0;
+};
+
 struct Ifd {
     std::vector<Entry> entries;
-    std::vector<std::vector<std::uint8_t>> tiles;  // compressed, in TIFF order (row-major)
+    std::vector<TileBytes> tiles;  // in TIFF order: plane by plane, each row-major
 };
 
 std::vector<Ifd> read_ifds(const std::vector<std::uint8_t>& b, const std::string& path) {
@@ -156,8 +163,7 @@ std::vector<Ifd> read_ifds(const std::vector<std::uint8_t>& b, const std::string
         for (std::size_t k = 0; k < tile_offsets.size(); ++k) {
             if (std::size_t(tile_offsets[k]) + tile_counts[k] > b.size())
                 throw input_error(path, "TIFF truncated while laying out the COG");
-            ifd.tiles.emplace_back(b.begin() + std::ptrdiff_t(tile_offsets[k]),
-                                   b.begin() + std::ptrdiff_t(tile_offsets[k] + tile_counts[k]));
+            ifd.tiles.push_back({tile_offsets[k], tile_counts[k]});
         }
         ifds.push_back(std::move(ifd));
         offset = get(b, offset + 2 + 12 * std::size_t(n), 4, path);
@@ -180,18 +186,15 @@ std::string ghost_area() {
     return ghost;
 }
 
-}  // namespace
+// The COG as the bytes before the first tile (header, ghost, IFDs and their values) and the
+// tiles in file order, each to be written behind its size and before its last 4 bytes.
+struct CogPlan {
+    std::vector<std::uint8_t> head;
+    std::vector<TileBytes> tiles;
+    std::size_t size = 0;  // of the whole file
+};
 
-std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height) {
-    std::vector<std::pair<int, int>> sizes;
-    while (width > kCogTileSize || height > kCogTileSize) {
-        width = (width + 1) / 2, height = (height + 1) / 2;
-        sizes.emplace_back(width, height);
-    }
-    return sizes;
-}
-
-std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, const std::string& path) {
+CogPlan plan_cog(const std::vector<std::uint8_t>& tiff, const std::string& path) {
     std::vector<Ifd> ifds = read_ifds(tiff, path);
     const std::string ghost = ghost_area();
 
@@ -209,16 +212,20 @@ std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, cons
             if (e.value.size() > 4) at += e.value.size() + (e.value.size() % 2);
         }
     }
+    CogPlan plan;
+    plan.head.assign(at, 0);
     // Tiles: the smallest overview first, the full resolution last; leader + data + trailer.
     std::vector<std::vector<std::uint32_t>> tile_at(ifds.size());
     for (std::size_t i = ifds.size(); i-- > 0;)
-        for (const auto& tile : ifds[i].tiles) {
+        for (const TileBytes& tile : ifds[i].tiles) {
             tile_at[i].push_back(std::uint32_t(at + 4));
-            at += 4 + tile.size() + (tile.size() >= 4 ? 4 : 0);
+            plan.tiles.push_back(tile);
+            at += 4 + tile.size + (tile.size >= 4 ? 4 : 0);
         }
     if (at > 0xFFFFFFFFull) throw input_error(path, "too large for a classic-TIFF COG (over 4 GiB)");
+    plan.size = at;
 
-    std::vector<std::uint8_t> out(at, 0);
+    std::vector<std::uint8_t>& out = plan.head;
     out[0] = 'I', out[1] = 'I';
     put(out, 2, 42, 2);
     put(out, 4, std::uint32_t(ifd_at.empty() ? 0 : ifd_at[0]), 4);
@@ -233,7 +240,8 @@ std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, cons
             if (e.tag == kTagTileOffsets)
                 for (std::size_t t = 0; t < tile_at[i].size(); ++t) put(e.value, 4 * t, tile_at[i][t], 4);
             if (e.tag == kTagTileByteCounts)
-                for (std::size_t t = 0; t < ifds[i].tiles.size(); ++t) put(e.value, 4 * t, std::uint32_t(ifds[i].tiles[t].size()), 4);
+                for (std::size_t t = 0; t < ifds[i].tiles.size(); ++t)
+                    put(e.value, 4 * t, std::uint32_t(ifds[i].tiles[t].size), 4);
             const std::size_t q = p + 2 + 12 * k;
             put(out, q, e.tag, 2);
             put(out, q + 2, e.type, 2);
@@ -247,15 +255,27 @@ std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, cons
             }
         }
         put(out, p + 2 + 12 * n, std::uint32_t(i + 1 < ifds.size() ? ifd_at[i + 1] : 0), 4);
-        for (std::size_t t = 0; t < ifds[i].tiles.size(); ++t) {
-            const auto& tile = ifds[i].tiles[t];
-            const std::size_t d = tile_at[i][t];
-            put(out, d - 4, std::uint32_t(tile.size()), 4);
-            std::memcpy(out.data() + d, tile.data(), tile.size());
-            if (tile.size() >= 4) std::memcpy(out.data() + d + tile.size(), tile.data() + tile.size() - 4, 4);
-        }
     }
-    return out;
+    return plan;
+}
+
+// A tile's 4-byte size leader, or its trailer (its last 4 bytes again; none under 4 bytes).
+std::array<std::uint8_t, 4> size_leader(const TileBytes& tile) {
+    std::array<std::uint8_t, 4> b{};
+    for (int k = 0; k < 4; ++k) b[std::size_t(k)] = std::uint8_t(std::uint32_t(tile.size) >> (8 * k));
+    return b;
+}
+std::size_t trailer_size(const TileBytes& tile) { return tile.size >= 4 ? 4 : 0; }
+
+}  // namespace
+
+std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height) {
+    std::vector<std::pair<int, int>> sizes;
+    while (width > kCogTileSize || height > kCogTileSize) {
+        width = (width + 1) / 2, height = (height + 1) / 2;
+        sizes.emplace_back(width, height);
+    }
+    return sizes;
 }
 
 void lay_out_as_cog(const std::filesystem::path& file, const std::string& path) {
@@ -265,11 +285,19 @@ void lay_out_as_cog(const std::filesystem::path& file, const std::string& path) 
         if (!in) throw input_error(path, "cannot read back the TIFF to lay out as a COG");
         tiff.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    const std::vector<std::uint8_t> cog = cog_layout(tiff, path);
-    tiff = {};  // the two copies need not coexist with the write
+    // Written straight from the TIFF's bytes: the layout holds the file once, not a laid-out
+    // copy too (a thousand-band insolation output can be as large as its map).
+    const CogPlan plan = plan_cog(tiff, path);
     std::FILE* f = std::fopen(file.c_str(), "wb");
     if (!f) throw input_error(path, "cannot write");
-    const bool ok = std::fwrite(cog.data(), 1, cog.size(), f) == cog.size();
+    bool ok = std::fwrite(plan.head.data(), 1, plan.head.size(), f) == plan.head.size();
+    for (const TileBytes& tile : plan.tiles) {
+        if (!ok) break;
+        const auto size = size_leader(tile);
+        const std::uint8_t* data = tiff.data() + tile.at;
+        ok = std::fwrite(size.data(), 1, 4, f) == 4 && std::fwrite(data, 1, tile.size, f) == tile.size &&
+             std::fwrite(data + tile.size - trailer_size(tile), 1, trailer_size(tile), f) == trailer_size(tile);
+    }
     if (std::fclose(f) != 0 || !ok) throw input_error(path, "cannot write (disk full?)");
 }
 

@@ -125,7 +125,7 @@ void write_float_cog(const std::filesystem::path& path, int width, int height, i
     const MainImageTags main{&georef, gdal_band_metadata_xml(bands, descriptions, units)};
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         {
-            TiffFile file(tmp, "wl");  // little-endian, as cog_layout reads
+            TiffFile file(tmp, "wl");  // little-endian, as lay_out_as_cog reads
             FloatLevel level;
             level.width = width, level.height = height, level.data = data;
             write_float_directory(file, level, bands, &main);

@@ -3,7 +3,7 @@
 // (PLANARCONFIG_SEPARATE, GDAL's INTERLEAVE=BAND, so that reading one band of thousands reads
 // that band's tiles only), 256-px deflate tiles with the floating-point predictor, NaN as
 // nodata (GDAL_NODATA "nan"), band descriptions and units (GDAL_METADATA), internal overviews
-// halved until the smallest fits in one tile, and the layout of cog_writer.hpp (cog_layout:
+// halved until the smallest fits in one tile, and the layout of cog_writer.hpp (lay_out_as_cog:
 // each IFD's tiles band by band, the smallest overview first).
 #include <filesystem>
 #include <string>

@@ -252,5 +252,33 @@ TEST(FloatCogWriter, GdalSeesDescriptionsUnitsNodataOverviewsAndAValidCog) {
     EXPECT_EQ(valid.find("warning"), std::string::npos) << valid;
 }
 
+// insolation --by day writes up to 2000 bands: 1999 ExtraSamples and 4000 metadata items in
+// the main IFD, 2000 planes of tiles; GDAL reads the last band's name, unit and pixels, and the
+// validator still passes. (Small: each band is still one 256-px tile to encode and check.)
+TEST(FloatCogWriter, TwoThousandBandsStayReadableAndValid) {
+    const int w = 8, h = 8, bands = 2000;
+    std::vector<float> data(std::size_t(w) * h * bands);
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = float(i % 9973) * 0.25f;
+    std::vector<std::string> names, units(std::size_t(bands), "h");
+    for (int b = 0; b < bands; ++b) names.push_back("band " + std::to_string(b + 1));
+    const fs::path file = test::fresh_dir("float_cog_many") / "many.tif";
+    write_float_cog(file, w, h, bands, data.data(), utm_georef(w, h), names, units);
+
+    int code = -1;
+    const std::string info = run("gdalinfo -json '" + file.string() + "'", &code);
+    ASSERT_EQ(code, 0) << info.substr(0, 2000);
+    const auto j = nlohmann::json::parse(info.substr(info.find('{')));
+    ASSERT_EQ(j["bands"].size(), std::size_t(bands));
+    EXPECT_EQ(j["bands"][bands - 1]["description"], "band 2000");
+    EXPECT_EQ(j["bands"][bands - 1]["unit"], "h");
+    const std::string pixel = run("gdallocationinfo -valonly -b 2000 '" + file.string() + "' 7 2", &code);
+    EXPECT_EQ(code, 0) << pixel;
+    EXPECT_EQ(std::stod(pixel), double(data[(std::size_t(bands - 1) * h + 2) * w + 7])) << pixel;
+    const std::string valid = run("/usr/bin/python3 -m osgeo_utils.samples.validate_cloud_optimized_geotiff "
+                                  "--full-check=yes '" + file.string() + "'", &code);
+    EXPECT_EQ(code, 0) << valid;
+    EXPECT_NE(valid.find("The size of all IFD headers is"), std::string::npos) << valid;
+}
+
 }  // namespace
 }  // namespace ts::raster::float_cog_test

@@ -28,13 +28,13 @@ void write_cog_u8(const std::filesystem::path& path, int width, int height, int 
 // exceeds a tile).
 std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height);
 
-// Rewrites `file`, a classic little-endian TIFF with tiled IFDs as libtiff writes it (a
+// Rewrites `file`, a little-endian TIFF or BigTIFF with tiled IFDs as libtiff writes it (a
 // writer's temporary, before its rename), in place in the COG layout above: a byte copy of every
 // tag and tile. Each IFD's tiles stay in TIFF order, so a band-separate (PLANARCONFIG_SEPARATE)
 // image gets band 1's tiles row-major, then band 2's, ..., the order in which GDAL's GTiff driver
 // writes INTERLEAVE=BAND with COPY_SRC_OVERVIEWS (GDAL 3.6's COG driver writes pixel-interleaved
 // only). Holds the file in memory once. Throws ts::InputError naming `path` (the user's output)
-// for what it cannot read or a result past 4 GiB.
+// for what it cannot read or a classic TIFF whose result passes 4 GiB.
 void lay_out_as_cog(const std::filesystem::path& file, const std::string& path);
 
 }  // namespace ts::raster

@@ -109,6 +109,20 @@ void write_float_directory(TiffFile& file, const FloatLevel& level, int bands, c
     if (!TIFFWriteDirectory(tif)) throw input_error(file.path(), "writing TIFF failed: " + file.last_error());
 }
 
+// BigTIFF when the tiles, uncompressed, would pass 3 GiB (as raster_writer's float GeoTIFFs;
+// GDAL's BIGTIFF=IF_SAFER is alike): the compressed size is known only once written, and a
+// classic TIFF found too large then would throw away the whole computation.
+bool needs_bigtiff(int width, int height, int bands) {
+    const std::uint64_t tile_bytes = std::uint64_t(kCogTileSize) * kCogTileSize * sizeof(float);
+    auto tiles = [](int w, int h) {
+        const int t = kCogTileSize;
+        return std::uint64_t((w + t - 1) / t) * std::uint64_t((h + t - 1) / t);
+    };
+    std::uint64_t n = tiles(width, height);
+    for (const auto& [w, h] : cog_overview_sizes(width, height)) n += tiles(w, h);
+    return n * std::uint64_t(bands) * tile_bytes > (std::uint64_t(3) << 30);
+}
+
 }  // namespace
 
 void write_float_cog(const std::filesystem::path& path, int width, int height, int bands, const float* data,
@@ -125,7 +139,8 @@ void write_float_cog(const std::filesystem::path& path, int width, int height, i
     const MainImageTags main{&georef, gdal_band_metadata_xml(bands, descriptions, units)};
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         {
-            TiffFile file(tmp, "wl");  // little-endian, as lay_out_as_cog reads
+            // Little-endian, as lay_out_as_cog reads.
+            TiffFile file(tmp, needs_bigtiff(width, height, bands) ? "w8l" : "wl");
             FloatLevel level;
             level.width = width, level.height = height, level.data = data;
             write_float_directory(file, level, bands, &main);

@@ -16,7 +16,7 @@ namespace ts::raster {
 // `bands` band-sequential planes of width*height, row-major, georeferenced like `georef`;
 // descriptions[b] and units[b] (either list may be empty or shorter) become band b+1's GDAL
 // description and unit type. Overviews average each 2x2 block over its finite values only (a
-// block with none is NaN). Written atomically; a file past 4 GiB (classic TIFF) is refused.
+// block with none is NaN). Written atomically; a BigTIFF when the uncompressed tiles pass 3 GiB.
 void write_float_cog(const std::filesystem::path& path, int width, int height, int bands, const float* data,
                      const geo::Georef& georef, const std::vector<std::string>& descriptions = {},
                      const std::vector<std::string>& units = {});

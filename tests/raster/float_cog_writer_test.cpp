@@ -280,5 +280,62 @@ TEST(FloatCogWriter, TwoThousandBandsStayReadableAndValid) {
     EXPECT_NE(valid.find("The size of all IFD headers is"), std::string::npos) << valid;
 }
 
+// A float COG past 3 GiB of tiles is a BigTIFF (too large to write here): lay_out_as_cog on a
+// small BigTIFF written by libtiff as write_float_cog does (two band-separate levels) gives a
+// BigTIFF COG that reads back the same and that GDAL's validator passes.
+TEST(FloatCogWriter, BigTiffLaysOutAsACogToo) {
+    const int w = 300, h = 40, bands = 2;
+    const std::vector<float> data = sample_bands(w, h, bands);
+    const fs::path file = test::fresh_dir("float_cog_big") / "big.tif";
+    {
+        TiffFile tiff(file, "w8l");
+        TIFF* tif = tiff.get();
+        for (int level = 0; level < 2; ++level) {
+            const int lw = level ? w / 2 : w, lh = level ? h / 2 : h;
+            TIFFSetField(tif, TIFFTAG_SUBFILETYPE, level ? FILETYPE_REDUCEDIMAGE : 0);
+            TIFFSetField(tif, TIFFTAG_IMAGEWIDTH, std::uint32_t(lw));
+            TIFFSetField(tif, TIFFTAG_IMAGELENGTH, std::uint32_t(lh));
+            TIFFSetField(tif, TIFFTAG_BITSPERSAMPLE, 32);
+            TIFFSetField(tif, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_IEEEFP);
+            TIFFSetField(tif, TIFFTAG_SAMPLESPERPIXEL, bands);
+            TIFFSetField(tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_SEPARATE);
+            TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+            std::uint16_t extra = EXTRASAMPLE_UNSPECIFIED;
+            TIFFSetField(tif, TIFFTAG_EXTRASAMPLES, 1, &extra);
+            TIFFSetField(tif, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
+            TIFFSetField(tif, TIFFTAG_PREDICTOR, PREDICTOR_FLOATINGPOINT);
+            TIFFSetField(tif, TIFFTAG_TILEWIDTH, 256u);
+            TIFFSetField(tif, TIFFTAG_TILELENGTH, 256u);
+            std::vector<float> tile(256 * 256);
+            for (int b = 0; b < bands; ++b)
+                for (int c0 = 0; c0 < lw; c0 += 256) {
+                    std::fill(tile.begin(), tile.end(), kNaN);
+                    for (int r = 0; r < lh; ++r)
+                        for (int c = c0; c < std::min(lw, c0 + 256); ++c)
+                            tile[std::size_t(r) * 256 + std::size_t(c - c0)] =
+                                level ? float(r * c) : data[(std::size_t(b) * h + r) * w + c];
+                    const ttile_t t = TIFFComputeTile(tif, std::uint32_t(c0), 0, 0, tsample_t(b));
+                    ASSERT_GT(TIFFWriteEncodedTile(tif, t, tile.data(), tmsize_t(tile.size() * sizeof(float))), 0);
+                }
+            ASSERT_TRUE(TIFFWriteDirectory(tif));
+        }
+        tiff.close();
+    }
+    lay_out_as_cog(file, file.string());
+    const std::string b = test::slurp(file);
+    ASSERT_GT(b.size(), 16u);
+    EXPECT_EQ(b[2], 43) << "still a BigTIFF";
+    const auto levels = read_levels(file, bands);
+    ASSERT_EQ(levels.size(), 2u);
+    EXPECT_EQ(std::memcmp(levels[0].px.data(), data.data(), data.size() * sizeof(float)), 0);
+    EXPECT_EQ(levels[1].px[std::size_t(3) * (w / 2) + 5], 15.0f);
+    EXPECT_LT(levels[1].tile_offsets.back(), levels[0].tile_offsets.front());
+    int code = -1;
+    const std::string valid = run("/usr/bin/python3 -m osgeo_utils.samples.validate_cloud_optimized_geotiff "
+                                  "--full-check=yes '" + file.string() + "'", &code);
+    EXPECT_EQ(code, 0) << valid;
+    EXPECT_NE(valid.find("The size of all IFD headers is"), std::string::npos) << valid;
+}
+
 }  // namespace
 }  // namespace ts::raster::float_cog_test

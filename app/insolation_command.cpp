@@ -18,7 +18,7 @@
 #include "app/job_memory.hpp"
 #include "app/options/insolation_options.hpp"
 #include "app/options/threads_option.hpp"
-#include "core/raster/raster_writer.hpp"
+#include "core/raster/float_cog_writer.hpp"
 #include "core/solar/insolation_map.hpp"
 #include "core/solar/insolation_model.hpp"
 #include "core/terrain/dem_height_grid.hpp"
@@ -115,12 +115,15 @@ void run_insolation(InsolationOptions& o) {
     sum_bar.finish();
     const double sum_s = t_sum.seconds();
 
-    std::vector<std::string> names;
+    std::vector<std::string> names, units;
     for (const auto& p : settings.periods)
-        for (int q = 0; q < solar::kQuantities; ++q) names.push_back(band_name(p, q));
+        for (int q = 0; q < solar::kQuantities; ++q) {
+            names.push_back(band_name(p, q));
+            units.push_back(solar::quantity_unit(q));
+        }
     StagedOutputs outputs;
     outputs.stage(o.out, [&](const std::filesystem::path& tmp) {
-        raster::write_float_raster(tmp, dem.width, dem.height, int(bands), map.values.data(), dem.georef, names);
+        raster::write_float_cog(tmp, dem.width, dem.height, int(bands), map.values.data(), dem.georef, names, units);
     });
     QuicklookRange range;
     if (!o.quicklook.empty()) {
@@ -175,7 +178,8 @@ void add_insolation_command(CLI::App& root) {
                     "Spacing of the latitude bands of the sun tables, degrees (each texel takes the nearest)")
         ->capture_default_str()
         ->check(within(0.001, 5.0));
-    cmd->add_option("--out", o->out, "Float32 GeoTIFF, bands described with quantity, period and unit")->required();
+    cmd->add_option("--out", o->out,
+                    "Float32 Cloud-Optimized GeoTIFF, bands described with quantity, period and unit")->required();
     cmd->add_option("--quicklook", o->quicklook, "PNG of the global irradiation with a colour ramp and legend");
     add_threads_option(*cmd, o->threads);
     add_device_options(*cmd, o->device);

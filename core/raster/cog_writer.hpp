@@ -6,9 +6,11 @@
 // `gdalinfo` reports LAYOUT=COG and GDAL's validate_cloud_optimized_geotiff.py passes.
 //
 // libtiff encodes the tiles and the tags (the GeoKeys through write_geotiff_georef, as the other
-// writers); the file is then laid out again in COG order by cog_layout().
+// writers); the file is then laid out again in COG order by lay_out_as_cog(). Float rasters of any
+// band count: float_cog_writer.hpp, on the same layout.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/geo/georef.hpp"
@@ -26,9 +28,13 @@ void write_cog_u8(const std::filesystem::path& path, int width, int height, int 
 // exceeds a tile).
 std::vector<std::pair<int, int>> cog_overview_sizes(int width, int height);
 
-// A classic little-endian TIFF with tiled IFDs (as libtiff writes it) rearranged into the COG
-// layout above. Throws ts::InputError (naming `path`) for what it cannot read or a result past
-// 4 GiB.
-std::vector<std::uint8_t> cog_layout(const std::vector<std::uint8_t>& tiff, const std::string& path);
+// Rewrites `file`, a little-endian TIFF or BigTIFF with tiled IFDs as libtiff writes it (a
+// writer's temporary, before its rename), in place in the COG layout above: a byte copy of every
+// tag and tile. Each IFD's tiles stay in TIFF order, so a band-separate (PLANARCONFIG_SEPARATE)
+// image gets band 1's tiles row-major, then band 2's, ..., the order in which GDAL's GTiff driver
+// writes INTERLEAVE=BAND with COPY_SRC_OVERVIEWS (GDAL 3.6's COG driver writes pixel-interleaved
+// only). Holds the file in memory once. Throws ts::InputError naming `path` (the user's output)
+// for what it cannot read or a classic TIFF whose result passes 4 GiB.
+void lay_out_as_cog(const std::filesystem::path& file, const std::string& path);
 
 }  // namespace ts::raster

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 
+#include "core/raster/gdal_band_metadata.hpp"
 #include "core/raster/geotiff_georef.hpp"
 #include "core/raster/image_writer_registry.hpp"
 #include "core/raster/png_writer.hpp"
@@ -21,20 +22,6 @@ void check_size(const std::filesystem::path& path, int width, int height, int pl
     if (width <= 0 || height <= 0 || planes <= 0)
         throw input_error(path.string(), "cannot write an empty raster (" + std::to_string(width) + "x" +
                                              std::to_string(height) + "x" + std::to_string(planes) + ")");
-}
-
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 // Rows per strip for ~256 KiB strips: few enough strips to write fast, small enough to stream.
@@ -88,14 +75,8 @@ void write_float_raster(const std::filesystem::path& path, int width, int height
         TIFFSetField(tif, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
         TIFFSetField(tif, TIFFTAG_PREDICTOR, PREDICTOR_FLOATINGPOINT);
         TIFFSetField(tif, TIFFTAG_GDAL_NODATA, "nan");
-        if (!band_names.empty()) {
-            std::string xml = "<GDALMetadata>\n";
-            for (std::size_t b = 0; b < band_names.size() && b < std::size_t(bands); ++b)
-                xml += "  <Item name=\"DESCRIPTION\" sample=\"" + std::to_string(b) + "\" role=\"description\">" +
-                       xml_escape(band_names[b]) + "</Item>\n";
-            xml += "</GDALMetadata>";
-            TIFFSetField(tif, TIFFTAG_GDAL_METADATA, xml.c_str());
-        }
+        const std::string xml = gdal_band_metadata_xml(bands, band_names);
+        if (!xml.empty()) TIFFSetField(tif, TIFFTAG_GDAL_METADATA, xml.c_str());
         write_geotiff_georef(tif, georef, path.string());
         write_strips(file, height, bands, row_bytes, reinterpret_cast<const std::uint8_t*>(data));
         file.close();

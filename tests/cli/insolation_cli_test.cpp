@@ -1,6 +1,7 @@
-// `terrashade insolation` end to end on a crop of the Grenoble DSM: the GeoTIFF's bands and
-// their descriptions (gdalinfo as the oracle), the quick-look, and one-line exit-2 refusals
-// before any work that leave no file behind.
+// `terrashade insolation` end to end on a crop of the Grenoble DSM: the Cloud-Optimized
+// GeoTIFF's bands, their descriptions and units (gdalinfo and GDAL's COG validator as the
+// oracles), the quick-look, and one-line exit-2 refusals before any work that leave no file
+// behind.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,6 +34,17 @@ TEST(InsolationCli, TwoDaysGiveTenDescribedBandsAndAQuicklook) {
     ASSERT_EQ(bands.size(), 10u);
     EXPECT_EQ(bands[0].at("description").get<std::string>(), "global irradiation 2024-06-20 (kWh/m2)");
     EXPECT_EQ(bands[9].at("description").get<std::string>(), "hours of direct sun 2024-06-21 (h)");
+    EXPECT_EQ(bands[0].at("unit").get<std::string>(), "kWh/m2");
+    EXPECT_EQ(bands[9].at("unit").get<std::string>(), "h");
+    EXPECT_EQ(bands[0].at("noDataValue"), "NaN");
+    // A Cloud-Optimized GeoTIFF of band-separate planes that GDAL's validator takes without a
+    // warning (the line on the headers' size is printed only then).
+    EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["LAYOUT"], "COG");
+    EXPECT_EQ(j["metadata"]["IMAGE_STRUCTURE"]["INTERLEAVE"], "BAND");
+    const Result valid = ts::cli_test::run(
+        "/usr/bin/python3 -m osgeo_utils.samples.validate_cloud_optimized_geotiff --full-check=yes " + quote(tif));
+    EXPECT_EQ(valid.exit_code, 0) << valid.out << valid.err;
+    EXPECT_NE(valid.out.find("The size of all IFD headers is"), std::string::npos) << valid.out << valid.err;
     // Around the solstice at 45 N a clear day gives ~8-9 kWh/m2 on open ground and ~15.5 h of
     // sun; no texel can get more than the extraterrestrial ~12 kWh/m2 on a sun-facing plane.
     const double max_global = bands[0].at("maximum").get<double>();

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,8 @@
 #include "app/dem_sun_tables.hpp"
 #include "app/dem_input.hpp"
 #include "app/insolation_quicklook.hpp"
+#include "app/insolation_shards.hpp"
+#include "app/shard_option.hpp"
 #include "app/io_plan.hpp"
 #include "app/job_memory.hpp"
 #include "app/options/insolation_options.hpp"
@@ -23,6 +27,8 @@
 #include "core/solar/insolation_model.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
+#include "core/tiles/block_shading.hpp"
+#include "core/tiles/tile_export.hpp"
 #include "core/util/error.hpp"
 #include "core/util/progress_bar.hpp"
 #include "core/util/staged_outputs.hpp"
@@ -42,8 +48,25 @@ struct InsolationOptions {
     int directions = 64, bins_per_direction = 4;
     int threads = 0;
     std::string out, quicklook;
+    std::string shard;  // K/N: rows of the map (insolation_shards.hpp)
     DeviceArgs device;
 };
+
+// Everything that changes a value of the map, for the shards' records: shards of two jobs
+// never merge.
+std::string describe_job(const InsolationOptions& o, const solar::InsolationSettings& s, const dem::Dem& dem) {
+    const auto [first, last] = insolation_dates(o.sun);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "dem %s; %04d-%02d-%02d..%04d-%02d-%02d by %s; albedo %.9g index %.9g step %.9g; directions %d x %d; "
+                  "latitude step %.9g level step %.9g; linke",
+                  tiles::dem_identity(dem).c_str(), first.year, first.month, first.day, last.year, last.month,
+                  last.day, o.by.c_str(), s.albedo, s.clear_sky_index, s.step_minutes, o.directions,
+                  o.bins_per_direction, o.band_step_deg, o.level_step_m);
+    std::string out = text;
+    for (double tl : s.linke_monthly) out += " " + std::to_string(tl);
+    return out;
+}
 
 constexpr int kMaxBands = 2000;  // --by day over ~a year at most (5 quantities a day)
 
@@ -78,13 +101,22 @@ void run_insolation(InsolationOptions& o) {
                     return f.writer == raster::ImageWriter::png;
                 }));
     plan.check();
+    const Shard shard = shard_of_process(o.shard);
+    if (!shard.whole() && !o.quicklook.empty())
+        throw InputError("--quicklook: a shard holds a part of the map; give it to the single run, not with --shard");
 
     const Stopwatch total;
     const dem::Dem dem = load_dem_input(o.dem);
     warn_if_single_line(dem);
-    const std::uint64_t texels = std::uint64_t(dem.width) * dem.height;
+    // The rows this process sums: all, or its shard's.
+    const IndexRange part = frame_range(std::size_t(dem.height), shard);
+    if (part.size() == 0)
+        throw InputError("--shard " + shard_text(shard) + ": the DEM has " + std::to_string(dem.height) +
+                         " rows, fewer than the shards");
+    const visibility::ReceiverWindow rows{0, int(part.begin), dem.width, int(part.size())};
+    const std::uint64_t texels = std::uint64_t(dem.width) * part.size();
     const std::uint64_t bands = settings.periods.size() * solar::kQuantities;
-    check_job_memory("insolation of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
+    check_job_memory("insolation of " + std::to_string(dem.width) + "x" + std::to_string(rows.height) + " texels",
                      visibility_peak_bytes(texels, o.directions, false) + texels * (bands * 8 + 16),
                      "use --crop, a coarser --by, or fewer --directions");
     const terrain::HeightGrid grid = terrain::metric_view(dem);
@@ -93,13 +125,23 @@ void run_insolation(InsolationOptions& o) {
     visibility::VisibilityRequest request;
     request.horizon.directions = o.directions;
     request.horizon.threads = o.threads;
+    request.horizon.window = rows;  // a shard's receivers, over the whole DEM: one run's horizons
     ProgressBar horizon_bar("horizons", texels * std::uint64_t(o.directions), "rays");
     request.horizon.progress = &horizon_bar;
     const Stopwatch t_vis;
     const visibility::VisibilityResult vis = device.visibility().compute(grid, request);
     horizon_bar.finish();
     const double vis_s = t_vis.seconds();
-    const render::NormalField normals = render::terrain_normals(grid, o.threads);
+    if (vis.horizons.texels() != texels) throw std::logic_error("insolation: the horizons do not cover the rows");
+    // The rows as a grid of their own, with their normals (from the whole grid, so the shard's
+    // edge rows have their neighbours) and latitudes.
+    std::vector<float> row_z;
+    std::vector<std::uint8_t> row_voids;
+    const terrain::HeightGrid row_grid = tiles::window_grid(grid, rows, row_z, row_voids);
+    render::NormalField normals = render::terrain_normals(grid, o.threads);
+    const std::size_t first_texel = part.begin * std::size_t(dem.width);
+    for (std::vector<float>* v : {&normals.x, &normals.y, &normals.z})
+        *v = std::vector<float>(v->begin() + std::ptrdiff_t(first_texel), v->begin() + std::ptrdiff_t(first_texel + texels));
 
     // The period's sun: tables per latitude band and elevation level.
     const auto [first, last] = insolation_dates(o.sun);
@@ -111,7 +153,8 @@ void run_insolation(InsolationOptions& o) {
 
     const Stopwatch t_sum;
     ProgressBar sum_bar("insolation", texels, "texels");
-    const solar::InsolationMap map = solar::integrate_insolation(model, grid, vis.horizons, normals, sun.latitude, &sum_bar);
+    const std::span<const float> latitude(sun.latitude.data() + first_texel, texels);
+    const solar::InsolationMap map = solar::integrate_insolation(model, row_grid, vis.horizons, normals, latitude, &sum_bar);
     sum_bar.finish();
     const double sum_s = t_sum.seconds();
 
@@ -122,8 +165,12 @@ void run_insolation(InsolationOptions& o) {
             units.push_back(solar::quantity_unit(q));
         }
     StagedOutputs outputs;
+    std::string record;  // a shard says which rows of which job it holds, for `merge`
+    if (!shard.whole())
+        record = insolation_shard_text({describe_job(o, settings, dem), shard, rows.row0, rows.height, dem.height, names, units});
     outputs.stage(o.out, [&](const std::filesystem::path& tmp) {
-        raster::write_float_cog(tmp, dem.width, dem.height, int(bands), map.values.data(), dem.georef, names, units);
+        raster::write_float_cog(tmp, dem.width, rows.height, int(bands), map.values.data(),
+                                dem.georef.window(0, rows.row0, dem.width, rows.height), names, units, record);
     });
     QuicklookRange range;
     if (!o.quicklook.empty()) {
@@ -142,9 +189,12 @@ void run_insolation(InsolationOptions& o) {
         });
     }
     outputs.commit();
+    if (!shard.whole())
+        std::printf("shard %s: rows %d..%d of %d\n", shard_text(shard).c_str(), rows.row0, rows.row0 + rows.height - 1,
+                    dem.height);
     std::printf("insolation: %dx%d texels, %zu period%s (%s .. %s), %d azimuths x %d bins, %d latitude band%s x %d "
                 "level%s, %zu sun steps of %.3g min\n",
-                dem.width, dem.height, settings.periods.size(), settings.periods.size() == 1 ? "" : "s",
+                dem.width, rows.height, settings.periods.size(), settings.periods.size() == 1 ? "" : "s",
                 settings.periods.front().label.c_str(), settings.periods.back().label.c_str(), o.directions,
                 o.bins_per_direction, model.bands(), model.bands() == 1 ? "" : "s", model.levels(),
                 model.levels() == 1 ? "" : "s", model.samples(), settings.step_minutes);
@@ -181,6 +231,7 @@ void add_insolation_command(CLI::App& root) {
     cmd->add_option("--out", o->out,
                     "Float32 Cloud-Optimized GeoTIFF, bands described with quantity, period and unit")->required();
     cmd->add_option("--quicklook", o->quicklook, "PNG of the global irradiation with a colour ramp and legend");
+    add_shard_option(*cmd, o->shard);
     add_threads_option(*cmd, o->threads);
     add_device_options(*cmd, o->device);
     cmd->callback([o] { run_insolation(*o); });

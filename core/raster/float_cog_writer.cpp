@@ -60,6 +60,7 @@ FloatLevel halved_finite_mean(const FloatLevel& in, int bands) {
 struct MainImageTags {
     const geo::Georef* georef;
     std::string band_metadata_xml;
+    std::string image_description;
 };
 
 void write_float_directory(TiffFile& file, const FloatLevel& level, int bands, const MainImageTags* main) {
@@ -85,6 +86,8 @@ void write_float_directory(TiffFile& file, const FloatLevel& level, int bands, c
     if (main) {
         if (!main->band_metadata_xml.empty())
             TIFFSetField(tif, TIFFTAG_GDAL_METADATA, main->band_metadata_xml.c_str());
+        if (!main->image_description.empty())
+            TIFFSetField(tif, TIFFTAG_IMAGEDESCRIPTION, main->image_description.c_str());
         write_geotiff_georef(tif, *main->georef, file.path());
     }
     const std::size_t t = std::size_t(kCogTileSize);
@@ -127,7 +130,7 @@ bool needs_bigtiff(int width, int height, int bands) {
 
 void write_float_cog(const std::filesystem::path& path, int width, int height, int bands, const float* data,
                      const geo::Georef& georef, const std::vector<std::string>& descriptions,
-                     const std::vector<std::string>& units) {
+                     const std::vector<std::string>& units, const std::string& image_description) {
     if (!written_as(path, ImageWriter::geotiff))
         throw input_error(path.string(), "unknown extension for a float raster (use .tif or .tiff)");
     if (width <= 0 || height <= 0 || bands <= 0)
@@ -136,7 +139,7 @@ void write_float_cog(const std::filesystem::path& path, int width, int height, i
     // The TIFF's SamplesPerPixel and ExtraSamples count are 16-bit.
     if (bands > 65535) throw input_error(path.string(), std::to_string(bands) + " bands: a TIFF holds at most 65535");
     if (!georef.valid()) throw input_error(path.string(), "a Cloud-Optimized GeoTIFF needs georeferencing");
-    const MainImageTags main{&georef, gdal_band_metadata_xml(bands, descriptions, units)};
+    const MainImageTags main{&georef, gdal_band_metadata_xml(bands, descriptions, units), image_description};
     write_atomically(path, [&](const std::filesystem::path& tmp) {
         {
             // Little-endian, as lay_out_as_cog reads.

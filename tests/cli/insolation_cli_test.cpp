@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -65,6 +67,54 @@ TEST(InsolationCli, BadInputIsOneLineExitTwoAndNoOutput) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(tif)) << args;
     }
+}
+
+}  // namespace
+
+namespace {
+
+std::string bytes_of(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Shards sum rows of the map with one run's horizons (each shard's receivers swept over the
+// whole DEM), so the merge is the single run's file byte for byte; what is not one whole job
+// is refused with one line and no output.
+TEST(InsolationCli, ShardsMergeIntoTheSingleRunsFileByteForByte) {
+    const auto dir = ts::cli_test::temp_dir("insolation_shards");
+    const std::string job = "insolation " + kCroppedDem + " --from 2024-03-01 --to 2024-04-30 --by month --step 10";
+    const Result whole = run_ts(job + " --out " + quote((dir / "whole.tif").string()));
+    ASSERT_EQ(whole.exit_code, 0) << whole.err;
+    std::string parts;
+    for (int k = 0; k < 3; ++k) {
+        const std::string part = (dir / ("p" + std::to_string(k) + ".tif")).string();
+        const Result r = run_ts(job + " --shard " + std::to_string(k) + "/3 --out " + quote(part));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_NE(r.out.find("shard " + std::to_string(k) + "/3: rows"), std::string::npos) << r.out;
+        parts = quote(part) + " " + parts;  // given in any order
+    }
+    const std::string merged = (dir / "merged.tif").string();
+    const Result m = run_ts("merge " + parts + " --out " + quote(merged));
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    EXPECT_EQ(bytes_of(merged), bytes_of(dir / "whole.tif"));
+
+    // Another job's shard (another albedo), a shard missing, a map that is no shard, --quicklook.
+    const std::string other = (dir / "other.tif").string();
+    ASSERT_EQ(run_ts(job + " --albedo 0.5 --shard 2/3 --out " + quote(other)).exit_code, 0);
+    const std::string p0 = quote((dir / "p0.tif").string()), p1 = quote((dir / "p1.tif").string());
+    const std::string bad = (dir / "bad.tif").string();
+    for (const std::string& args : {"merge " + p0 + " " + p1 + " " + quote(other), "merge " + p0 + " " + p1,
+                                   "merge " + p0 + " " + p1 + " " + quote((dir / "whole.tif").string())}) {
+        const Result r = run_ts(args + " --out " + quote(bad));
+        EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(bad)) << args;
+    }
+    const Result q = run_ts(job + " --shard 0/3 --out " + quote(bad) + " --quicklook " +
+                            quote((dir / "bad.png").string()));
+    EXPECT_EQ(q.exit_code, 2) << q.err;
+    EXPECT_FALSE(std::filesystem::exists(bad));
 }
 
 }  // namespace

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Runs one terrashade tiles or relight job as a Slurm job array of N shards, then merges the
+# Runs one terrashade tiles, relight or insolation job as a Slurm job array of N shards, then merges the
 # shards in a job that starts only when every shard succeeded (docs/scale.md).
 #
 #   scripts/slurm_shards.sh --shards N [--max-parallel K] [--work DIR] [--terrashade BIN]
 #       [--sbatch "OPTIONS"] -- tiles DEM... --zoom 0-12 --out ALL.mbtiles [tile options]
 #   scripts/slurm_shards.sh --shards N -- relight DEM --times ... --exposure 13 --out FRAMES/
+#   scripts/slurm_shards.sh --shards N -- insolation DEM --year 2024 --out YEAR.tif
 #
 # What it submits:
 #   sbatch --array=0-(N-1)%K WORK/shard.sbatch   each task: terrashade ... --shard ID/N [--resume]
-#                                                --out WORK/shard_ID(.mbtiles)
+#                                                --out WORK/shard_ID(.mbtiles|.tif)
 #   sbatch --dependency=afterok:ARRAY WORK/merge.sbatch   terrashade merge WORK/shard_* --out OUT
 # It prints "array JOBID" and "merge JOBID". The shard number is given explicitly (--shard ID/N),
 # so one shard resubmitted alone (sbatch --array=3 WORK/shard.sbatch) is still shard 3 of N, and
@@ -36,7 +37,7 @@ case "$max_parallel" in ''|*[!0-9]*|0) echo "slurm_shards.sh: --max-parallel K, 
 [ -x "$bin" ] || { echo "slurm_shards.sh: terrashade not found: give --terrashade BIN" >&2; exit 2; }
 bin=$(realpath "$bin")
 command="$1"; shift
-case "$command" in tiles|relight) ;; *) echo "slurm_shards.sh: the command is tiles or relight, not $command" >&2; exit 2 ;; esac
+case "$command" in tiles|relight|insolation) ;; *) echo "slurm_shards.sh: the command is tiles, relight or insolation, not $command" >&2; exit 2 ;; esac
 
 # The user's --out becomes the merge's; each shard writes its own under WORK.
 args=() out=""
@@ -55,9 +56,11 @@ mkdir -p "$work/log"
 work=$(realpath "$work")
 ext=""
 [ "$command" = tiles ] && [ "${out%.mbtiles}" != "$out" ] && ext=".mbtiles"
+[ "$command" = insolation ] && ext=".${out##*.}"  # the map's own extension (.tif, .tiff)
 
 quoted=$(printf ' %q' "${args[@]}")
-# Tiles resume what a killed shard committed; a relight shard redoes its block of frames.
+# Tiles resume what a killed shard committed; a relight shard redoes its block of frames, an
+# insolation shard its rows.
 resume=""
 [ "$command" = tiles ] && resume=" --resume"
 cat >"$work/shard.sbatch" <<SBATCH

@@ -155,3 +155,16 @@ n=$(grep -c '\.png ' "$tmp/single_frames.txt")
 [ "$n" -eq 5 ] || fail "$n frames in the single relight, expected 5"
 diff "$tmp/single_frames.txt" "$tmp/merged_frames.txt" >&2 || fail "merged relight folder differs from the single run"
 echo "merged relight folder equals the single run: $n frames and times.csv"
+
+echo "== 4. insolation: a month's map of a crop as a 2-shard array, merged"
+insolation_flags=(--crop 5.70,45.15,5.85,45.25 --from 2025-06-01 --to 2025-06-30 --step 15 --directions 16 --threads 1)
+"$bin" insolation "$dem" "${insolation_flags[@]}" --out "$tmp/single_map.tif" >"$tmp/single_map.log"
+jobs=$(bash "$src/scripts/slurm_shards.sh" --shards 2 --work "$tmp/ins" --terrashade "$bin" \
+  -- insolation "$dem" "${insolation_flags[@]}" --out "$tmp/merged_map.tif")
+array=$(awk '/^array/ {print $2}' <<<"$jobs")
+merge=$(awk '/^merge/ {print $2}' <<<"$jobs")
+wait_gone "$array" 120 || fail "insolation array $array"
+wait_gone "$merge" 60 || fail "the insolation merge job $merge never started (a shard failed)"
+cat "$tmp/ins/log/merge.out"
+cmp "$tmp/single_map.tif" "$tmp/merged_map.tif" || fail "merged insolation map differs from the single run"
+echo "merged insolation map equals the single run byte for byte"

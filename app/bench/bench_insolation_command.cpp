@@ -131,8 +131,14 @@ std::string grass_script(const BenchInsolationOptions& o, const fs::path& crop, 
       << "timed sun_own r.sun" << common << " beam_rad=beam_own insol_time=time_own\n"
       << "timed sun_horizons r.sun" << common << " horizon_basename=hor horizon_step=" << number(hstep)
       << " beam_rad=beam_hz insol_time=time_hz glob_rad=glob_hz diff_rad=diff_hz refl_rad=refl_hz\n"
+      // r.horizon writes negative angles where the ground falls away all round (peaks, the
+      // crop's edges); r.sun 8.2 then shades the texel all day (see docs/insolation.md). The
+      // same maps raised to 0 show what r.sun computes once that is worked around.
+      << "for h in $(g.list raster pattern='hor_*'); do r.mapcalc \"zero_$h = max($h, 0.0)\" --quiet; done\n"
+      << "timed sun_clamped r.sun" << common << " horizon_basename=zero_hor horizon_step=" << number(hstep)
+      << " beam_rad=beam_zero insol_time=time_zero\n"
       << "r.series input=$(g.list raster pattern='hor_*' separator=comma) output=horizon_max method=maximum --quiet\n"
-      << "for m in beam_own time_own beam_hz time_hz slope horizon_max; do\n"
+      << "for m in beam_own time_own beam_hz time_hz beam_zero time_zero slope horizon_max; do\n"
       << "  r.out.gdal -c input=$m output=" << shell_quote(dir.string()) << "/grass_$m.tif type=Float32 --quiet\n"
       << "done\n";
     return s.str();
@@ -283,7 +289,7 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
     std::vector<AgreementRow> agree;
     std::vector<float> beam_ts = read_band(ts_day, 2, dir, 1000.0, texels);  // kWh/m2 -> Wh/m2, as r.sun
     std::vector<float> hours_ts = read_band(ts_day, 5, dir, 1.0, texels);
-    std::vector<float> beam_hz, beam_own, open_mask;
+    std::vector<float> beam_hz, beam_zero, beam_own, open_mask;
     if (o.no_grass) {
         std::printf("r.sun: skipped (--no-grass)\n");
     } else if (!on_path("grass")) {
@@ -303,6 +309,7 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
         add("r.horizon", nh + " horizon maps", t["horizon"], kNaN);
         add("r.sun", "own shadowing (no horizon maps), " + step, t["sun_own"], t["sun_own"].wall_s / ts_day_s);
         add("r.sun", nh + " r.horizon maps, " + step, t["sun_horizons"], t["sun_horizons"].wall_s / ts_day_s);
+        add("r.sun", nh + " maps raised to 0 deg, " + step, t["sun_clamped"], t["sun_clamped"].wall_s / ts_day_s);
         const TimedRun both{true, t["horizon"].wall_s + t["sun_horizons"].wall_s,
                             t["horizon"].cpu_s + t["sun_horizons"].cpu_s};
         add("r.horizon+r.sun", nh + " maps then r.sun, " + step, both, both.wall_s / ts_day_s);
@@ -316,6 +323,8 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
         beam_own = read_band(dir / "grass_beam_own.tif", 1, dir, 1.0, texels);
         const std::vector<float> hours_hz = read_band(dir / "grass_time_hz.tif", 1, dir, 1.0, texels);
         const std::vector<float> hours_own = read_band(dir / "grass_time_own.tif", 1, dir, 1.0, texels);
+        beam_zero = read_band(dir / "grass_beam_zero.tif", 1, dir, 1.0, texels);
+        const std::vector<float> hours_zero = read_band(dir / "grass_time_zero.tif", 1, dir, 1.0, texels);
         const std::vector<float> slope = read_band(dir / "grass_slope.tif", 1, dir, 1.0, texels);
         const std::vector<float> hmax = read_band(dir / "grass_horizon_max.tif", 1, dir, 180.0 / M_PI, texels);
         // Open terrain: gentle slope and a low horizon all round (the r.horizon maps r.sun is given),
@@ -330,6 +339,8 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
         }
         agree.push_back(agreement("r.horizon maps", "open", beam_hz, beam_ts, hours_hz, hours_ts, open));
         agree.push_back(agreement("r.horizon maps", "elsewhere", beam_hz, beam_ts, hours_hz, hours_ts, rest));
+        agree.push_back(agreement("maps raised to 0", "open", beam_zero, beam_ts, hours_zero, hours_ts, open));
+        agree.push_back(agreement("maps raised to 0", "elsewhere", beam_zero, beam_ts, hours_zero, hours_ts, rest));
         agree.push_back(agreement("own shadowing", "open", beam_own, beam_ts, hours_own, hours_ts, open));
         agree.push_back(agreement("own shadowing", "elsewhere", beam_own, beam_ts, hours_own, hours_ts, rest));
     }
@@ -354,13 +365,15 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
         });
     if (!o.maps.empty()) {
         if (beam_hz.empty()) throw InputError("--maps needs r.sun (GRASS)");
-        // Band order: terrashade beam, r.sun beam with the maps, r.sun beam with its own
-        // shadowing (Wh/m2 over the day), open terrain (1) or not (0).
+        // Band order: terrashade beam, r.sun beam with the maps, with the maps raised to 0, with
+        // its own shadowing (Wh/m2 over the day), open terrain (1) or not (0).
         std::vector<float> bands;
-        for (const auto* b : {&beam_ts, &beam_hz, &beam_own, &open_mask}) bands.insert(bands.end(), b->begin(), b->end());
+        for (const auto* b : {&beam_ts, &beam_hz, &beam_zero, &beam_own, &open_mask})
+            bands.insert(bands.end(), b->begin(), b->end());
         outputs.stage(o.maps, [&](const fs::path& tmp) {
-            raster::write_float_raster(tmp, crop.width, crop.height, 4, bands.data(), crop.georef,
+            raster::write_float_raster(tmp, crop.width, crop.height, 5, bands.data(), crop.georef,
                                        {"terrashade beam (Wh/m2)", "r.sun beam, r.horizon maps (Wh/m2)",
+                                        "r.sun beam, r.horizon maps raised to 0 (Wh/m2)",
                                         "r.sun beam, own shadowing (Wh/m2)", "open terrain (1) or not (0)"});
         });
     }
@@ -407,8 +420,8 @@ void add_bench_insolation_command(CLI::App& bench) {
         ->check(within(1, 86400));
     cmd->add_option("--csv", o->csv, "Write the speed and beam rows as CSV (input of scripts/chart_insolation.py)");
     cmd->add_option("--maps", o->maps,
-                    "Write the beam maps (terrashade, r.sun with maps, r.sun own shadowing; Wh/m2) and the open "
-                    "mask as a 4-band float GeoTIFF (input of scripts/chart_insolation.py)");
+                    "Write the beam maps (terrashade, r.sun with the maps, with them raised to 0, with its own "
+                    "shadowing; Wh/m2) and the open mask as a 5-band float GeoTIFF (input of scripts/chart_insolation.py)");
     cmd->callback([o] { run_bench_insolation(*o); });
 }
 

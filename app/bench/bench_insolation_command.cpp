@@ -168,18 +168,26 @@ AgreementRow agreement(const std::string& rsun, const std::string& texels, const
     return a;
 }
 
+// A text cell as RFC 4180 writes it: quoted (quotes doubled) when it holds a comma or a quote.
+std::string csv_cell(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
 std::string csv_text(const BenchInsolationOptions& o, const std::string& dem_name, int w, int h,
                      const std::vector<SpeedRow>& speed, const std::vector<AgreementRow>& agree) {
     std::ostringstream csv;
     csv << "section,dem,width,height,date,tool,what,period,wall_s,cpu_s,ratio_to_terrashade,rsun,texels,n,"
            "mean_rel,p5_rel,p50_rel,p95_rel,within_2pct,hours_diff\n";
-    const std::string head = dem_name + ',' + std::to_string(w) + ',' + std::to_string(h) + ',' + o.date + ',';
+    const std::string head = csv_cell(dem_name) + ',' + std::to_string(w) + ',' + std::to_string(h) + ',' + o.date + ',';
     for (const SpeedRow& r : speed)
-        csv << "speed," << head << r.tool << ',' << r.what << ',' << r.period << ','
+        csv << "speed," << head << csv_cell(r.tool) << ',' << csv_cell(r.what) << ',' << r.period << ','
             << csv_number(r.run.ok ? r.run.wall_s : kNaN) << ',' << csv_number(r.run.ok ? r.run.cpu_s : kNaN) << ','
             << csv_number(r.ratio) << ",,,,,,,,,\n";
     for (const AgreementRow& a : agree)
-        csv << "beam," << head << ",,,,,," << a.rsun << ',' << a.texels << ',' << a.n << ',' << csv_number(a.mean)
+        csv << "beam," << head << ",,,,,," << csv_cell(a.rsun) << ',' << a.texels << ',' << a.n << ',' << csv_number(a.mean)
             << ',' << csv_number(a.p5) << ',' << csv_number(a.p50) << ',' << csv_number(a.p95) << ','
             << csv_number(a.within_2pct) << ',' << csv_number(a.hours_diff) << '\n';
     return csv.str();

@@ -21,6 +21,7 @@
 #include "app/bench/csv_number.hpp"
 #include "app/bench/error_stats.hpp"
 #include "app/bench/grass_session.hpp"
+#include "app/bench/insolation_agreement.hpp"
 #include "app/bench/shell_command.hpp"
 #include "app/bench/timed_shell.hpp"
 #include "app/io_plan.hpp"
@@ -47,6 +48,7 @@ struct BenchInsolationOptions {
     double step_hours = 0.5;  // r.sun's and SAGA's time step (terrashade keeps its 2 min)
     int horizons = 32;        // r.horizon maps given to r.sun
     int threads = 2;
+    int repeats = 3;  // timed runs of each tool; the median is reported
     double open_horizon_deg = 5, open_slope_deg = 5;
     bool no_grass = false, no_saga = false;
     int saga_timeout_s = 300;
@@ -56,17 +58,22 @@ struct BenchInsolationOptions {
 struct SpeedRow {
     std::string tool, what, period;
     TimedRun run;
-    double ratio = kNaN;  // wall time / terrashade's wall time for the same period
+    bool compared = true;  // a whole tool's time for the period (a preparatory step alone is not)
+    // Wall and CPU time / terrashade's for the same period (set_ratios). CPU too: a shared
+    // machine inflates wall times, CPU times much less.
+    double ratio = kNaN, cpu_ratio = kNaN;
 };
 
-// r.sun's beam against terrashade's over one class of texels: relative difference r.sun /
-// terrashade - 1.
-struct AgreementRow {
-    std::string rsun, texels;
-    std::size_t n = 0;
-    double mean = kNaN, p5 = kNaN, p50 = kNaN, p95 = kNaN, within_2pct = kNaN;
-    double hours_diff = kNaN;  // mean r.sun insol_time - terrashade hours of direct sun, h
-};
+void set_ratios(std::vector<SpeedRow>& rows) {
+    for (SpeedRow& r : rows) {
+        if (!r.compared || !r.run.ok) continue;
+        for (const SpeedRow& t : rows)
+            if (t.tool == "terrashade" && t.period == r.period && t.run.ok) {
+                r.ratio = r.run.wall_s / t.run.wall_s;
+                r.cpu_ratio = r.run.cpu_s / t.run.cpu_s;
+            }
+    }
+}
 
 // The DEM's centred window of n x n texels (n clamped to the DEM), voids as NaN.
 dem::Dem centre_crop(const dem::Dem& d, int n) {
@@ -120,52 +127,38 @@ std::string number(double v) {
 // shadowing, ray-traced per step) and with them, and the maps the comparison reads.
 std::string grass_script(const BenchInsolationOptions& o, const fs::path& crop, const fs::path& dir, int day) {
     const double hstep = 360.0 / o.horizons;
+    // --overwrite: the modules run --repeats times.
     const std::string common = " elevation=dem slope=slope aspect=aspect linke_value=" + number(o.linke) +
                                " albedo_value=" + number(o.albedo) + " day=" + std::to_string(day) +
-                               " step=" + number(o.step_hours) + " nprocs=" + std::to_string(o.threads) + " --quiet";
+                               " step=" + number(o.step_hours) + " nprocs=" + std::to_string(o.threads) +
+                               " --quiet --overwrite";
+    // Every r.sun run writes all five outputs, so their times compare.
+    auto outputs = [](const std::string& tag) {
+        return " beam_rad=beam_" + tag + " diff_rad=diff_" + tag + " refl_rad=refl_" + tag + " glob_rad=glob_" + tag +
+               " insol_time=time_" + tag + "\n";
+    };
     std::ostringstream s;
     s << "r.in.gdal -o input=" << shell_quote(crop.string()) << " output=dem --quiet\n"
       << "g.region raster=dem\n"
-      << "timed slope_aspect r.slope.aspect elevation=dem slope=slope aspect=aspect --quiet\n"
-      << "timed horizon r.horizon elevation=dem step=" << number(hstep) << " output=hor --quiet\n"
-      << "timed sun_own r.sun" << common << " beam_rad=beam_own insol_time=time_own\n"
-      << "timed sun_horizons r.sun" << common << " horizon_basename=hor horizon_step=" << number(hstep)
-      << " beam_rad=beam_hz insol_time=time_hz glob_rad=glob_hz diff_rad=diff_hz refl_rad=refl_hz\n"
+      << "for rep in $(seq " << o.repeats << "); do\n"
+      << "timed slope_aspect r.slope.aspect elevation=dem slope=slope aspect=aspect --quiet --overwrite\n"
+      << "timed horizon r.horizon elevation=dem step=" << number(hstep) << " output=hor --quiet --overwrite\n"
+      << "timed sun_own r.sun" << common << outputs("own")
+      << "timed sun_horizons r.sun" << common << " horizon_basename=hor horizon_step=" << number(hstep) << outputs("hz")
       // r.horizon writes negative angles where the ground falls away all round (peaks, the
-      // crop's edges); r.sun 8.2 then shades the texel all day (see docs/insolation.md). The
+      // crop's edges); r.sun 8.2 then shades such a texel most of the day (docs/insolation.md). The
       // same maps raised to 0 show what r.sun computes once that is worked around.
-      << "for h in $(g.list raster pattern='hor_*'); do r.mapcalc \"zero_$h = max($h, 0.0)\" --quiet; done\n"
+      << "for h in $(g.list raster pattern='hor_*'); do\n"
+      << "  r.mapcalc \"zero_$h = max($h, 0.0)\" --quiet --overwrite\n"
+      << "done\n"
       << "timed sun_clamped r.sun" << common << " horizon_basename=zero_hor horizon_step=" << number(hstep)
-      << " beam_rad=beam_zero insol_time=time_zero\n"
+      << outputs("zero")
+      << "done\n"
       << "r.series input=$(g.list raster pattern='hor_*' separator=comma) output=horizon_max method=maximum --quiet\n"
       << "for m in beam_own time_own beam_hz time_hz beam_zero time_zero slope horizon_max; do\n"
       << "  r.out.gdal -c input=$m output=" << shell_quote(dir.string()) << "/grass_$m.tif type=Float32 --quiet\n"
       << "done\n";
     return s.str();
-}
-
-AgreementRow agreement(const std::string& rsun, const std::string& texels, const std::vector<float>& beam_rsun,
-                       const std::vector<float>& beam_ts, const std::vector<float>& hours_rsun,
-                       const std::vector<float>& hours_ts, const std::vector<std::uint8_t>& in_class) {
-    AgreementRow a;
-    a.rsun = rsun;
-    a.texels = texels;
-    std::vector<double> rel, dh;
-    for (std::size_t i = 0; i < beam_ts.size(); ++i) {
-        if (!in_class[i] || !std::isfinite(beam_rsun[i]) || !(beam_ts[i] > 0)) continue;
-        rel.push_back(double(beam_rsun[i]) / beam_ts[i] - 1);
-        if (std::isfinite(hours_rsun[i]) && std::isfinite(hours_ts[i])) dh.push_back(double(hours_rsun[i]) - hours_ts[i]);
-    }
-    a.n = rel.size();
-    if (rel.empty()) return a;
-    a.mean = bench::mean(rel);
-    a.hours_diff = bench::mean(dh);
-    a.within_2pct = double(std::count_if(rel.begin(), rel.end(), [](double r) { return std::abs(r) <= 0.02; })) /
-                    double(rel.size());
-    a.p5 = bench::percentile(rel, 0.05);
-    a.p50 = bench::percentile(rel, 0.5);
-    a.p95 = bench::percentile(rel, 0.95);
-    return a;
 }
 
 // A text cell as RFC 4180 writes it: quoted (quotes doubled) when it holds a comma or a quote.
@@ -179,30 +172,30 @@ std::string csv_cell(const std::string& s) {
 std::string csv_text(const BenchInsolationOptions& o, const std::string& dem_name, int w, int h,
                      const std::vector<SpeedRow>& speed, const std::vector<AgreementRow>& agree) {
     std::ostringstream csv;
-    csv << "section,dem,width,height,date,tool,what,period,wall_s,cpu_s,ratio_to_terrashade,rsun,texels,n,"
+    csv << "section,dem,width,height,date,tool,what,period,wall_s,cpu_s,wall_ratio,cpu_ratio,rsun,texels,n,"
            "mean_rel,p5_rel,p50_rel,p95_rel,within_2pct,hours_diff\n";
     const std::string head = csv_cell(dem_name) + ',' + std::to_string(w) + ',' + std::to_string(h) + ',' + o.date + ',';
     for (const SpeedRow& r : speed)
         csv << "speed," << head << csv_cell(r.tool) << ',' << csv_cell(r.what) << ',' << r.period << ','
             << csv_number(r.run.ok ? r.run.wall_s : kNaN) << ',' << csv_number(r.run.ok ? r.run.cpu_s : kNaN) << ','
-            << csv_number(r.ratio) << ",,,,,,,,,\n";
+            << csv_number(r.ratio) << ',' << csv_number(r.cpu_ratio) << ",,,,,,,,,\n";
     for (const AgreementRow& a : agree)
-        csv << "beam," << head << ",,,,,," << csv_cell(a.rsun) << ',' << a.texels << ',' << a.n << ',' << csv_number(a.mean)
+        csv << "beam," << head << ",,,,,,," << csv_cell(a.rsun) << ',' << a.texels << ',' << a.n << ',' << csv_number(a.mean)
             << ',' << csv_number(a.p5) << ',' << csv_number(a.p50) << ',' << csv_number(a.p95) << ','
             << csv_number(a.within_2pct) << ',' << csv_number(a.hours_diff) << '\n';
     return csv.str();
 }
 
 void print_speed(const std::vector<SpeedRow>& rows) {
-    std::printf("\n%-16s %-44s %-7s %9s %9s %9s\n", "tool", "what", "period", "wall_s", "cpu_s", "x_terra");
+    std::printf("\n%-16s %-44s %-7s %9s %9s %9s %9s\n", "tool", "what", "period", "wall_s", "cpu_s", "wall/ts",
+                "cpu/ts");
     for (const SpeedRow& r : rows) {
         if (!r.run.ok) {
-            std::printf("%-16s %-44s %-7s %9s %9s %9s\n", r.tool.c_str(), r.what.c_str(), r.period.c_str(), "failed",
-                        "-", "-");
+            std::printf("%-16s %-44s %-7s %9s\n", r.tool.c_str(), r.what.c_str(), r.period.c_str(), "failed");
             continue;
         }
-        std::printf("%-16s %-44s %-7s %9.2f %9.2f %9.2f\n", r.tool.c_str(), r.what.c_str(), r.period.c_str(),
-                    r.run.wall_s, r.run.cpu_s, r.ratio);
+        std::printf("%-16s %-44s %-7s %9.2f %9.2f %9.2f %9.2f\n", r.tool.c_str(), r.what.c_str(), r.period.c_str(),
+                    r.run.wall_s, r.run.cpu_s, r.ratio, r.cpu_ratio);
     }
 }
 
@@ -228,7 +221,7 @@ std::string terrashade_binary() {
 // SAGA's Potential Incoming Solar Radiation (ta_lighting 2, Hofierka and Suri's atmosphere, the
 // same Linke turbidity) for the day on a UTM copy of the crop: SAGA takes cell sizes in map units.
 SpeedRow run_saga(const BenchInsolationOptions& o, const fs::path& crop, const fs::path& dir, double lon, double lat) {
-    SpeedRow row{"saga", "ta_lighting 2, UTM copy, step " + number(o.step_hours) + " h", "day", {}, kNaN};
+    SpeedRow row{"saga", "ta_lighting 2, UTM copy, step " + number(o.step_hours) + " h", "day", {}};
     const int zone = std::clamp(int(std::floor((lon + 180) / 6)) + 1, 1, 60);
     const std::string epsg = "EPSG:" + std::to_string((lat >= 0 ? 32600 : 32700) + zone);
     const fs::path utm = dir / "saga_utm.tif", log = dir / "saga.log";
@@ -242,7 +235,7 @@ SpeedRow run_saga(const BenchInsolationOptions& o, const fs::path& crop, const f
                             " -GRD_LINKE_DEFAULT " + number(o.linke) + " -METHOD 3 -LOCATION 1 -PERIOD 1 -DAY " +
                             o.date + " -HOUR_RANGE_MIN 0 -HOUR_RANGE_MAX 24 -HOUR_STEP " + number(o.step_hours) +
                             " > " + shell_quote(log.string()) + " 2>&1";
-    row.run = run_timed(cmd);
+    row.run = run_timed(cmd, o.repeats);
     if (!row.run.ok)
         std::printf("saga: failed or timed out after %d s (--saga-timeout); see %s\n", o.saga_timeout_s,
                     log.string().c_str());
@@ -282,17 +275,18 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
                                   std::to_string(o.threads) + " > " + shell_quote((dir / "terrashade.log").string()) +
                                   " 2>&1";
     const fs::path ts_day = dir / "ts_day.tif", ts_year = dir / "ts_year.tif";
-    SpeedRow day_row{"terrashade", "insolation, 64 horizon azimuths, step 2 min", "day", {}, 1.0};
+    SpeedRow day_row{"terrashade", "insolation, 64 horizon azimuths, step 2 min", "day", {}};
     day_row.run = run_timed(shell_quote(bin) + " insolation " + shell_quote(crop_tif.string()) + " --from " + o.date +
-                            " --to " + o.date + " --out " + shell_quote(ts_day.string()) + ts_common);
+                            " --to " + o.date + " --out " + shell_quote(ts_day.string()) + ts_common,
+                            o.repeats);
     if (!day_row.run.ok) throw InputError("terrashade insolation failed; see " + (dir / "terrashade.log").string());
-    SpeedRow year_row{"terrashade", "insolation, 64 horizon azimuths, step 2 min", "year", {}, 1.0};
+    SpeedRow year_row{"terrashade", "insolation, 64 horizon azimuths, step 2 min", "year", {}};
     year_row.run = run_timed(shell_quote(bin) + " insolation " + shell_quote(crop_tif.string()) + " --year " +
-                             std::to_string(date.year) + " --out " + shell_quote(ts_year.string()) + ts_common);
+                             std::to_string(date.year) + " --out " + shell_quote(ts_year.string()) + ts_common,
+                             o.repeats);
     if (!year_row.run.ok) throw InputError("terrashade insolation --year failed; see " + (dir / "terrashade.log").string());
     speed.push_back(day_row);
     speed.push_back(year_row);
-    const double ts_day_s = day_row.run.wall_s, ts_year_s = year_row.run.wall_s;
 
     std::vector<AgreementRow> agree;
     std::vector<float> beam_ts = read_band(ts_day, 2, dir, 1000.0, texels);  // kWh/m2 -> Wh/m2, as r.sun
@@ -310,22 +304,21 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
         }  // the location is removed here
         const std::string step = "step " + number(o.step_hours) + " h";
         const std::string nh = std::to_string(o.horizons);
-        auto add = [&](const std::string& tool, const std::string& what, const TimedRun& run, double ratio) {
-            speed.push_back(SpeedRow{tool, what, "day", run, ratio});
+        auto add = [&](const std::string& tool, const std::string& what, const TimedRun& run, bool compared) {
+            speed.push_back(SpeedRow{tool, what, "day", run, compared});
         };
-        add("r.slope.aspect", "slope and aspect for r.sun", t["slope_aspect"], kNaN);
-        add("r.horizon", nh + " horizon maps", t["horizon"], kNaN);
-        add("r.sun", "own shadowing (no horizon maps), " + step, t["sun_own"], t["sun_own"].wall_s / ts_day_s);
-        add("r.sun", nh + " r.horizon maps, " + step, t["sun_horizons"], t["sun_horizons"].wall_s / ts_day_s);
-        add("r.sun", nh + " maps raised to 0 deg, " + step, t["sun_clamped"], t["sun_clamped"].wall_s / ts_day_s);
+        add("r.slope.aspect", "slope and aspect for r.sun", t["slope_aspect"], false);
+        add("r.horizon", nh + " horizon maps", t["horizon"], false);
+        add("r.sun", "own shadowing (no horizon maps), " + step, t["sun_own"], true);
+        add("r.sun", nh + " r.horizon maps, " + step, t["sun_horizons"], true);
+        add("r.sun", nh + " maps raised to 0 deg, " + step, t["sun_clamped"], true);
         const TimedRun both{true, t["horizon"].wall_s + t["sun_horizons"].wall_s,
                             t["horizon"].cpu_s + t["sun_horizons"].cpu_s};
-        add("r.horizon+r.sun", nh + " maps then r.sun, " + step, both, both.wall_s / ts_day_s);
+        add("r.horizon+r.sun", nh + " maps then r.sun, " + step, both, true);
         // Not measured: what 365 days of r.sun would take at the day's cost (the maps made once).
         const TimedRun year_est{true, t["horizon"].wall_s + 365 * t["sun_horizons"].wall_s,
                                 t["horizon"].cpu_s + 365 * t["sun_horizons"].cpu_s};
-        speed.push_back(SpeedRow{"r.sun (est.)", "r.horizon once + 365 x the day above", "year", year_est,
-                                 year_est.wall_s / ts_year_s});
+        speed.push_back(SpeedRow{"r.sun (est.)", "r.horizon once + 365 x the day above", "year", year_est});
 
         beam_hz = read_band(dir / "grass_beam_hz.tif", 1, dir, 1.0, texels);
         beam_own = read_band(dir / "grass_beam_own.tif", 1, dir, 1.0, texels);
@@ -357,10 +350,9 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
     } else if (!on_path("saga_cmd")) {
         std::printf("saga: skipped (saga_cmd not installed: Debian saga)\n");
     } else {
-        SpeedRow s = run_saga(o, crop_tif, dir, centre.x, centre.y);
-        if (s.run.ok) s.ratio = s.run.wall_s / ts_day_s;
-        speed.push_back(s);
+        speed.push_back(run_saga(o, crop_tif, dir, centre.x, centre.y));
     }
+    set_ratios(speed);
     print_speed(speed);
     if (!agree.empty()) print_agreement(agree);
 
@@ -421,6 +413,9 @@ void add_bench_insolation_command(CLI::App& bench) {
     cmd->add_option("--open-slope", o->open_slope_deg, "Open terrain: slope below this, degrees")
         ->capture_default_str()
         ->check(within(0.0, 90.0));
+    cmd->add_option("--repeats", o->repeats, "Timed runs of each tool (the median is reported)")
+        ->capture_default_str()
+        ->check(within(1, 20));
     cmd->add_flag("--no-grass", o->no_grass, "Skip r.sun and r.horizon");
     cmd->add_flag("--no-saga", o->no_saga, "Skip SAGA");
     cmd->add_option("--saga-timeout", o->saga_timeout_s, "Give SAGA up after this many seconds")

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "app/bench/shell_command.hpp"
 #include "core/util/error.hpp"
@@ -39,14 +40,16 @@ std::map<std::string, TimedRun> GrassSession::run(const std::string& script) {
                                    shell_quote(script_path.string()) + " > " + shell_quote(log.string()) + " 2>&1");
     if (!all.ok) throw InputError("GRASS script failed; see " + log.string() + " and " + modules_log.string());
     result["session"] = all;
+    std::map<std::string, std::vector<TimedRun>> runs;
     std::ifstream in(times);
     std::string line;
     while (std::getline(in, line)) {
         std::istringstream f(line);
         std::string label;
         double real = 0, user = 0, sys = 0;
-        if (f >> label >> real >> user >> sys) result[label] = TimedRun{true, real, user + sys};
+        if (f >> label >> real >> user >> sys) runs[label].push_back(TimedRun{true, real, user + sys});
     }
+    for (const auto& [label, list] : runs) result[label] = median_run(list);
     return result;
 }
 

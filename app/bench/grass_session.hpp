@@ -22,8 +22,8 @@ public:
 
     // Runs a bash script inside the location. Lines of the script may time a module each with
     // `timed LABEL module args...` (a function defined here): each module's own wall and CPU
-    // seconds, without the session's start-up, are returned by label. The whole run's time is
-    // under the label "session". Throws ts::InputError naming the log when the script fails.
+    // seconds, without the session's start-up, are returned by label (the median of the runs
+    // when a label is timed more than once). The whole run's time is under the label "session". Throws ts::InputError naming the log when the script fails.
     std::map<std::string, TimedRun> run(const std::string& script);
 
 private:

@@ -31,6 +31,7 @@
 #include "core/solar/insolation_period.hpp"
 #include "core/util/error.hpp"
 #include "core/util/staged_outputs.hpp"
+#include "core/util/temp_files.hpp"
 
 namespace ts::app {
 // Its own namespace: a unity batch compiles it with other benches' anonymous Row, kNaN, ...
@@ -236,9 +237,15 @@ SpeedRow run_saga(const BenchInsolationOptions& o, const fs::path& crop, const f
                             o.date + " -HOUR_RANGE_MIN 0 -HOUR_RANGE_MAX 24 -HOUR_STEP " + number(o.step_hours) +
                             " > " + shell_quote(log.string()) + " 2>&1";
     row.run = run_timed(cmd, o.repeats);
-    if (!row.run.ok)
-        std::printf("saga: failed or timed out after %d s (--saga-timeout); see %s\n", o.saga_timeout_s,
-                    log.string().c_str());
+    if (!row.run.ok) {
+        // The log goes with the bench's temporary folder: its last line says why.
+        std::ifstream in(log);
+        std::string line, last;
+        while (std::getline(in, line))
+            if (!line.empty()) last = line;
+        std::printf("saga: failed or gave up after %d s (--saga-timeout); its last words: %s\n", o.saga_timeout_s,
+                    last.c_str());
+    }
     return row;
 }
 
@@ -249,6 +256,8 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
     const solar::CalendarDate date = solar::parse_calendar_date(o.date, "--date");
     const int day = day_of_year(date);
     if (day > 365 && !o.no_grass) throw InputError("--date: r.sun takes days 1..365; 31 December of a leap year has none");
+    if (!o.maps.empty() && (o.no_grass || !on_path("grass")))
+        throw InputError("--maps: the beam maps need r.sun (GRASS: scripts/setup.sh bench; not with --no-grass)");
     const std::string bin = terrashade_binary();
     for (const char* tool : {"gdal_translate", "gdalwarp"})
         if (!on_path(tool)) throw InputError(std::string("bench insolation needs ") + tool + " (Debian gdal-bin)");
@@ -263,6 +272,7 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
 
     const fs::path dir = fs::temp_directory_path() / ("terrashade-bench-insolation-" + std::to_string(::getpid()));
     fs::create_directories(dir);
+    temp_files::track_directory(dir);  // an interrupt removes it, the GRASS location inside included
     const fs::path crop_tif = dir / "crop.tif";
     raster::write_float_raster(crop_tif, crop.width, crop.height, 1, crop.z.data(), crop.georef);
     std::printf("bench insolation: %s, centred %dx%d crop (centre %.4f, %.4f), %s (day %d), Linke %g, albedo %g\n",
@@ -364,7 +374,6 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
             if (!out.flush()) throw input_error(o.csv, "cannot write");
         });
     if (!o.maps.empty()) {
-        if (beam_hz.empty()) throw InputError("--maps needs r.sun (GRASS)");
         // Band order: terrashade beam, r.sun beam with the maps, with the maps raised to 0, with
         // its own shadowing (Wh/m2 over the day), open terrain (1) or not (0).
         std::vector<float> bands;
@@ -381,6 +390,7 @@ void run_bench_insolation(const BenchInsolationOptions& o) {
     for (const std::string* p : {&o.csv, &o.maps})
         if (!p->empty()) std::printf("wrote %s\n", p->c_str());
     fs::remove_all(dir);
+    temp_files::forget_directory(dir);
 }
 
 }  // namespace

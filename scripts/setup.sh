@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian packages terrashade needs (docs/dependencies.md says why each).
-# Usage: scripts/setup.sh [demo|test]
+# Usage: scripts/setup.sh [demo|test|bench]
 #   demo: what building and running terrashade needs (scripts/demo.sh): the toolchain and the
 #         libraries it links, Mesa's Vulkan drivers to run on.
 #   test: that, plus the test oracles, headless display and browser, Slurm, clang for the fuzzers,
 #         charting, and the tile viewer's npm packages (scripts/test.sh; the default).
+#   bench: test, plus what only the benchmarks compare with and no test runs: GRASS GIS (r.sun,
+#         r.horizon for scripts/bench_insolation.sh). Kept out of test so CI does not install it.
 # Idempotent: packages already present are skipped (no apt-get at all when all are present).
 # Uses sudo when not root.
 set -euo pipefail
 
 what="${1:-test}"
-case "$what" in demo|test) ;; *) echo "setup: usage: scripts/setup.sh [demo|test]" >&2; exit 2 ;; esac
+case "$what" in demo|test|bench) ;; *) echo "setup: usage: scripts/setup.sh [demo|test|bench]" >&2; exit 2 ;; esac
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -51,9 +53,15 @@ TEST_PKGS=(
   slurm-wlm munge           # a real single-node Slurm for the job-array test (tests/scale/slurm_fixture.sh)
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan for the DEM reader fuzz targets (scripts/fuzz.sh)
 )
+# The benchmarks' other tools that no test needs (grass-core alone is 31 MB installed, with its
+# own dependencies besides; CI, which runs scripts/test.sh, never installs them).
+BENCH_PKGS=(
+  grass-core                # GRASS GIS r.sun and r.horizon: `bench insolation` (docs/insolation.md)
+)
 
 wanted=("${DEMO_PKGS[@]}")
-if [ "$what" = test ]; then wanted+=("${TEST_PKGS[@]}"); fi
+if [ "$what" != demo ]; then wanted+=("${TEST_PKGS[@]}"); fi
+if [ "$what" = bench ]; then wanted+=("${BENCH_PKGS[@]}"); fi
 need=()
 for p in "${wanted[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -65,7 +73,7 @@ if [ "${#need[@]}" -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
 fi
-if [ "$what" = test ]; then
+if [ "$what" != demo ]; then
   # npm (Debian's own package when the installed nodejs does not bring it), then the tile viewer's
   # packages from the npm registry into docs/tiles/node_modules (not committed): MapLibre GL JS for
   # the page, playwright-core to drive Debian's chromium in its test. Redone when the lock changes.

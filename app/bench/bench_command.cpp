@@ -123,6 +123,7 @@ void add_bench_commands(CLI::App& bench_app) {
     CLI::App* bench = &bench_app;
     add_bench_sh_command(*bench);
     add_bench_visibility_command(*bench);
+    add_bench_insolation_command(*bench);
     add_bench_render_command(*bench);
     add_bench_relight_command(*bench);
     add_bench_transfer_command(*bench);

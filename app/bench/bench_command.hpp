@@ -12,6 +12,9 @@ void add_bench_commands(CLI::App& bench);
 // `terrashade bench visibility` (bench_visibility_command.cpp): horizon methods against the
 // raymarch reference, and SAGA.
 void add_bench_visibility_command(CLI::App& bench);
+// `terrashade bench insolation` (bench_insolation_command.cpp): insolation against GRASS r.sun and
+// SAGA, time and beam agreement.
+void add_bench_insolation_command(CLI::App& bench);
 // `terrashade bench relight` (bench_relight_command.cpp): relighting throughput.
 void add_bench_relight_command(CLI::App& bench);
 // `terrashade bench render` (bench_render_command.cpp): the renderer against the ray-traced reference.

@@ -77,6 +77,8 @@ TEST(IoPlanCli, EveryCommandChecksItsPathsBeforeTheWork) {
         {"bench sh --csv " + quote(missing_dir + ".csv"), "(--csv)"},
         {"bench relight " + quote(kDem) + " --keep " + quote((dir / "x.jpg" / "k").string()), "(--keep)"},
         {"bench transfer /nonexistent/dem.tif", "no such file"},
+        {"bench insolation " + quote(kDem) + " --csv " + quote(missing_dir + ".csv"), "(--csv)"},
+        {"bench insolation " + quote(kDem) + " --date 2024-02-30", "--date"},
         {"tiles " + quote(kDem) + " --zoom 8-14 --directions 256 --out " + quote(missing_dir + ".mbtiles"),
          "does not exist (--out)"},
         {"tiles " + quote(kDem) + " --zoom 8-14 --out " + quote((dir / "x.jpg").string()), "is a file"},

@@ -28,6 +28,7 @@ TEST(MessagesCli, AWordForANumberSaysNotANumberInEveryCommand) {
         {"sun --time 2025-06-21T12:00Z --lat nan --lon 5", "terrashade: --lat: 'nan' is not a number\n"},
         {"bench sun " + dem + " --elevations 10 x", "terrashade: --elevations: 'x' is not a number\n"},
         {"bench relight " + dem + " --frames two", "terrashade: --frames: 'two' is not a number\n"},
+        {"bench insolation " + quote(kDem) + " --window big", "terrashade: --window: 'big' is not a number\n"},
     };
     for (const auto& [args, line] : cases) {
         const Result r = run(ts_cmd(args));

@@ -3,6 +3,7 @@
 // Cessna on a sloping field at 64 spheres (the footprint's IoU with the triangles' shadow).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,7 @@ TEST(TriangleBvh, FindsTheTrianglesARayMeetsAndNoOthers) {
 TEST(BlockerReference, ACessnaAt64SpheresCastsTheSunShadowOfItsTriangles) {
     // The shared Cessna 15 m over a field sloping up to the east (1 in 10), 0.25 m texels;
     // sun from the south-west, 40 deg up. Shadow: texels with less than half the disc.
-    const mesh::TriangleMesh cessna = mesh::import_mesh(std::string(TS_SHARED_DATA) + "/meshes/c172p.ac");
+    const mesh::TriangleMesh cessna = mesh::import_mesh(std::filesystem::path(TS_SHARED_DATA) / "meshes" / "c172p.ac");
     blockers::DecompositionOptions d;
     d.count = 64;
     d.threads = 2;

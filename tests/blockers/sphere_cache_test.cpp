@@ -23,7 +23,7 @@ struct TempDir {
 
 TEST(SphereCache, HitReturnsIdenticalSpheres) {
     const TempDir dir;
-    const auto mesh = ts::mesh::import_mesh(std::string(TS_SHARED_DATA) + "/meshes/CesiumMilkTruck/CesiumMilkTruck.gltf");
+    const auto mesh = ts::mesh::import_mesh(std::filesystem::path(TS_SHARED_DATA) / "meshes" / "CesiumMilkTruck" / "CesiumMilkTruck.gltf");
     ts::blockers::DecompositionOptions o;
     o.count = 16;
     o.threads = 2;

@@ -1,13 +1,14 @@
 #include "core/tiles/tile_viewer.hpp"
 
 #include <string_view>
+#include <vector>
 
 namespace ts::tiles {
 
 namespace {
 
 // The page below, with @NAME@, @DESCRIPTION@ and the MapLibre links filled in. Plain ES, no
-// build step. window.tileStats is what tests/cli/tiles_viewer_page.mjs reads.
+// build step. window.tileStats is what docs/tiles/check_viewer.mjs reads.
 constexpr std::string_view kPage = R"html(<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -124,24 +125,41 @@ if (location.protocol === 'file:') {
 </html>
 )html";
 
-void replace_all(std::string& text, std::string_view key, const std::string& value) {
-    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
-        text.replace(at, key.size(), value);
+struct Fill {
+    std::string_view key;
+    std::string value;
+};
+
+// The template with each key replaced by its value, in one pass: a value (a user's name) is
+// never scanned for keys itself.
+std::string filled(std::string_view page, const std::vector<Fill>& fills) {
+    std::string out;
+    out.reserve(page.size() + 1024);
+    for (std::size_t at = 0; at < page.size();) {
+        const Fill* hit = nullptr;
+        if (page[at] == '@')
+            for (const Fill& f : fills)
+                if (page.substr(at, f.key.size()) == f.key) hit = &f;
+        if (hit) {
+            out += hit->value;
+            at += hit->key.size();
+        } else {
+            out += page[at++];
+        }
+    }
+    return out;
 }
 
 }  // namespace
 
 std::string viewer_page_html(const TileSetInfo& info) {
-    std::string page(kPage);
-    replace_all(page, "@CSS_URL@", kMaplibreCssUrl);
-    replace_all(page, "@CSS_SRI@", kMaplibreCssSri);
-    replace_all(page, "@JS_URL@", kMaplibreJsUrl);
-    replace_all(page, "@JS_SRI@", kMaplibreJsSri);
-    replace_all(page, "@CDN_HOST@", "unpkg.com");
-    // Last: a name could hold a key's spelling, and must not be expanded.
-    replace_all(page, "@DESCRIPTION@", html_text(info.description));
-    replace_all(page, "@NAME@", html_text(info.name));
-    return page;
+    return filled(kPage, {{"@CSS_URL@", kMaplibreCssUrl},
+                          {"@CSS_SRI@", kMaplibreCssSri},
+                          {"@JS_URL@", kMaplibreJsUrl},
+                          {"@JS_SRI@", kMaplibreJsSri},
+                          {"@CDN_HOST@", "unpkg.com"},
+                          {"@NAME@", html_text(info.name)},
+                          {"@DESCRIPTION@", html_text(info.description)}});
 }
 
 }  // namespace ts::tiles

@@ -15,6 +15,7 @@
 #include "app/interrupt_watcher.hpp"
 #include "app/io_plan.hpp"
 #include "app/shard_option.hpp"
+#include "app/tile_set_viewer.hpp"
 #include "app/tiles_options.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -108,27 +109,11 @@ void run_tiles(const TilesCommandArgs& a) {
 
     // The output, before any shading: an unwritable one fails here.
     const std::string job_text = tiles::describe_job(job);
+    const tiles::TileSetInfo info =
+        tile_set_info(a.name, a.attribution, a.dem.files, dem, job, tile_set_legend(a.tiles, job));
     std::unique_ptr<tiles::TileSink> sink;
     if (mbtiles) {
-        const tiles::LonLatBox box = tiles::terrain_footprint(dem);  // the terrain, not a nodata collar
-        char bounds[128], center[128];
-        std::snprintf(bounds, sizeof bounds, "%.7f,%.7f,%.7f,%.7f", box.west, box.south, box.east, box.north);
-        std::snprintf(center, sizeof center, "%.7f,%.7f,%d", 0.5 * (box.west + box.east), 0.5 * (box.south + box.north),
-                      (job.z0 + job.z1) / 2);
-        const std::string stem = std::filesystem::path(a.dem.files.front()).stem().string();
-        std::map<std::string, std::string> metadata = {
-            {"name", a.name.empty() ? stem + " " + std::string(job.shading.style->name()) : a.name},
-            {"format", "png"},
-            {"bounds", bounds},
-            {"center", center},
-            {"minzoom", std::to_string(job.z0)},
-            {"maxzoom", std::to_string(job.z1)},
-            {"attribution", a.attribution.empty() ? "terrashade; elevation: " + stem : a.attribution},
-            {"type", "baselayer"},
-            {"version", "1"},
-            {"description", "terrashade " + std::string(job.shading.style->name()) + ", " +
-                                std::to_string(job.tile_size) + "-px tiles"},
-        };
+        std::map<std::string, std::string> metadata = tiles::mbtiles_metadata(info);
         if (!job.shard.whole()) metadata["terrashade_shard"] = shard_text(job.shard);
         using E = tiles::MbtilesFile::Existing;
         sink = std::make_unique<tiles::MbtilesFile>(a.out, std::move(metadata), job_text,
@@ -161,6 +146,8 @@ void run_tiles(const TilesCommandArgs& a) {
         bar.finish();
     }
     if (!mbtiles && !job.shard.whole()) write_shard_marker(a.out, job.shard);
+    // The viewer last: it appears with a finished tile set (each shard's is the merged set's).
+    if (!mbtiles) write_tile_viewer(a.out, info, tile_set_legend(a.tiles, job));
     const double total = watch.seconds();
     const std::size_t made = stats.written + stats.empty;
     std::printf("tiles: %zu written, %zu resumed, %zu without data (zoom %d-%d, %d px, %s)\n", stats.written,
@@ -198,8 +185,12 @@ void add_tiles_command(CLI::App& root) {
     cmd->add_flag("--overwrite", a->overwrite,
                   "Replace the tiles of another job in --out (only those: other files in the folder stay)");
     add_shard_option(*cmd, a->shard);
-    cmd->add_option("--name", a->name, "MBTiles metadata name (default: the DEM file's name and the style)");
-    cmd->add_option("--attribution", a->attribution, "MBTiles metadata attribution");
+    cmd->add_option("--name", a->name,
+                    "The tile set's name in its MBTiles metadata, or its tiles.json and viewer page (default: the DEM "
+                    "file's name and the style)");
+    cmd->add_option("--attribution", a->attribution,
+                    "Who made the data, shown on maps of the tiles (MBTiles metadata, tiles.json; may hold HTML links; "
+                    "default: 'elevation data: ' and the DEM file names: credit the DEM's source here)");
     cmd->add_option("--debug-heights", a->debug_heights,
                     "Also write the heights tile Z/X/Y is shaded from (1-px halo) as Z-X-Y-heights.tif beside the "
                     "tiles, for checking against gdaldem");

@@ -4,14 +4,11 @@
 
 #include "core/raster/srgb.hpp"
 #include "core/tiles/block_shading.hpp"
+#include "core/tiles/svf_stretch.hpp"
 #include "core/tiles/tile_style.hpp"
 
 namespace ts::tiles {
 namespace {
-
-// svf of open ground is 1; in relief valleys and gorges it falls towards ~0.5. This stretch
-// spends the grey range on that interval (display-linear, then sRGB-encoded at the pixel).
-constexpr float kSvfBlack = 0.55f;
 
 class SvfStyle final : public TileStyle {
 public:

@@ -14,6 +14,7 @@
 
 #include "core/tiles/mbtiles_file.hpp"
 #include "core/tiles/mbtiles_reader.hpp"
+#include "core/tiles/tile_viewer.hpp"
 #include "core/tiles/xyz_directory.hpp"
 #include "core/util/error.hpp"
 #include "core/util/shard.hpp"
@@ -188,6 +189,20 @@ MergeStats merge_xyz(const std::vector<fs::path>& shards, const fs::path& out) {
         ids.push_back(read_shard_marker(p));
     }
     check_complete_shard_set(names_of(shards), ids);
+    // The viewer (tiles.json, the page, the legend) is the same in every shard of one job: the
+    // merged folder takes the first shard's, as a single run would have written it.
+    std::vector<const char*> viewer;
+    for (const char* file : kViewerFiles) {
+        std::error_code ec;
+        const bool in_first = fs::is_regular_file(shards.front() / file, ec);
+        for (const fs::path& p : shards) {
+            const bool here = fs::is_regular_file(p / file, ec);
+            if (here != in_first || (here && read_bytes(p / file) != read_bytes(shards.front() / file)))
+                throw input_error(p.string(), std::string("has another ") + file + " than " + shards.front().string() +
+                                                  ": not finished shards of one job");
+        }
+        if (in_first) viewer.push_back(file);
+    }
     std::error_code ec;
     if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
         throw input_error(out.string(), "exists: merge writes a new tile folder (remove it or choose another)");
@@ -228,6 +243,7 @@ MergeStats merge_xyz(const std::vector<fs::path>& shards, const fs::path& out) {
         for (const auto& [key, file] : plan)
             link_or_copy(file, tmp / std::to_string(std::get<0>(key)) / std::to_string(std::get<1>(key)) /
                                    (std::to_string(std::get<2>(key)) + ".png"));
+        for (const char* file : viewer) link_or_copy(shards.front() / file, tmp / file);
         link_or_copy(shards.front() / XyzDirectory::kJobFile, tmp / XyzDirectory::kJobFile);
         if (fs::exists(out, ec)) fs::remove(out, ec);  // empty, checked above
         fs::rename(tmp, out, ec);

@@ -11,6 +11,7 @@
 #include "core/util/error.hpp"
 #include "core/util/quantity_error.hpp"
 #include "core/util/shard_marker.hpp"
+#include "core/tiles/tile_viewer.hpp"
 
 namespace ts::tiles {
 namespace fs = std::filesystem;
@@ -44,8 +45,9 @@ bool is_number(const std::string& s) {
 }
 
 // The files a tile job made in DIR, and only those: Z/X/Y.png tiles and their temporaries, the
-// Z and X folders left empty, the shard marker, then the job file (last: until it goes, the
-// tiles still left are its job's). A user's other files stay, and so do the folders holding them.
+// Z and X folders left empty, the shard marker, the viewer (tile_viewer.hpp), then the job file
+// (last: until it goes, the tiles still left are its job's). A user's other files stay, and so do
+// the folders holding them.
 void remove_tile_job(const fs::path& dir) {
     std::error_code ec;
     for (const auto& zdir : fs::directory_iterator(dir, ec)) {
@@ -62,6 +64,7 @@ void remove_tile_job(const fs::path& dir) {
         fs::remove(zdir.path(), ec);
     }
     fs::remove(dir / kShardMarkerFile, ec);
+    for (const char* file : kViewerFiles) fs::remove(dir / file, ec);
     fs::remove(dir / XyzDirectory::kJobFile, ec);
 }
 
@@ -81,6 +84,13 @@ XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, Existing existi
                                           : "is not empty and holds no terrashade tile job";
         if (existing == Existing::resume) throw OccupiedOutputError({dir_.string(), holds, true, "it", "folder"});
         if (existing == Existing::refuse) throw OccupiedOutputError({dir_.string(), holds, false, "its tiles", "folder"});
+        // The viewer written at the end would replace a file of the user's own of the same name.
+        if (!has_job)
+            for (const char* file : kViewerFiles)
+                if (fs::exists(dir_ / file, ec))
+                    throw input_error(dir_.string(), std::string("holds a ") + file +
+                                                         " of its own, which the tiles' viewer would replace: move it "
+                                                         "or write the tiles to another folder");
         remove_tile_job(dir_);
     }
     if (same_job) {

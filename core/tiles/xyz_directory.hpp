@@ -20,8 +20,9 @@ public:
     enum class Existing { refuse, resume, overwrite };
     // Creates DIR if needed and checks it is writable (ts::InputError otherwise). A folder that
     // is not empty and holds another job (or none that can be read) is refused, unless
-    // `overwrite`: then the old job's files (tiles DIR/Z/X/Y.png, temporaries, job and shard
-    // files, the folders left empty) are removed and nothing else. With `resume` the job file
+    // `overwrite`: then the old job's files (tiles DIR/Z/X/Y.png, temporaries, job, shard and
+    // viewer files, the folders left empty) are removed and nothing else; a folder without a job
+    // file that holds a file named as one of the viewer's is refused even so. With `resume` the job file
     // must equal `job`. Temporary files of a killed run are removed.
     XyzDirectory(std::filesystem::path dir, const std::string& job, Existing existing, int z0, int z1);
     bool has(const TileId& t) const override;

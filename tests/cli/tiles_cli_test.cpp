@@ -64,8 +64,10 @@ std::uint64_t fnv1a(const std::string& bytes) {
 std::map<std::string, std::uint64_t> xyz_hashes(const fs::path& dir) {
     std::map<std::string, std::uint64_t> out;
     for (const auto& e : fs::recursive_directory_iterator(dir)) {
-        if (!e.is_regular_file() || e.path().filename().string()[0] == '.') continue;
-        out[fs::relative(e.path(), dir).string()] = fnv1a(read_bytes(e.path()));
+        const fs::path key = fs::relative(e.path(), dir);
+        // Tiles only: not the job file, temporaries, nor the viewer beside the Z folders.
+        if (!e.is_regular_file() || e.path().filename().string()[0] == '.' || !key.has_parent_path()) continue;
+        out[key.string()] = fnv1a(read_bytes(e.path()));
     }
     return out;
 }

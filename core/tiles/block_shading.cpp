@@ -101,23 +101,25 @@ std::vector<glm::vec3> render_block(const BlockShading& b, const BlockMaterials&
     return render_frame(g, materials(g, tg), b.shading, b.progress, backend.get(), outer_sun);
 }
 
-std::vector<float> block_svf(const BlockShading& b) {
+visibility::VisibilityResult block_visibility(const BlockShading& b, visibility::VisibilityRequest request,
+                                              const terrain::HeightGrid& window_texels) {
     const Rect& w = b.window;
+    request.horizon.window = {w.col0, w.row0, w.width, w.height};
+    if (b.far) return visibility::WindowFarFieldVisibility(w, b.core, *b.far).compute(window_texels, request);
+    return visibility::make_cpu_visibility_backend()->compute(b.grid, request);
+}
+
+std::vector<float> block_svf(const BlockShading& b) {
     visibility::VisibilityRequest request;
     request.horizon.directions = b.shading.directions;
     request.horizon.threads = b.shading.threads;
     request.horizon.progress = b.progress;
-    request.horizon.window = {w.col0, w.row0, w.width, w.height};
     request.svf = true;
-    visibility::VisibilityResult result;
-    if (b.far) {
-        std::vector<float> sz;
-        std::vector<std::uint8_t> svoids;
-        const terrain::HeightGrid g = window_grid(b.grid, w, sz, svoids);
-        result = visibility::WindowFarFieldVisibility(w, b.core, *b.far).compute(g, request);
-    } else {
-        result = visibility::make_cpu_visibility_backend()->compute(b.grid, request);
-    }
+    std::vector<float> sz;
+    std::vector<std::uint8_t> svoids;
+    // The window's own grid only for the far field (without one the level is swept as it is).
+    const terrain::HeightGrid g = b.far ? window_grid(b.grid, b.window, sz, svoids) : terrain::HeightGrid{};
+    const visibility::VisibilityResult result = block_visibility(b, request, g);
     return std::vector<float>(result.svf.begin(), result.svf.end());
 }
 

@@ -49,6 +49,12 @@ using BlockMaterials =
 // windowed for `materials` when `true_heights`.
 std::vector<glm::vec3> render_block(const BlockShading& block, const BlockMaterials& materials, bool true_heights);
 
+// `request` (its horizon window set to the block's) for the block's window: through the far
+// field beyond the halo when there is one (`window_texels`: the window as a grid of its own, window_grid()),
+// else swept over the whole level. The window's products, the halo's void with a far field.
+visibility::VisibilityResult block_visibility(const BlockShading& block, visibility::VisibilityRequest request,
+                                              const terrain::HeightGrid& window_texels);
+
 // The sky view factor per window texel (NaN where undefined).
 std::vector<float> block_svf(const BlockShading& block);
 

@@ -14,7 +14,6 @@
 #include "core/tiles/block_shading.hpp"
 #include "core/tiles/tile_insolation.hpp"
 #include "core/tiles/tile_style.hpp"
-#include "core/visibility/window_visibility_backend.hpp"
 
 namespace ts::tiles {
 namespace {
@@ -45,10 +44,7 @@ public:
         request.horizon.directions = b.shading.directions;
         request.horizon.threads = b.shading.threads;
         request.horizon.progress = b.progress;
-        request.horizon.window = {w.col0, w.row0, w.width, w.height};
-        const visibility::VisibilityResult vis =
-            b.far ? visibility::WindowFarFieldVisibility(w, b.core, *b.far).compute(g, request)
-                  : visibility::make_cpu_visibility_backend()->compute(b.grid, request);
+        const visibility::VisibilityResult vis = block_visibility(b, request, g);
         const render::NormalField normals = render::terrain_normals(g, b.shading.threads);
         const solar::InsolationMap map = solar::integrate_insolation(*ins->model, g, vis.horizons, normals, lat);
 

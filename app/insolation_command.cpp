@@ -54,18 +54,11 @@ struct InsolationOptions {
 
 // Everything that changes a value of the map, for the shards' records: shards of two jobs
 // never merge.
-std::string describe_job(const InsolationOptions& o, const solar::InsolationSettings& s, const dem::Dem& dem) {
-    const auto [first, last] = insolation_dates(o.sun);
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "dem %s; %04d-%02d-%02d..%04d-%02d-%02d by %s; albedo %.9g index %.9g step %.9g; directions %d x %d; "
-                  "latitude step %.9g level step %.9g; linke",
-                  tiles::dem_identity(dem).c_str(), first.year, first.month, first.day, last.year, last.month,
-                  last.day, o.by.c_str(), s.albedo, s.clear_sky_index, s.step_minutes, o.directions,
-                  o.bins_per_direction, o.band_step_deg, o.level_step_m);
-    std::string out = text;
-    for (double tl : s.linke_monthly) out += " " + std::to_string(tl);
-    return out;
+std::string describe_job(const InsolationOptions& o, const dem::Dem& dem) {
+    char grid[160];
+    std::snprintf(grid, sizeof grid, "by %s; directions %d x %d; latitude step %.9g level step %.9g", o.by.c_str(),
+                  o.directions, o.bins_per_direction, o.band_step_deg, o.level_step_m);
+    return "dem " + tiles::dem_identity(dem) + "; " + describe_insolation_sum(o.sun) + "; " + grid;
 }
 
 constexpr int kMaxBands = 2000;  // --by day over ~a year at most (5 quantities a day)
@@ -167,7 +160,7 @@ void run_insolation(InsolationOptions& o) {
     StagedOutputs outputs;
     std::string record;  // a shard says which rows of which job it holds, for `merge`
     if (!shard.whole())
-        record = insolation_shard_text({describe_job(o, settings, dem), shard, rows.row0, rows.height, dem.height, names, units});
+        record = insolation_shard_text({describe_job(o, dem), shard, rows.row0, rows.height, dem.height, names, units});
     outputs.stage(o.out, [&](const std::filesystem::path& tmp) {
         raster::write_float_cog(tmp, dem.width, rows.height, int(bands), map.values.data(),
                                 dem.georef.window(0, rows.row0, dem.width, rows.height), names, units, record);

@@ -147,14 +147,8 @@ void check_insolation_style(const TilesArgs& a, tiles::TileShading& s) {
     // What changes the tiles' bytes, known before the DEM is read so that a conflicting job in
     // --out is refused before the sun tables are built (the default ramp follows from the DEM
     // and these).
-    char text[512];
-    std::string linke;
-    for (double tl : st.linke_monthly) linke += (linke.empty() ? "" : ",") + std::to_string(tl);
-    std::snprintf(text, sizeof text, "%04d-%02d-%02d..%04d-%02d-%02d %s ramp %s linke %s albedo %.9g index %.9g step %.9g",
-                  first.year, first.month, first.day, last.year, last.month, last.day,
-                  tiles::insolation_quantity_name(ins->quantity), a.ramp.empty() ? "auto" : a.ramp.c_str(),
-                  linke.c_str(), st.albedo, st.clear_sky_index, st.step_minutes);
-    ins->describe = text;
+    ins->describe = describe_insolation_sum(a.insolation) + " " + tiles::insolation_quantity_name(ins->quantity) +
+                    " ramp " + (a.ramp.empty() ? std::string("auto") : a.ramp);
     s.insolation = std::move(ins);
     // The default of `insolation` (a tile set and a GeoTIFF of the same days then agree).
     if (!a.directions_given) s.directions = 64;

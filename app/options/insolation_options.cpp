@@ -1,6 +1,7 @@
 #include "app/options/insolation_options.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "core/util/error.hpp"
 
@@ -42,6 +43,18 @@ std::pair<solar::CalendarDate, solar::CalendarDate> insolation_dates(const Insol
     const solar::CalendarDate last = solar::parse_calendar_date(a.to, "--to");
     if (first.year > 5999 || last.year > 5999) throw InputError("--from/--to: years must be in 1..5999");
     return {first, last};
+}
+
+std::string describe_insolation_sum(const InsolationArgs& a) {
+    const auto [first, last] = insolation_dates(a);
+    const solar::InsolationSettings s = insolation_settings(a);
+    std::string linke;
+    for (double tl : s.linke_monthly) linke += (linke.empty() ? "" : ",") + std::to_string(tl);
+    char text[256];
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d..%04d-%02d-%02d albedo %.9g index %.9g step %.9g linke ",
+                  first.year, first.month, first.day, last.year, last.month, last.day, s.albedo, s.clear_sky_index,
+                  s.step_minutes);
+    return text + linke;
 }
 
 solar::InsolationSettings insolation_settings(const InsolationArgs& a) {

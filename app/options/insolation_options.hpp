@@ -27,6 +27,10 @@ void add_insolation_options(CLI::App& cmd, InsolationArgs& a);
 // The first and last day of the range (ts::InputError for what a user can get wrong).
 std::pair<solar::CalendarDate, solar::CalendarDate> insolation_dates(const InsolationArgs& a);
 
+// The days and the sky of the sum as text ("2024-01-01..2024-12-31 linke 3,... albedo 0.2 index 1
+// step 2"), for the job descriptions that keep two jobs' outputs apart (checked as above).
+std::string describe_insolation_sum(const InsolationArgs& a);
+
 // Everything but the periods, checked (ts::InputError): Linke, albedo, index, step.
 solar::InsolationSettings insolation_settings(const InsolationArgs& a);
 

@@ -6,7 +6,7 @@
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { chromium } from 'playwright-core';
+import { launchHeadlessChromium } from './headless_chromium.mjs';
 import { serve } from './serve.mjs';
 
 const MIN_TILES = 4;
@@ -16,14 +16,7 @@ const profile = mkdtempSync(join(tmpdir(), 'terrashade-chromium-'));
 let context;
 let failure = null;
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-    headless: true,
-    viewport: { width: 1024, height: 640 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
-  });
+  context = await launchHeadlessChromium(profile);
   const page = context.pages()[0] || await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));

@@ -83,7 +83,7 @@ void AzimuthTable::finish_bin(int bin, const std::vector<Sample>& samples, doubl
             const std::size_t i = std::size_t(k) * kTableValues + std::size_t(v);
             values_.push_back(float(full[i] + part[i]));
         }
-        values_.push_back(0.0f);
+        for (int v = kTableValues; v < kTableStride; ++v) values_.push_back(0.0f);
     }
     for (int v = 0; v < kTableValues; ++v) total_[std::size_t(bin) * kTableStride + std::size_t(v)] = float(sum[std::size_t(v)]);
 }

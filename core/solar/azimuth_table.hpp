@@ -3,8 +3,8 @@
 // for each azimuth bin and each horizon elevation h on a fine grid, the sums over the period's
 // time steps whose sun falls in the bin of (weight) x (visible fraction of the sun's disc above
 // h). The weights are the direct beam's energy times the sun's direction (so a texel's beam is
-// the dot of its normal with one looked-up vector: the cosine of incidence is exact), the same
-// for the circumsolar diffuse, and the hours. A texel then looks up its own horizon in each bin:
+// the dot of its normal with one looked-up vector: the cosine of incidence is exact) and the
+// hours. The diffuse sky has its own tables (period_sky.hpp). A texel then looks up its own horizon in each bin:
 // the cost does not depend on the number of time steps (docs/insolation.md, "Speed").
 //
 // Each bin stores only the horizon range where its sums change (from the lowest sun in it
@@ -17,11 +17,11 @@
 namespace ts::solar {
 
 // What one sample of the sun carries (and what a lookup returns): the beam's energy times the
-// sun's direction (Wh/m^2, ENU), the circumsolar diffuse's likewise, and hours of sun.
-inline constexpr int kTableValues = 7;
+// sun's direction (Wh/m^2, ENU) and hours of sun.
+inline constexpr int kTableValues = 4;
 using TableValues = std::array<double, kTableValues>;
-// Stored as 8 floats (one padding) so a lookup is whole vector registers.
-inline constexpr int kTableStride = 8;
+// Stored as 4 floats, one vector register per lookup.
+inline constexpr int kTableStride = 4;
 
 struct HorizonGrid {
     double first_rad = -0.0174532925199433;  // -1 degree: the lowest horizon a table tells apart
@@ -36,8 +36,8 @@ public:
 
     int bins() const { return bins_; }
     const HorizonGrid& grid() const { return grid_; }
-    // Adds w times the visible fraction of the sun's disc to acc[0..7] (the 7 values and a
-    // padding lane), for a horizon at horizon_rad in bin j.
+    // Adds w times the visible fraction of the sun's disc to acc[0..3], for a horizon at
+    // horizon_rad in bin j.
     void add_visible(int bin, float horizon_rad, float w, float* acc) const {
         const int count = count_[std::size_t(bin)];
         if (count == 0) return;
@@ -60,10 +60,8 @@ public:
     const float* total(int bin) const { return total_.data() + std::size_t(bin) * kTableStride; }
     bool empty(int bin) const { return count_[std::size_t(bin)] == 0; }
 
-    // Per-period scalars that need no horizon lookup: the isotropic diffuse on a horizontal
-    // plane (Wh/m^2), and the global irradiation of an open horizontal plane (the ground that
-    // reflects light to the texels).
-    double isotropic_diffuse_wh = 0;
+    // The global irradiation of an open horizontal plane over the period (Wh/m^2): the ground
+    // that reflects light to the texels.
     double open_global_wh = 0;
 
     // Builder side: the samples of one bin, then finish().

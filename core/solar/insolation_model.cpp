@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/solar/esra_clear_sky.hpp"
+#include "core/solar/period_sky.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
 #include "core/util/quantity_error.hpp"
@@ -15,10 +16,9 @@
 namespace ts::solar {
 namespace {
 
-// The sun counts as a source of circumsolar light on a plane from this height of its centre;
-// below it the Hay split's 1 / sin(e) would blow up and its share (Kb is ~0 there) goes to the
-// isotropic sky.
-constexpr double kMinSinForCircumsolar = 1e-3;
+// The summed sky is smooth at this azimuth resolution (the circumsolar brightening spans ~20
+// degrees); more sectors cost memory and lookups, not accuracy.
+constexpr int kMaxSkySectors = 64;
 
 std::vector<double> even_steps(double lo, double hi, double step) {
     if (!(hi - lo > 1e-9) || !(step > 0)) return {lo};
@@ -41,6 +41,7 @@ void check_settings(const InsolationSettings& s) {
     if (s.azimuth_bins < 4 || s.azimuth_bins > 4096) throw InputError("insolation: azimuth bins must be in [4, 4096]");
     if (s.svf_stride < 1 || s.azimuth_bins % s.svf_stride != 0)
         throw InputError("insolation: the sky view's stride must divide the azimuth bins");
+    if (!(s.sky_band_step_deg > 0)) throw InputError("insolation: the sky's latitude step must be > 0");
     if (s.periods.empty()) throw InputError("insolation: no period to sum over");
     for (const auto& p : s.periods)
         if (!(p.end > p.begin)) throw InputError("insolation: empty period " + p.label);
@@ -76,6 +77,19 @@ InsolationModel::InsolationModel(const InsolationSettings& settings, double lat_
     samples_ = path.size();
     const std::size_t n_periods = settings_.periods.size(), n_levels = level_z_.size();
     tables_.assign(n_periods * band_lat_.size() * n_levels, AzimuthTable(bins, settings_.horizon_grid));
+    // The sky: sectors on the horizon azimuths; one sky band per sky_band_step of latitude,
+    // summed at the latitude band nearest it.
+    sky_stride_ = settings_.svf_stride;
+    while (bins / sky_stride_ > kMaxSkySectors && bins % (2 * sky_stride_) == 0) sky_stride_ *= 2;
+    SkyGrid sky_grid;
+    sky_grid.sectors = bins / sky_stride_;
+    const int per_sky_band = std::max(1, int(std::lround(settings_.sky_band_step_deg / band_step_)));
+    const int n_bands = int(band_lat_.size());
+    sky_bands_ = (n_bands - 1) / per_sky_band + 1;
+    sky_band_of_.resize(std::size_t(n_bands));
+    for (int b = 0; b < n_bands; ++b) sky_band_of_[std::size_t(b)] = std::min(sky_bands_ - 1, int(std::lround(double(b) / per_sky_band)));
+    const SkyKernel kernel(sky_grid, settings_.threads);
+    skies_.assign(n_periods * std::size_t(sky_bands_), PeriodSky(sky_grid));
     const double r = settings_.sun_radius_rad;
     const double lon = settings_.clock_longitude_deg;
     parallel_for(int(band_lat_.size()), thread_count(settings_.threads), [&](int b, int) {
@@ -93,6 +107,9 @@ InsolationModel::InsolationModel(const InsolationSettings& settings, double lat_
             const int bin = int(std::lround(sun.phi_rad * bins / (2 * kPi))) % bins;
             up.push_back({sun, i, bin});
         }
+        // This band sums the sky of its sky band when it is that band's own latitude.
+        const int sky_band = sky_band_of_[std::size_t(b)];
+        const bool sums_sky = std::min(n_bands - 1, sky_band * per_sky_band) == b;
         std::vector<std::vector<AzimuthTable::Sample>> per_bin(static_cast<std::size_t>(bins));
         for (std::size_t l = 0; l < n_levels; ++l) {
             std::size_t u = 0;
@@ -106,22 +123,19 @@ InsolationModel::InsolationModel(const InsolationSettings& settings, double lat_
                     const double tl = settings_.linke_monthly[std::size_t(s.month0)];
                     const double beam = beam_normal_irradiance(g0, tl, sun.altitude_rad, level_z_[l]);
                     const double diffuse = diffuse_horizontal_irradiance(g0, tl, sun.altitude_rad);
-                    const double kb = g0 > 0 ? beam / g0 : 0.0;
-                    const double sin_e = sun.direction.z;
-                    const double circ = sin_e > kMinSinForCircumsolar ? diffuse * kb / sin_e : 0.0;
-                    const double iso = diffuse - circ * sin_e;
                     const double dt = s.hours;
                     AzimuthTable::Sample sample{sun.elevation_rad, {}};
-                    for (int c = 0; c < 3; ++c) {
-                        sample.w[std::size_t(c)] = beam * dt * sun.direction[c];
-                        sample.w[std::size_t(3 + c)] = circ * dt * sun.direction[c];
-                    }
-                    sample.w[6] = dt;
+                    for (int c = 0; c < 3; ++c) sample.w[std::size_t(c)] = beam * dt * sun.direction[c];
+                    sample.w[3] = dt;
                     per_bin[std::size_t(up[u].bin)].push_back(sample);
-                    table.isotropic_diffuse_wh += iso * dt;
-                    table.open_global_wh += (beam * sin_e + diffuse) * dt;
+                    table.open_global_wh += (beam * sun.direction.z + diffuse) * dt;
+                    // The sky does not depend on the height (ESRA's diffuse has no elevation term).
+                    if (sums_sky && l == 0)
+                        skies_[p * std::size_t(sky_bands_) + std::size_t(sky_band)].add_sun(sun.elevation_rad, sun.phi_rad,
+                                                                                            diffuse * dt);
                 }
                 for (int j = 0; j < bins; ++j) table.finish_bin(j, per_bin[std::size_t(j)], r);
+                if (sums_sky && l == 0) skies_[p * std::size_t(sky_bands_) + std::size_t(sky_band)].finish(kernel);
             }
         }
         if (progress) progress->advance(1);
@@ -144,6 +158,7 @@ std::pair<int, float> InsolationModel::band_between(double latitude_deg) const {
 std::size_t InsolationModel::table_bytes() const {
     std::size_t n = 0;
     for (const auto& t : tables_) n += t.bytes();
+    for (const auto& s : skies_) n += s.bytes();
     return n;
 }
 
@@ -183,6 +198,7 @@ void InsolationModel::run(int n, const TexelInfo* info, const std::function<void
         inv_nz[std::size_t(i)] = 1.0f / std::max(info[i].normal.z, 1e-6f);
     }
     std::vector<float> acc(std::size_t(n) * std::size_t(periods) * kTableStride, 0.0f);
+    std::vector<float> sky_acc(std::size_t(n) * std::size_t(periods) * 4, 0.0f);  // per texel and period: ENU sum
     std::vector<float> h(static_cast<std::size_t>(n));
     // Bin by bin over all the texels, so one bin's tables stay in cache across them.
     for (int j = 0; j < bins; ++j) {
@@ -197,6 +213,10 @@ void InsolationModel::run(int n, const TexelInfo* info, const std::function<void
             const float wb = w1[std::size_t(i)];
             float* ai = acc.data() + std::size_t(i) * std::size_t(periods) * kTableStride;
             const float bw = t.next_band_weight;
+            if (j % sky_stride_ == 0) {
+                float* si = sky_acc.data() + std::size_t(i) * std::size_t(periods) * 4;
+                for (int p = 0; p < periods; ++p) sky(p, t.band).add_visible(j / sky_stride_, hz, 1.0f, si + std::size_t(p) * 4);
+            }
             for (int p = 0; p < periods; ++p) {
                 float* ap = ai + std::size_t(p) * kTableStride;
                 table(p, t.band, lo).add_visible(j, hz, (1.0f - wb) * (1.0f - bw), ap);
@@ -215,25 +235,24 @@ void InsolationModel::run(int n, const TexelInfo* info, const std::function<void
         const double wb = w1[std::size_t(i)], wa = 1 - wb;
         for (int p = 0; p < periods; ++p) {
             const float* ap = acc.data() + (std::size_t(i) * std::size_t(periods) + std::size_t(p)) * kTableStride;
-            double iso = 0, open = 0;
+            const float* sp = sky_acc.data() + (std::size_t(i) * std::size_t(periods) + std::size_t(p)) * 4;
+            double open = 0;
             const double bw = info[i].next_band_weight;
             for (int b = 0; b < (bw > 0 ? 2 : 1); ++b) {
                 const double wband = b == 0 ? 1 - bw : bw;
                 const AzimuthTable& t0 = table(p, info[i].band + b, lo);
                 const AzimuthTable& t1 = table(p, info[i].band + b, hi);
-                iso += wband * (wa * t0.isotropic_diffuse_wh + wb * t1.isotropic_diffuse_wh);
                 open += wband * (wa * t0.open_global_wh + wb * t1.open_global_wh);
             }
             const double beam = std::max(0.0, nn.x * ap[0] + nn.y * ap[1] + nn.z * ap[2]) * k;
-            const double circ = std::max(0.0, nn.x * ap[3] + nn.y * ap[4] + nn.z * ap[5]) * k;
-            const double diffuse = circ + iso * svf[i] * k;
+            const double diffuse = std::max(0.0, nn.x * sp[0] + nn.y * sp[1] + nn.z * sp[2]) * k;
             const double reflected = settings_.albedo * open * (1 - svf[i]) * k;
             float* o = out + (std::size_t(i) * std::size_t(periods) + std::size_t(p)) * kQuantities;
             o[kGlobal] = float(beam + diffuse + reflected);
             o[kBeam] = float(beam);
             o[kDiffuse] = float(diffuse);
             o[kReflected] = float(reflected);
-            o[kSunHours] = float(ap[6]);
+            o[kSunHours] = float(ap[3]);
         }
     }
 }

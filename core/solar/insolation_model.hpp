@@ -4,12 +4,12 @@
 // ESRA's beam and diffuse (esra_clear_sky.hpp). A texel then sums what its horizon lets through
 // in each azimuth bin (texel_insolation), at a cost independent of the step.
 //
-// The sky: ESRA's horizontal diffuse split as in Hay's model (Hay, "Calculation of monthly mean
-// solar radiation for horizontal and inclined surfaces", Solar Energy 23 (1979) 301-307): a part
-// Kb = B / G0 (the beam's transmittance) comes from the sun's direction and is hidden with the
-// sun, the rest is an isotropic sky seen through the texel's own horizons (its tilted sky view
-// factor). Reflected: the albedo times an open horizontal plane's global irradiation times the
-// part of the texel's cosine-weighted hemisphere that is terrain (1 - tilted sky view factor).
+// The sky: ESRA's diffuse horizontal irradiance spread over the sky as the CIE standard clear
+// sky (cie_clear_sky.hpp: brighter around the sun and towards the horizon), summed over the
+// period once per latitude band (period_sky.hpp) and seen by each texel through its own horizons
+// in every horizon azimuth. Reflected: the albedo times an open horizontal plane's global
+// irradiation times the part of the texel's cosine-weighted hemisphere that is terrain (1 -
+// tilted sky view factor).
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/solar/azimuth_table.hpp"
+#include "core/solar/period_sky.hpp"
 #include "core/solar/insolation_period.hpp"
 #include "core/solar/sun_path.hpp"
 
@@ -37,9 +38,14 @@ struct InsolationSettings {
     double clock_longitude_deg = 0;  // the clock of periods, months and days (the DEM's centre)
     bool refraction = true;          // the sun's apparent elevation (SPA) hides behind horizons
     int azimuth_bins = 256;
-    // The tilted sky view factor is integrated over every svf_stride-th bin (the horizon
-    // azimuths themselves when the bins subdivide them: their horizons are exact there).
+    // The tilted sky view factor and the diffuse sky are integrated over every svf_stride-th bin
+    // (the horizon azimuths themselves when the bins subdivide them: their horizons are exact
+    // there); the sky in azimuth_bins / svf_stride sectors, halved down to 64 if the bins allow
+    // (the summed sky is smooth at that scale).
     int svf_stride = 1;
+    // The period's sky is summed for latitude bands this far apart (the nearest serves a texel):
+    // it changes with the sun's path far more slowly than the beam's edges do.
+    double sky_band_step_deg = 0.5;
     // Texels between two latitude bands take both, linearly (twice the lookups); false: the
     // nearest band (enough when the bands are 0.05 degree apart).
     bool interpolate_bands = false;
@@ -73,6 +79,11 @@ public:
     const AzimuthTable& table(int period, int band, int level) const {
         return tables_[(std::size_t(period) * band_lat_.size() + std::size_t(band)) * level_z_.size() + std::size_t(level)];
     }
+    // The diffuse sky of a period for a texel of latitude band `band` (the nearest sky band).
+    const PeriodSky& sky(int period, int band) const {
+        return skies_[std::size_t(period) * std::size_t(sky_bands_) + std::size_t(sky_band_of_[std::size_t(band)])];
+    }
+    int sky_stride() const { return sky_stride_; }
     std::size_t table_bytes() const;
     std::size_t samples() const { return samples_; }
 
@@ -101,6 +112,10 @@ private:
     std::vector<double> band_lat_, level_z_;
     double band_first_ = 0, band_step_ = 1;
     std::vector<AzimuthTable> tables_;
+    int sky_stride_ = 1;  // bins per sky sector
+    int sky_bands_ = 1;
+    std::vector<int> sky_band_of_;  // per latitude band
+    std::vector<PeriodSky> skies_;  // [period][sky band]
     std::vector<double> cos_phi_, sin_phi_;
     std::size_t samples_ = 0;
 };

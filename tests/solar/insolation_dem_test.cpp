@@ -2,7 +2,8 @@
 // Copernicus DSM (French Alps, 50 x 50 texels of ~160 x 220 m), monthly periods over a year,
 // 16 texels spread over the crop. Reference: every minute, the sun's visibility from the
 // horizon in the sun's own azimuth (linear between the horizon azimuths), ESRA at the texel's
-// own height and latitude.
+// own height and latitude, the diffuse sky integrated over the sky above the horizons every
+// 30 minutes (ReferenceSky: the sky changes slowly; every minute would take minutes).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -64,7 +65,11 @@ struct GrenobleCase {
         std::vector<float> azimuths(static_cast<std::size_t>(h.directions));
         for (int d = 0; d < h.directions; ++d) azimuths[std::size_t(d)] = h.at(d, c, r);
         const glm::dvec3 n(normals_.x[t], normals_.y[t], normals_.z[t]);
-        const std::vector<double> ref = reference_insolation(settings_, path_, lat_[t], grid_.z[t], n, azimuths);
+        ReferenceSky sky;
+        sky.stride = 30;
+        sky.azimuths = std::min(h.directions, 90);
+        sky.elevations = 16;
+        const std::vector<double> ref = reference_insolation(settings_, path_, lat_[t], grid_.z[t], n, azimuths, sky);
         double year_fast = 0, year_ref = 0;
         for (int p = 0; p < 12; ++p) {
             const double f = map_.band(p, kGlobal)[t], g = ref[std::size_t(p) * kQuantities + kGlobal];

@@ -33,6 +33,9 @@ std::vector<double> march_distances(const TerrainReflectionSettings& s) {
     return t;
 }
 
+// The march stops once its maximum is this close below the exact horizon (0.25 degree).
+constexpr double kHorizonReachedRad = 0.0043633;
+
 // One sample of a sector's march, relative to the receiver: the bilinear cell's corner and
 // weights for the height, the nearest texel for G, and the distance terms of the slope.
 struct Step {
@@ -47,6 +50,20 @@ struct Step {
 inline double weight_above(double h, double tan_h, double a, double nz) {
     const double c2 = 1.0 / (1.0 + tan_h * tan_h);
     return a * (kPi / 4 - h / 2 - tan_h * c2 / 2) + nz * c2 / 2;
+}
+
+// F at the exact horizon h in [-pi/2, pi/2], from sin(2h) and cos(2h) by short Taylor series on
+// [-pi/2, pi/2] after reduction (errors below 4e-6, far under the sectors' discretisation):
+// libm's tan here took a tenth of the gather's time in a profile.
+inline double weight_above_horizon(double h, double a, double nz) {
+    double x = 2 * h, flip = 1;
+    if (x > kPi / 2) x = kPi - x, flip = -1;
+    if (x < -kPi / 2) x = -kPi - x, flip = -1;
+    const double x2 = x * x;
+    const double sin2h = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 / 362880))));
+    const double cos2h =
+        flip * (1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 - x2 / 3628800)))));
+    return a * (kPi / 4 - h / 2 - sin2h / 4) + nz * (1 + cos2h) / 4;
 }
 
 // The gather of one band of rows: the sector directions, the march's distances, and per row
@@ -131,9 +148,11 @@ public:
                     seen_weight_ += wt;
                 }
                 tan_max = tan_s, h_max = h_s, f_max = f_s;
-                if (h_max >= hd) break;  // the exact horizon: nothing further rises above it
+                // Within reach of the exact horizon nothing further can add more than the sliver
+                // up to it, which the isotropic ground fills below.
+                if (h_max >= hd - kHorizonReachedRad) break;
             }
-            if (hd > h_max) far_weight_ += f_max - weight_above(hd, std::tan(hd), a, nz);
+            if (hd > h_max) far_weight_ += f_max - weight_above_horizon(hd, a, nz);
         }
     }
 
@@ -210,6 +229,10 @@ std::vector<float> gather_terrain_reflection(const ReflectionInputs& in, const T
                 float* o = out.data() + t * periods;
                 if (std::isnan(grid.z[t]) || std::isnan(in.horizons->angle[t]) || std::isnan(in.global[t * periods]))
                     continue;
+                if (!(in.svf[t] < 1)) {  // no terrain in view: nothing to gather, the estimate is 0
+                    std::copy(iso, iso + periods, o);
+                    continue;
+                }
                 g.gather(c, r);
                 const double total = g.seen_weight() + g.far_weight();
                 if (!(total > 0)) {  // no terrain above the plane in the gather's azimuths

@@ -31,7 +31,7 @@
 
 namespace ts::solar {
 
-// Defaults from the error against a fine gather (64 directions, radius 256, growth 1.1) and
+// Defaults from the error against a fine gather (64 directions, radius 250, growth 1.1) and
 // the cost on a whole SRTM tile (docs/insolation.md, "Reflected").
 struct TerrainReflectionSettings {
     // Azimuths of the gather; 0: no gather (the first pass's isotropic ground). When it does
@@ -41,7 +41,7 @@ struct TerrainReflectionSettings {
     // window, so that its core texels see the same terrain in a block as in the whole level.
     double radius_texels = 64;
     // Each step is this many times the last (the first is one texel).
-    double growth = 1.3;
+    double growth = 1.2;
     bool enabled() const { return directions > 0; }
 };
 

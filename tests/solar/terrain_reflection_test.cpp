@@ -144,7 +144,7 @@ TEST(TerrainReflection, FootOfASlopeSeesTheSlopesLight) {
 // ridge), so it gets about albedo x G(sunny slope) x (1 - svf), G taken across the valley.
 // Within 6%: the vertex texels on the valley's axis get less than the slope (25% less), and the
 // sunny slope seen along the 22.5-degree sectors lies beyond the 64-texel radius, where it
-// counts as open ground (also 25% below the slope); measured 4.7% low. Today's isotropic
+// counts as open ground (also 25% below the slope); measured 2.6% low. Today's isotropic
 // ground, open flat G, is 25% below the sunny slope's: the gather gets 30% more.
 TEST(TerrainReflection, NorthFacingSlopeOfAValleySeesTheSunnySlope) {
     const int w = 160, h = 80, axis = 40, half = 20;

@@ -52,7 +52,8 @@ public:
         // The reflection's gather looks no farther than the halo (less the bilinear cell and a
         // rounding texel), so a core texel sees the same terrain in its block as in the whole level.
         solar::TerrainReflectionSettings reflection = ins->reflection;
-        reflection.radius_texels = std::clamp(reflection.radius_texels, 1.0, double(b.shading.block_halo_texels - 2));
+        reflection.radius_texels =
+            std::min(reflection.radius_texels, std::max(1.0, double(b.shading.block_halo_texels - 2)));
         solar::apply_terrain_reflection(map, g, vis.horizons, normals, ins->model->settings().albedo, reflection,
                                         b.shading.threads);
 

@@ -25,6 +25,7 @@
 #include "core/raster/float_cog_writer.hpp"
 #include "core/solar/insolation_map.hpp"
 #include "core/solar/insolation_model.hpp"
+#include "core/solar/terrain_reflection.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/block_shading.hpp"
@@ -106,11 +107,18 @@ void run_insolation(InsolationOptions& o) {
     if (part.size() == 0)
         throw InputError("--shard " + shard_text(shard) + ": the DEM has " + std::to_string(dem.height) +
                          " rows, fewer than the shards");
-    const visibility::ReceiverWindow rows{0, int(part.begin), dem.width, int(part.size())};
-    const std::uint64_t texels = std::uint64_t(dem.width) * part.size();
+    // The first pass covers the rows the reflection's gather reads too (its radius, the bilinear
+    // cell and a rounding row, within the DEM), so that a shard's rows get the single run's values.
+    const int reach = o.sun.reflection.enabled() ? int(std::ceil(o.sun.reflection.radius_texels)) + 2 : 0;
+    const int row_begin = std::max(0, int(part.begin) - reach);
+    const int row_end = std::min(dem.height, int(part.end) + reach);
+    const visibility::ReceiverWindow rows{0, row_begin, dem.width, row_end - row_begin};
+    const std::uint64_t texels = std::uint64_t(dem.width) * std::uint64_t(rows.height);
+    const std::uint64_t kept_rows = part.size(), kept_texels = std::uint64_t(dem.width) * kept_rows;
     const std::uint64_t bands = settings.periods.size() * solar::kQuantities;
     check_job_memory("insolation of " + std::to_string(dem.width) + "x" + std::to_string(rows.height) + " texels",
-                     visibility_peak_bytes(texels, o.directions, false) + texels * (bands * 8 + 16),
+                     visibility_peak_bytes(texels, o.directions, false) + texels * (bands * 8 + 16) +
+                         (o.sun.reflection.enabled() ? texels * settings.periods.size() * 12 : 0),
                      "use --crop, a coarser --by, or fewer --directions");
     const terrain::HeightGrid grid = terrain::metric_view(dem);
     // Horizons.
@@ -132,7 +140,7 @@ void run_insolation(InsolationOptions& o) {
     std::vector<std::uint8_t> row_voids;
     const terrain::HeightGrid row_grid = tiles::window_grid(grid, rows, row_z, row_voids);
     render::NormalField normals = render::terrain_normals(grid, o.threads);
-    const std::size_t first_texel = part.begin * std::size_t(dem.width);
+    const std::size_t first_texel = std::size_t(rows.row0) * std::size_t(dem.width);
     for (std::vector<float>* v : {&normals.x, &normals.y, &normals.z})
         *v = std::vector<float>(v->begin() + std::ptrdiff_t(first_texel), v->begin() + std::ptrdiff_t(first_texel + texels));
 
@@ -147,9 +155,18 @@ void run_insolation(InsolationOptions& o) {
     const Stopwatch t_sum;
     ProgressBar sum_bar("insolation", texels, "texels");
     const std::span<const float> latitude(sun.latitude.data() + first_texel, texels);
-    const solar::InsolationMap map = solar::integrate_insolation(model, row_grid, vis.horizons, normals, latitude, &sum_bar);
+    solar::InsolationMap all_rows = solar::integrate_insolation(model, row_grid, vis.horizons, normals, latitude, &sum_bar);
     sum_bar.finish();
     const double sum_s = t_sum.seconds();
+    // Pass 2: the reflected light from the terrain each texel sees.
+    const Stopwatch t_reflect;
+    solar::apply_terrain_reflection(all_rows, row_grid, vis.horizons, normals, settings.albedo, o.sun.reflection,
+                                    o.threads);
+    const double reflect_s = t_reflect.seconds();
+    const int kept_row0 = int(part.begin) - rows.row0;
+    const solar::InsolationMap map = kept_rows == std::uint64_t(rows.height)
+                                         ? std::move(all_rows)
+                                         : solar::map_rows(all_rows, kept_row0, int(kept_rows));
 
     std::vector<std::string> names, units;
     for (const auto& p : settings.periods)
@@ -160,18 +177,18 @@ void run_insolation(InsolationOptions& o) {
     StagedOutputs outputs;
     std::string record;  // a shard says which rows of which job it holds, for `merge`
     if (!shard.whole())
-        record = insolation_shard_text({describe_job(o, dem), shard, rows.row0, rows.height, dem.height, names, units});
+        record = insolation_shard_text({describe_job(o, dem), shard, int(part.begin), int(kept_rows), dem.height, names, units});
     outputs.stage(o.out, [&](const std::filesystem::path& tmp) {
-        raster::write_float_cog(tmp, dem.width, rows.height, int(bands), map.values.data(),
-                                dem.georef.window(0, rows.row0, dem.width, rows.height), names, units, record);
+        raster::write_float_cog(tmp, dem.width, int(kept_rows), int(bands), map.values.data(),
+                                dem.georef.window(0, int(part.begin), dem.width, int(kept_rows)), names, units, record);
     });
     QuicklookRange range;
     if (!o.quicklook.empty()) {
         // The global irradiation of the whole range (every period summed).
-        std::vector<float> global(texels, 0.0f);
+        std::vector<float> global(kept_texels, 0.0f);
         for (int p = 0; p < map.periods; ++p) {
             const float* g = map.band(p, solar::kGlobal);
-            for (std::size_t i = 0; i < texels; ++i) global[i] += g[i];
+            for (std::size_t i = 0; i < kept_texels; ++i) global[i] += g[i];
         }
         const std::string label = settings.periods.size() == 1
                                       ? settings.periods[0].label
@@ -183,16 +200,18 @@ void run_insolation(InsolationOptions& o) {
     }
     outputs.commit();
     if (!shard.whole())
-        std::printf("shard %s: rows %d..%d of %d\n", shard_text(shard).c_str(), rows.row0, rows.row0 + rows.height - 1,
+        std::printf("shard %s: rows %d..%d of %d\n", shard_text(shard).c_str(), int(part.begin), int(part.end) - 1,
                     dem.height);
     std::printf("insolation: %dx%d texels, %zu period%s (%s .. %s), %d azimuths x %d bins, %d latitude band%s x %d "
                 "level%s, %zu sun steps of %.3g min\n",
-                dem.width, rows.height, settings.periods.size(), settings.periods.size() == 1 ? "" : "s",
+                dem.width, int(kept_rows), settings.periods.size(), settings.periods.size() == 1 ? "" : "s",
                 settings.periods.front().label.c_str(), settings.periods.back().label.c_str(), o.directions,
                 o.bins_per_direction, model.bands(), model.bands() == 1 ? "" : "s", model.levels(),
                 model.levels() == 1 ? "" : "s", model.samples(), settings.step_minutes);
-    std::printf("  horizons on %s: %.2f s; sun tables: %.2f s (%.1f MB); per-texel sums: %.2f s; total %.2f s\n",
-                vis.path().c_str(), vis_s, tables_s, double(model.table_bytes()) / 1e6, sum_s, total.seconds());
+    std::printf("  horizons on %s: %.2f s; sun tables: %.2f s (%.1f MB); per-texel sums: %.2f s; reflection's gather: "
+                "%.2f s; total %.2f s\n",
+                vis.path().c_str(), vis_s, tables_s, double(model.table_bytes()) / 1e6, sum_s, reflect_s,
+                total.seconds());
     std::printf("wrote %s (%llu bands: global, beam, diffuse, reflected in kWh/m2 and hours of direct sun per period)\n",
                 o.out.c_str(), (unsigned long long)bands);
     if (!o.quicklook.empty())

@@ -140,6 +140,7 @@ void check_insolation_style(const TilesArgs& a, tiles::TileShading& s) {
     solar::check_settings(st);
     auto ins = std::make_shared<tiles::TileInsolation>();
     ins->quantity = parse_insolation_quantity(a.quantity);
+    ins->reflection = a.insolation.reflection;
     if (!a.ramp.empty()) {
         const tiles::RampEnds ramp = parse_ramp(a.ramp);
         ins->lo = ramp.lo, ins->hi = ramp.hi;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/options/within_range.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::app {
@@ -29,6 +30,20 @@ void add_insolation_options(CLI::App& cmd, InsolationArgs& a) {
         cmd.add_option("--step", a.step_minutes,
                        "Time step of the sun's path in minutes (costs only in the sun tables)")
             ->capture_default_str(),
+        cmd.add_option("--reflection-directions", a.reflection.directions,
+                       "Azimuths along which each texel gathers the light reflected by the terrain it sees "
+                       "(a divisor of --directions; 0: an isotropic ground lit like open flat land)")
+            ->capture_default_str()
+            ->check(within(0, 1024)),
+        // At most 250: a tile block's halo is 256 texels, and its core texels must see within it.
+        cmd.add_option("--reflection-radius", a.reflection.radius_texels,
+                       "How far the reflection's gather looks, texels (farther terrain is lit like open flat land)")
+            ->capture_default_str()
+            ->check(within(1, 250)),
+        cmd.add_option("--reflection-growth", a.reflection.growth,
+                       "Ratio of each step of the reflection's gather to the last (the first is one texel)")
+            ->capture_default_str()
+            ->check(within(1.01, 4)),
     };
 }
 
@@ -54,7 +69,12 @@ std::string describe_insolation_sum(const InsolationArgs& a) {
     std::snprintf(text, sizeof text, "%04d-%02d-%02d..%04d-%02d-%02d albedo %.9g index %.9g step %.9g linke ",
                   first.year, first.month, first.day, last.year, last.month, last.day, s.albedo, s.clear_sky_index,
                   s.step_minutes);
-    return text + linke;
+    // The gather changes the reflected and global values: off, or its directions, radius, growth.
+    char gather[96] = " reflection isotropic";
+    if (a.reflection.enabled())
+        std::snprintf(gather, sizeof gather, " reflection %d %.9g %.9g", a.reflection.directions,
+                      a.reflection.radius_texels, a.reflection.growth);
+    return text + linke + gather;
 }
 
 solar::InsolationSettings insolation_settings(const InsolationArgs& a) {
@@ -72,6 +92,7 @@ solar::InsolationSettings insolation_settings(const InsolationArgs& a) {
     s.albedo = a.albedo;
     s.clear_sky_index = a.clear_sky_index;
     s.step_minutes = a.step_minutes;
+    solar::check_reflection_settings(a.reflection);
     return s;
 }
 

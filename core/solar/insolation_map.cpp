@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
@@ -41,6 +42,20 @@ std::vector<float> texel_latitudes(const geo::Georef& georef, int threads) {
     return lat;
 }
 
+InsolationMap map_rows(const InsolationMap& map, int row0, int rows) {
+    if (row0 < 0 || rows < 0 || row0 + rows > map.height) throw std::out_of_range("map_rows: rows outside the map");
+    InsolationMap out;
+    out.width = map.width, out.height = rows, out.periods = map.periods;
+    const std::size_t plane = std::size_t(map.width) * std::size_t(map.height);
+    const std::size_t first = std::size_t(row0) * std::size_t(map.width), count = std::size_t(rows) * std::size_t(map.width);
+    out.values.resize(std::size_t(map.periods) * kQuantities * count);
+    for (std::size_t b = 0; b < std::size_t(map.periods) * kQuantities; ++b)
+        std::copy_n(map.values.begin() + std::ptrdiff_t(b * plane + first), count,
+                    out.values.begin() + std::ptrdiff_t(b * count));
+    if (!map.svf.empty()) out.svf.assign(map.svf.begin() + std::ptrdiff_t(first), map.svf.begin() + std::ptrdiff_t(first + count));
+    return out;
+}
+
 void bin_horizons(const visibility::HorizonSet& horizons, std::size_t texel, int bins, float* out) {
     const int d_count = horizons.directions;
     const std::size_t plane = horizons.texels();
@@ -66,6 +81,7 @@ InsolationMap integrate_insolation(const InsolationModel& model, const terrain::
     map.periods = model.periods();
     const std::size_t values_per_texel = std::size_t(map.periods) * kQuantities;
     map.values.assign(values_per_texel * texels, std::numeric_limits<float>::quiet_NaN());
+    map.svf.assign(texels, std::numeric_limits<float>::quiet_NaN());
     const int bins = model.settings().azimuth_bins;
     const int directions = horizons.directions;
     const std::size_t plane = horizons.texels();
@@ -121,6 +137,7 @@ InsolationMap integrate_insolation(const InsolationModel& model, const terrain::
                                             }
                                         },
                                         svf.data(), out.data());
+                              for (int i = 0; i < n; ++i) map.svf[index[std::size_t(i)]] = svf[std::size_t(i)];
                               for (int i = 0; i < n; ++i)
                                   for (std::size_t v = 0; v < values_per_texel; ++v)
                                       map.values[v * texels + index[std::size_t(i)]] = out[std::size_t(i) * values_per_texel + v];

@@ -22,6 +22,9 @@ namespace ts::solar {
 struct InsolationMap {
     int width = 0, height = 0, periods = 0;
     std::vector<float> values;
+    // Per texel: the tilted sky view factor the sums used (NaN on voids), for the second pass
+    // (terrain_reflection.hpp).
+    std::vector<float> svf;
     const float* band(int period, int quantity) const {
         return values.data() + (std::size_t(period) * kQuantities + std::size_t(quantity)) * std::size_t(width) * height;
     }
@@ -36,6 +39,9 @@ std::vector<float> texel_latitudes(const geo::Georef& georef, int threads);
 InsolationMap integrate_insolation(const InsolationModel& model, const terrain::HeightGrid& grid,
                                    const visibility::HorizonSet& horizons, const render::NormalField& normals,
                                    std::span<const float> latitude_deg, ProgressBar* progress = nullptr);
+
+// Rows [row0, row0 + rows) of a map as a map of their own (its svf too).
+InsolationMap map_rows(const InsolationMap& map, int row0, int rows);
 
 // The horizons of one texel at the model's bins from its D horizon planes (linear in azimuth).
 void bin_horizons(const visibility::HorizonSet& horizons, std::size_t texel, int bins, float* out);

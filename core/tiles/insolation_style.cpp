@@ -3,6 +3,7 @@
 // exact horizons, normals and latitudes and the sun tables the job built once
 // (core/solar, tile_insolation.hpp). Its heights are the true ones: an exaggerated relief would
 // shade the sun out of valleys it reaches.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "core/raster/colour_ramp.hpp"
 #include "core/raster/srgb.hpp"
 #include "core/solar/insolation_map.hpp"
+#include "core/solar/terrain_reflection.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/block_shading.hpp"
 #include "core/tiles/tile_insolation.hpp"
@@ -46,7 +48,14 @@ public:
         request.horizon.progress = b.progress;
         const visibility::VisibilityResult vis = block_visibility(b, request, g);
         const render::NormalField normals = render::terrain_normals(g, b.shading.threads);
-        const solar::InsolationMap map = solar::integrate_insolation(*ins->model, g, vis.horizons, normals, lat);
+        solar::InsolationMap map = solar::integrate_insolation(*ins->model, g, vis.horizons, normals, lat);
+        // The reflection's gather looks no farther than the halo (less the bilinear cell and a
+        // rounding texel), so a core texel sees the same terrain in its block as in the whole level.
+        solar::TerrainReflectionSettings reflection = ins->reflection;
+        reflection.radius_texels =
+            std::min(reflection.radius_texels, std::max(1.0, double(b.shading.block_halo_texels - 2)));
+        solar::apply_terrain_reflection(map, g, vis.horizons, normals, ins->model->settings().albedo, reflection,
+                                        b.shading.threads);
 
         const std::size_t n = lat.size();
         std::vector<float> values(3 * n, std::numeric_limits<float>::quiet_NaN());

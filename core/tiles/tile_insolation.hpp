@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/solar/insolation_model.hpp"
+#include "core/solar/terrain_reflection.hpp"
 
 namespace ts::tiles {
 
@@ -16,6 +17,8 @@ struct TileInsolation {
     int quantity = solar::kGlobal;  // solar::Quantity, summed over the model's periods
     float lo = 0, hi = 1;           // the ramp's ends, in the quantity's unit
     std::string describe;           // what changes the tiles' bytes (the job file compares it)
+    // The reflected light's gather (its radius stays within a block's 256-texel halo).
+    solar::TerrainReflectionSettings reflection;
 };
 
 // "global", "beam", "diffuse", "reflected", "sun-hours": what users call solar::Quantity q.

@@ -99,6 +99,25 @@ TEST(InsolationCli, ShardsMergeIntoTheSingleRunsFileByteForByte) {
     ASSERT_EQ(m.exit_code, 0) << m.err;
     EXPECT_EQ(bytes_of(merged), bytes_of(dir / "whole.tif"));
 
+    // The reflection's gather reads rows beyond a shard's, which its first pass covers: with a
+    // short radius each shard sums only part of the DEM's rows, and still merges into the single
+    // run's file; the gather's settings make another job.
+    const std::string short_job = job + " --reflection-directions 8 --reflection-radius 4";
+    ASSERT_EQ(run_ts(short_job + " --out " + quote((dir / "short.tif").string())).exit_code, 0);
+    std::string short_parts;
+    for (int k = 0; k < 3; ++k) {
+        const std::string part = (dir / ("s" + std::to_string(k) + ".tif")).string();
+        ASSERT_EQ(run_ts(short_job + " --shard " + std::to_string(k) + "/3 --out " + quote(part)).exit_code, 0);
+        short_parts += " " + quote(part);
+    }
+    const std::string short_merged = (dir / "short_merged.tif").string();
+    ASSERT_EQ(run_ts("merge" + short_parts + " --out " + quote(short_merged)).exit_code, 0);
+    EXPECT_EQ(bytes_of(short_merged), bytes_of(dir / "short.tif"));
+    EXPECT_NE(bytes_of(short_merged), bytes_of(dir / "whole.tif"));
+    const Result mixed = run_ts("merge " + quote((dir / "p0.tif").string()) + " " + quote((dir / "p1.tif").string()) +
+                                " " + quote((dir / "s2.tif").string()) + " --out " + quote((dir / "mixed.tif").string()));
+    EXPECT_EQ(mixed.exit_code, 2) << mixed.err;
+
     // Another job's shard (another albedo), a shard missing, a map that is no shard, --quicklook.
     const std::string other = (dir / "other.tif").string();
     ASSERT_EQ(run_ts(job + " --albedo 0.5 --shard 2/3 --out " + quote(other)).exit_code, 0);

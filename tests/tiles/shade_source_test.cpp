@@ -69,10 +69,11 @@ void expect_blocked_equals_whole(std::string_view style, FarFieldMethod far, con
     s.far_field = far;
     s.directions = 8;
     s.threads = 2;
+    // One job's halo for both: the insolation's reflection gathers no farther than it.
+    s.block_halo_texels = 48;
     s.block_texels = 0;
     const ShadeSource whole = make_shade_source(dem, s, 0, 1.0);
     s.block_texels = 64;  // 3 x 3 blocks, the last ones partial
-    s.block_halo_texels = 48;
     const ShadeSource blocked = make_shade_source(dem, s, 0, 1.0);
     ASSERT_EQ(whole.values.size(), blocked.values.size());
     ASSERT_EQ(whole.values.size(), std::size_t(dem.width) * std::size_t(dem.height) * std::size_t(whole.channels));

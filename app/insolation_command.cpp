@@ -22,9 +22,11 @@
 #include "app/job_memory.hpp"
 #include "app/options/insolation_options.hpp"
 #include "app/options/threads_option.hpp"
+#include "core/material/material_sources.hpp"
 #include "core/raster/float_cog_writer.hpp"
 #include "core/solar/insolation_map.hpp"
 #include "core/solar/insolation_model.hpp"
+#include "core/solar/shortwave_albedo.hpp"
 #include "core/solar/terrain_reflection.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
@@ -49,6 +51,7 @@ struct InsolationOptions {
     int directions = 64, bins_per_direction = 4;
     int threads = 0;
     std::string out, quicklook;
+    std::string materials;  // ESA WorldCover GeoTIFF: a shortwave albedo per texel
     std::string shard;  // K/N: rows of the map (insolation_shards.hpp)
     DeviceArgs device;
 };
@@ -59,7 +62,14 @@ std::string describe_job(const InsolationOptions& o, const dem::Dem& dem) {
     char grid[160];
     std::snprintf(grid, sizeof grid, "by %s; directions %d x %d; latitude step %.9g level step %.9g", o.by.c_str(),
                   o.directions, o.bins_per_direction, o.band_step_deg, o.level_step_m);
-    return "dem " + tiles::dem_identity(dem) + "; " + describe_insolation_sum(o.sun) + "; " + grid;
+    std::string materials;
+    if (!o.materials.empty()) {
+        std::error_code ec;
+        const auto bytes = std::filesystem::file_size(o.materials, ec);
+        materials = "; materials " + std::filesystem::path(o.materials).filename().string() + " " +
+                    std::to_string(ec ? 0 : bytes) + " bytes";
+    }
+    return "dem " + tiles::dem_identity(dem) + "; " + describe_insolation_sum(o.sun) + "; " + grid + materials;
 }
 
 constexpr int kMaxBands = 2000;  // --by day over ~a year at most (5 quantities a day)
@@ -90,6 +100,7 @@ void run_insolation(InsolationOptions& o) {
     solar::InsolationSettings settings = check_options(o);
     IoPlan plan;
     plan.inputs("DEM", o.dem.files);
+    if (!o.materials.empty()) plan.inputs("--materials", {o.materials});
     plan.output("--out", o.out, raster::float_raster_extensions());
     plan.output("--quicklook", o.quicklook, raster::image_extensions([](const raster::ImageFormat& f) {
                     return f.writer == raster::ImageWriter::png;
@@ -102,6 +113,11 @@ void run_insolation(InsolationOptions& o) {
     const Stopwatch total;
     const dem::Dem dem = load_dem_input(o.dem);
     warn_if_single_line(dem);
+    // Each texel's shortwave albedo from the land cover, read before the heavy work.
+    std::vector<float> texel_albedo;
+    if (!o.materials.empty())
+        texel_albedo = solar::shortwave_albedo_of(render::read_landcover_on_grid(o.materials, dem.georef),
+                                                  float(settings.albedo));
     // The rows this process sums: all, or its shard's.
     const IndexRange part = frame_range(std::size_t(dem.height), shard);
     if (part.size() == 0)
@@ -160,8 +176,10 @@ void run_insolation(InsolationOptions& o) {
     const double sum_s = t_sum.seconds();
     // Pass 2: the reflected light from the terrain each texel sees.
     const Stopwatch t_reflect;
+    const std::span<const float> rows_albedo =
+        texel_albedo.empty() ? std::span<const float>() : std::span<const float>(texel_albedo.data() + first_texel, texels);
     solar::apply_terrain_reflection(all_rows, row_grid, vis.horizons, normals, settings.albedo, o.sun.reflection,
-                                    o.threads);
+                                    o.threads, rows_albedo);
     const double reflect_s = t_reflect.seconds();
     const int kept_row0 = int(part.begin) - rows.row0;
     const solar::InsolationMap map = kept_rows == std::uint64_t(rows.height)
@@ -226,8 +244,9 @@ void add_insolation_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "insolation",
         "Clear-sky solar irradiation per texel over a year or dates (ESRA model as r.sun; beam and sun from the "
-        "exact horizons, diffuse through each texel's sky view): global, beam, diffuse, reflected (kWh/m2) and "
-        "hours of direct sun, one band each per period (docs/insolation.md)");
+        "exact horizons, the CIE clear sky through each texel's horizons, light reflected by the terrain it sees): "
+        "global, beam, diffuse, reflected (kWh/m2) and hours of direct sun, one band each per period "
+        "(docs/insolation.md)");
     add_dem_input_options(*cmd, o->dem);
     add_insolation_options(*cmd, o->sun);
     cmd->add_option("--by", o->by, "One set of bands per year, month or day of the range")
@@ -243,6 +262,9 @@ void add_insolation_command(CLI::App& root) {
     cmd->add_option("--out", o->out,
                     "Float32 Cloud-Optimized GeoTIFF, bands described with quantity, period and unit")->required();
     cmd->add_option("--quicklook", o->quicklook, "PNG of the global irradiation with a colour ramp and legend");
+    cmd->add_option("--materials", o->materials,
+                    "A land-cover GeoTIFF of ESA WorldCover class codes, resampled to the DEM by georeferencing: each "
+                    "class's shortwave albedo (docs/insolation.md) replaces --albedo where it has one");
     add_shard_option(*cmd, o->shard);
     add_threads_option(*cmd, o->threads);
     add_device_options(*cmd, o->device);

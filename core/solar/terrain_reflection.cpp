@@ -252,17 +252,41 @@ std::vector<float> gather_terrain_reflection(const ReflectionInputs& in, const T
 
 void apply_terrain_reflection(InsolationMap& map, const terrain::HeightGrid& grid,
                               const visibility::HorizonSet& horizons, const render::NormalField& normals,
-                              double albedo, const TerrainReflectionSettings& s, int threads) {
+                              double albedo, const TerrainReflectionSettings& s, int threads,
+                              std::span<const float> texel_albedo) {
     check_reflection_settings(s);
-    if (!s.enabled()) return;
     const std::size_t texels = std::size_t(map.width) * std::size_t(map.height);
     const std::size_t periods = std::size_t(map.periods);
-    // The first pass's sums interleaved per texel, so that one sample reads every period.
+    if (!texel_albedo.empty() && texel_albedo.size() != texels)
+        throw InputError("terrain reflection: the albedos must cover the grid");
+    const bool own_albedo = !texel_albedo.empty();
+    // The first pass's isotropic ground took `albedo`; a texel's own replaces it.
+    auto iso_scale = [&](std::size_t t) { return own_albedo ? (albedo > 0 ? double(texel_albedo[t]) / albedo : 0.0) : 1.0; };
+    if (!s.enabled()) {
+        if (!own_albedo) return;
+        for (std::size_t p = 0; p < periods; ++p) {
+            float* g = map.values.data() + (p * kQuantities + kGlobal) * texels;
+            float* r = map.values.data() + (p * kQuantities + kReflected) * texels;
+            for (std::size_t t = 0; t < texels; ++t) {
+                if (std::isnan(r[t])) continue;
+                const float old = r[t];
+                r[t] = float(old * iso_scale(t));
+                g[t] += r[t] - old;
+            }
+        }
+        return;
+    }
+    // The first pass's sums interleaved per texel, so that one sample reads every period; with
+    // texel albedos, the light leaving the terrain (albedo x global) and an albedo of 1.
     std::vector<float> global(texels * periods), iso(texels * periods);
     for (std::size_t p = 0; p < periods; ++p) {
         const float* g = map.band(int(p), kGlobal);
         const float* r = map.band(int(p), kReflected);
-        for (std::size_t t = 0; t < texels; ++t) global[t * periods + p] = g[t], iso[t * periods + p] = r[t];
+        for (std::size_t t = 0; t < texels; ++t) {
+            iso[t * periods + p] = float(r[t] * iso_scale(t));
+            // The first pass's global with the texel's own isotropic ground, times its albedo.
+            global[t * periods + p] = own_albedo ? (g[t] - r[t] + iso[t * periods + p]) * texel_albedo[t] : g[t];
+        }
     }
     ReflectionInputs in;
     in.grid = &grid;
@@ -272,7 +296,7 @@ void apply_terrain_reflection(InsolationMap& map, const terrain::HeightGrid& gri
     in.global = global;
     in.isotropic_reflected = iso;
     in.svf = map.svf;
-    in.albedo = albedo;
+    in.albedo = own_albedo ? 1.0 : albedo;
     in.curvature = visibility::curvature_factor(true);  // as the horizons (HorizonOptions::curvature)
     const std::vector<float> reflected = gather_terrain_reflection(in, s, threads);
     for (std::size_t p = 0; p < periods; ++p) {

@@ -80,9 +80,13 @@ TexelGather gather_texel(const ReflectionInputs& in, const TerrainReflectionSett
 
 // Pass 2 on a map from integrate_insolation over the same grid, horizons and normals: its
 // reflected bands from the gather, its global bands re-summed (beam + diffuse + reflected).
-// Nothing changes when the gather is off.
+// `albedo` is the one the first pass used. texel_albedo (empty: `albedo` everywhere) gives each
+// texel its own: the seen terrain reflects with its albedo, and the isotropic ground (the
+// gather off, or beyond its reach) has the receiver's (its surroundings are most like it).
+// Nothing changes when the gather is off and there is no texel_albedo.
 void apply_terrain_reflection(InsolationMap& map, const terrain::HeightGrid& grid,
                               const visibility::HorizonSet& horizons, const render::NormalField& normals,
-                              double albedo, const TerrainReflectionSettings& s, int threads);
+                              double albedo, const TerrainReflectionSettings& s, int threads,
+                              std::span<const float> texel_albedo = {});
 
 }  // namespace ts::solar

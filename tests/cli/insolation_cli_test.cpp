@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -61,12 +62,41 @@ TEST(InsolationCli, BadInputIsOneLineExitTwoAndNoOutput) {
     for (const std::string args :
          {"--year 2024 --linke-monthly 1,2,3", "--from 2024-05-02 --to 2024-05-01", "--from 2023-02-29 --to 2023-03-01",
           "--year 2024 --from 2024-01-01 --to 2024-01-02", "--year 2024 --albedo -0.5", "--year 2024 --linke 0",
-          "--year 2024 --clear-sky-index 0", "--year 2024 --step 0", "--from 2024-01-01", "--year 9000"}) {
+          "--year 2024 --clear-sky-index 0", "--year 2024 --step 0", "--from 2024-01-01", "--year 9000",
+          "--year 2024 --materials /nonexistent/cover.tif"}) {
         const Result r = run_ts("insolation " + kCroppedDem + " " + args + " --out " + quote(tif));
         EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(tif)) << args;
     }
+}
+
+// --materials: each WorldCover class's shortwave albedo replaces --albedo. Snow and ice (70)
+// everywhere must give what --albedo 0.6 gives, texel for texel (the means of every band).
+TEST(InsolationCli, LandCoverGivesEachTexelItsShortwaveAlbedo) {
+    const auto dir = ts::cli_test::temp_dir("insolation_materials");
+    const std::string cover = (dir / "worldcover_snow.tif").string();
+    const Result made = ts::cli_test::run("gdal_create -of GTiff -outsize 60 60 -bands 1 -ot Byte -burn 70 -a_srs EPSG:4326 "
+                                          "-a_ullr 5.69 45.26 5.81 45.14 " + quote(cover));
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+    auto stats = [&](const std::string& name, const std::string& args) {
+        const std::string tif = (dir / name).string();
+        const Result r = run_ts("insolation " + kCroppedDem + " --from 2024-06-01 --to 2024-06-30 " + args + " --out " + quote(tif));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const Result g = ts::cli_test::run("gdalinfo -json -stats " + quote(tif));
+        return nlohmann::json::parse(g.out).at("bands");
+    };
+    const auto snow = stats("snow.tif", "--albedo 0.2 --materials " + quote(cover));
+    const auto same = stats("same.tif", "--albedo 0.6");
+    const auto grass = stats("grass.tif", "--albedo 0.2");
+    for (int b = 0; b < 5; ++b)
+        EXPECT_NEAR(snow[b].at("mean").get<double>(), same[b].at("mean").get<double>(),
+                    1e-4 * std::abs(same[b].at("mean").get<double>()) + 2e-3) << "band " << b;  // gdalinfo's 3 decimals
+    // Three times grass's 0.2, and a little more: brighter terrain also lights itself more (the
+    // first pass's ground, standing for the higher bounces, reflects 0.6 too).
+    const double ratio = snow[3].at("mean").get<double>() / grass[3].at("mean").get<double>();
+    EXPECT_GT(ratio, 3.0);
+    EXPECT_LT(ratio, 3.1);
 }
 
 }  // namespace

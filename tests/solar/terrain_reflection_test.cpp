@@ -175,6 +175,43 @@ TEST(TerrainReflection, NorthFacingSlopeOfAValleySeesTheSunnySlope) {
                     float(double(map.band(0, kBeam)[t]) + map.band(0, kDiffuse)[t] + map.band(0, kReflected)[t]));
 }
 
+// Texel albedos (land cover): the shaded slope under forest (0.1) faces a snowy sunny slope
+// (0.8). Its reflected light follows the albedo of what it sees, ~4x the uniform 0.2's, not
+// its own (0.5x); the part left to the isotropic ground (beyond the radius) takes its own.
+TEST(TerrainReflection, SeenTerrainReflectsWithItsOwnAlbedo) {
+    const int w = 160, h = 80, axis = 40, half = 20;
+    const float rise = 0.5f * float(kSpacing);
+    std::vector<float> z(std::size_t(w) * h);
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) z[std::size_t(r) * w + c] = rise * float(std::min(std::abs(r - axis), half));
+    Scene s(w, h, std::move(z), true);
+    visibility::HorizonOptions ho;
+    ho.directions = 64;
+    const visibility::HorizonSet horizons = visibility::compute_horizons(s.grid, ho);
+    const InsolationModel model = march_at_45n(rise * half);
+    const std::vector<float> lat(s.z.size(), 45.0f);
+    const InsolationMap first = integrate_insolation(model, s.grid, horizons, s.normals, lat);
+    std::vector<float> albedo(s.z.size());
+    for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) albedo[s.at(c, r)] = r < axis ? 0.8f : 0.1f;  // row 0 is north: the sunny side
+    InsolationMap uniform = first, cover = first;
+    apply_terrain_reflection(uniform, s.grid, horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1);
+    apply_terrain_reflection(cover, s.grid, horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1, albedo);
+    const std::size_t t = s.at(w / 2, axis + 8);
+    const double ratio = cover.band(0, kReflected)[t] / uniform.band(0, kReflected)[t];
+    std::printf("shaded forest slope facing snow: reflected %.2fx the uniform albedo's\n", ratio);
+    EXPECT_GT(ratio, 3.0);
+    EXPECT_LT(ratio, 4.0 * 1.02);
+    EXPECT_FLOAT_EQ(cover.band(0, kGlobal)[t],
+                    float(double(cover.band(0, kBeam)[t]) + cover.band(0, kDiffuse)[t] + cover.band(0, kReflected)[t]));
+    // The gather off: the isotropic ground with the receiver's own albedo.
+    TerrainReflectionSettings off;
+    off.directions = 0;
+    InsolationMap own = first;
+    apply_terrain_reflection(own, s.grid, horizons, s.normals, kAlbedo, off, 1, albedo);
+    EXPECT_NEAR(own.band(0, kReflected)[t] / first.band(0, kReflected)[t], 0.5, 1e-5);
+}
+
 // (4) When every texel's G is the open flat ground's, the gather gives the isotropic estimate
 // back, whether the terrain is seen within the radius or left to the far field beyond it
 // (a short radius on rough terrain).

@@ -52,7 +52,9 @@ void AzimuthTable::finish_bin(int bin, const std::vector<Sample>& samples, doubl
     double lo = samples.front().elevation_rad, hi = lo;
     for (const Sample& s : samples) lo = std::min(lo, s.elevation_rad), hi = std::max(hi, s.elevation_rad);
     const double h0 = grid_.first_rad, dh = grid_.step_rad;
-    const int first = std::max(0, int(std::floor((lo - r - h0) / dh)));
+    // Row 0 is below every sun of the bin (its total) and the last above all (0): add_visible
+    // clamps onto them. first may be negative (a sun below the grid's first horizon).
+    const int first = int(std::floor((lo - r - h0) / dh));
     const int last = std::max(first + 1, int(std::ceil((hi + r - h0) / dh)));
     const int count = last - first + 1;
     std::vector<double> full(std::size_t(count) * kTableValues, 0.0), part(std::size_t(count) * kTableValues, 0.0);

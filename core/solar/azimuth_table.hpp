@@ -10,6 +10,7 @@
 // Each bin stores only the horizon range where its sums change (from the lowest sun in it
 // minus the disc's radius to the highest plus it): below, every sample is visible (the bin's
 // total); above, none is.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -41,20 +42,16 @@ public:
     void add_visible(int bin, float horizon_rad, float w, float* acc) const {
         const int count = count_[std::size_t(bin)];
         if (count == 0) return;
-        const float x = (horizon_rad - first_h_) * inv_step_ - float(first_[std::size_t(bin)]);
-        const float* a;
-        float f = 0;
-        if (x <= 0) {
-            a = total(bin);
-        } else {
-            if (x >= float(count - 1)) return;  // the last threshold is above every sun of the bin
-            const int k = int(x);
-            f = x - float(k);
-            a = values_.data() + offset_[std::size_t(bin)] + std::size_t(k) * kTableStride;
-        }
-        const float* b = f > 0 ? a + kTableStride : a;
+        // Without branches on the horizon (they mispredict texel by texel): the first row is the
+        // bin's total (every sun visible) and the last is 0 (none), so a horizon below or above
+        // the range clamps onto them.
+        const float x = std::clamp((horizon_rad - first_h_) * inv_step_ - float(first_[std::size_t(bin)]), 0.0f,
+                                   float(count - 1));
+        const int k = std::min(int(x), count - 2);
+        const float f = x - float(k);
+        const float* a = values_.data() + offset_[std::size_t(bin)] + std::size_t(k) * kTableStride;
         const float wa = w * (1 - f), wb = w * f;
-        for (int v = 0; v < kTableStride; ++v) acc[v] += wa * a[v] + wb * b[v];
+        for (int v = 0; v < kTableStride; ++v) acc[v] += wa * a[v] + wb * a[kTableStride + v];
     }
     // Everything in bin j (any horizon below all its suns).
     const float* total(int bin) const { return total_.data() + std::size_t(bin) * kTableStride; }

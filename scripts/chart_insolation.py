@@ -4,8 +4,9 @@
 usage: chart_insolation.py MAPS.tif OUT.png
 MAPS.tif: the bench's 5 bands (terrashade beam, r.sun beam with the r.horizon maps, with the
 maps raised to 0 deg, with r.sun's own shadowing, all Wh/m2 over the day; open terrain 1/0).
-Writes one small PNG: the map of r.sun (maps raised to 0) / terrashade - 1, and the histograms
-of that ratio for each r.sun variant on open terrain and elsewhere.
+Writes one small PNG: terrashade's and r.sun's (maps raised to 0) beam side by side on one
+scale, the map of r.sun / terrashade - 1, and the histograms of that ratio for each r.sun
+variant on open terrain and elsewhere.
 """
 import sys
 
@@ -32,8 +33,19 @@ def main():
     is_open = valid & (open_mask > 0.5)
     rest = valid & (open_mask < 0.5)
 
-    fig, (ax_map, ax_open, ax_rest) = plt.subplots(1, 3, figsize=(10.5, 3.4), dpi=80,
-                                                   gridspec_kw={"width_ratios": [1, 1.15, 1.15]})
+    fig = plt.figure(figsize=(10.5, 6.6), dpi=80)
+    grid = fig.add_gridspec(2, 6)
+    ax_ts, ax_rsun, ax_map = (fig.add_subplot(grid[0, 2 * i:2 * i + 2]) for i in range(3))
+    ax_open, ax_rest = fig.add_subplot(grid[1, 0:3]), fig.add_subplot(grid[1, 3:6])
+    lo, hi = np.nanpercentile(np.where(valid, ts, np.nan), [1, 99]) / 1000
+    for ax, b, title in ((ax_ts, ts, "terrashade beam"), (ax_rsun, zero, "r.sun beam (maps raised to 0)")):
+        shown = ax.imshow(np.where(valid, b / 1000, np.nan), cmap="inferno", vmin=lo, vmax=hi, interpolation="nearest")
+        ax.set_title(f"{title}, 21 June 2024", fontsize=8)
+        ax.set_xticks([])
+        ax.set_yticks([])
+        cbar = fig.colorbar(shown, ax=ax, fraction=0.046, pad=0.03)
+        cbar.set_label("kWh/m2 over the day", fontsize=7)
+        cbar.ax.tick_params(labelsize=7)
     rel = np.where(valid, zero / np.where(valid, ts, 1) - 1, np.nan) * 100
     im = ax_map.imshow(rel, cmap="RdBu_r", vmin=-5, vmax=5, interpolation="nearest")
     ax_map.contour(np.where(np.isfinite(open_mask), open_mask, 0), levels=[0.5], colors="k", linewidths=0.4)

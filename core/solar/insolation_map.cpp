@@ -119,7 +119,7 @@ InsolationMap integrate_insolation(const InsolationModel& model, const terrain::
                                       const float a = nn.x * cp + nn.y * sp;
                                       const float h = std::max(hp[index[std::size_t(i)]], float(visibility::fast_atan(-a / nz)));
                                       const float sh = std::sin(h), ch = std::cos(h);
-                                      svf[std::size_t(i)] += a * (float(kPi) / 4 - h / 2 - sh * ch / 2) + nz * ch * ch / 2;
+                                      svf[std::size_t(i)] += sky_above(h, 2 * sh * ch, ch * ch, a, nz);
                                   }
                               }
                               for (float& v : svf) v = std::clamp(v * 2.0f / float(directions), 0.0f, 1.0f);

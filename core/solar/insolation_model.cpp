@@ -169,7 +169,7 @@ double tilted_sky_view_factor(const float* bin_horizon, int bins, const glm::dve
         const double phi = 2 * kPi * j / bins;
         const double a = n.x * std::cos(phi) + n.y * std::sin(phi);
         const double h = std::max(double(bin_horizon[j]), std::atan(-a / nz));
-        sum += a * (kPi / 4 - h / 2 - std::sin(2 * h) / 4) + nz * std::cos(h) * std::cos(h) / 2;
+        sum += sky_above(h, std::sin(2 * h), std::cos(h) * std::cos(h), a, nz);
     }
     return std::clamp(sum * (2 * kPi * stride / bins) / kPi, 0.0, 1.0);
 }

@@ -12,6 +12,7 @@
 namespace ts::solar {
 namespace {
 
+// The horizon at azimuth phi in [0, 2 pi), linear between the given azimuths.
 double horizon_at(const std::vector<float>& horizons, double phi) {
     const int count = int(horizons.size());
     const double x = phi / (2 * kPi) * count;
@@ -104,10 +105,7 @@ std::vector<double> reference_insolation(const InsolationSettings& settings, con
             if (!(at.elevation_rad > 0)) at = sun;
             seen_share = sky_integral(seen, at.direction) / open_sky_at(at.elevation_rad);
         }
-        const double x = sun.phi_rad / (2 * kPi) * count;
-        const int k = int(x) % count;
-        const double f = x - std::floor(x);
-        const double h_grid = horizons[std::size_t(k)] + f * (horizons[std::size_t((k + 1) % count)] - horizons[std::size_t(k)]);
+        const double h_grid = horizon_at(horizons, sun.phi_rad);
         const double a = n.x * std::cos(sun.phi_rad) + n.y * std::sin(sun.phi_rad);
         const double h = std::max(h_grid, std::atan(-a / nz));
         const double visible = visibility::sun_disc_visible_fraction(h, sun.elevation_rad, settings.sun_radius_rad);

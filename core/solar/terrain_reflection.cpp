@@ -45,11 +45,10 @@ struct Step {
     float inv_dist, curvature_drop;  // 1 / s (1/m) and curvature * s (the slope's curvature term)
 };
 
-// F(h): the integral over elevation from h to pi/2 of (n.w) cos(e), for a = n.x cos(phi) +
-// n.y sin(phi); from h's tangent (no trig: cos^2 = 1 / (1 + t^2), sin 2h = 2t / (1 + t^2)).
+// F(h) (sky_above) from h's tangent (no trig: cos^2 = 1 / (1 + t^2), sin 2h = 2t / (1 + t^2)).
 inline double weight_above(double h, double tan_h, double a, double nz) {
     const double c2 = 1.0 / (1.0 + tan_h * tan_h);
-    return a * (kPi / 4 - h / 2 - tan_h * c2 / 2) + nz * c2 / 2;
+    return sky_above(h, 2 * tan_h * c2, c2, a, nz);
 }
 
 // F at the exact horizon h in [-pi/2, pi/2], from sin(2h) and cos(2h) by short Taylor series on
@@ -63,7 +62,7 @@ inline double weight_above_horizon(double h, double a, double nz) {
     const double sin2h = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 / 362880))));
     const double cos2h =
         flip * (1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 - x2 / 3628800)))));
-    return a * (kPi / 4 - h / 2 - sin2h / 4) + nz * (1 + cos2h) / 4;
+    return sky_above(h, sin2h, (1 + cos2h) / 2, a, nz);
 }
 
 // The gather of one band of rows: the sector directions, the march's distances, and per row

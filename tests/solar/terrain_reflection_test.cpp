@@ -137,6 +137,31 @@ TEST(TerrainReflection, FootOfASlopeSeesTheSlopesLight) {
     EXPECT_NEAR(reflected[t], kAlbedo * g_slope * blocked, 1e-5 * kAlbedo * g_slope * blocked);
 }
 
+// An east-west V valley (rows rising 15 m each side of its axis up to 300 m, row 0 north) with
+// its horizons (Earth curvature as a job has it) and the first pass of a March at 45 N.
+struct ValleyCase {
+    static constexpr int kWidth = 160, kHeight = 80, kAxis = 40, kHalf = 20;
+    static constexpr float kRise = 0.5f * float(kSpacing);  // metres per row
+    Scene scene;
+    visibility::HorizonSet horizons;
+    InsolationMap first;
+
+    ValleyCase() : scene(kWidth, kHeight, heights(), true) {
+        visibility::HorizonOptions ho;
+        ho.directions = 64;
+        horizons = visibility::compute_horizons(scene.grid, ho);
+        const std::vector<float> lat(scene.z.size(), 45.0f);
+        first = integrate_insolation(march_at_45n(kRise * kHalf), scene.grid, horizons, scene.normals, lat);
+    }
+    static std::vector<float> heights() {
+        std::vector<float> z(std::size_t(kWidth) * kHeight);
+        for (int r = 0; r < kHeight; ++r)
+            for (int c = 0; c < kWidth; ++c)
+                z[std::size_t(r) * kWidth + std::size_t(c)] = kRise * float(std::min(std::abs(r - kAxis), kHalf));
+        return z;
+    }
+};
+
 // (3) A V valley along the east-west axis (slopes of 26.6 degrees, 20 texels each way up to
 // plateaus) under March's sun at 45 N (noon at ~40 degrees, from the south), whole pipeline:
 // a texel 8 texels up the north-facing slope (a third of the sunny slope's G) sees only the
@@ -147,24 +172,14 @@ TEST(TerrainReflection, FootOfASlopeSeesTheSlopesLight) {
 // counts as open ground (also 25% below the slope); measured 2.6% low. Today's isotropic
 // ground, open flat G, is 25% below the sunny slope's: the gather gets 30% more.
 TEST(TerrainReflection, NorthFacingSlopeOfAValleySeesTheSunnySlope) {
-    const int w = 160, h = 80, axis = 40, half = 20;
-    const float rise = 0.5f * float(kSpacing);  // metres per row
-    std::vector<float> z(std::size_t(w) * h);
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) z[std::size_t(r) * w + c] = rise * float(std::min(std::abs(r - axis), half));
-    Scene s(w, h, std::move(z), true);
-    visibility::HorizonOptions ho;
-    ho.directions = 64;
-    const visibility::HorizonSet horizons = visibility::compute_horizons(s.grid, ho);
-    const InsolationModel model = march_at_45n(rise * half);
-    const std::vector<float> lat(s.z.size(), 45.0f);
-    InsolationMap map = integrate_insolation(model, s.grid, horizons, s.normals, lat);
-    const InsolationMap isotropic = map;
-    apply_terrain_reflection(map, s.grid, horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1);
+    const ValleyCase v;
+    const Scene& s = v.scene;
+    const InsolationMap& isotropic = v.first;
+    InsolationMap map = v.first;
+    apply_terrain_reflection(map, s.grid, v.horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1);
 
-    const int col = w / 2, shaded_row = axis + 8, sunny_row = axis - 8;  // row 0 is north
-    const std::size_t t = s.at(col, shaded_row);
-    const double g_sunny = isotropic.band(0, kGlobal)[s.at(col, sunny_row)];
+    const std::size_t t = s.at(v.kWidth / 2, v.kAxis + 8);  // row 0 is north
+    const double g_sunny = isotropic.band(0, kGlobal)[s.at(v.kWidth / 2, v.kAxis - 8)];
     const double expected = kAlbedo * g_sunny * (1 - map.svf[t]);
     const double got = map.band(0, kReflected)[t], before = isotropic.band(0, kReflected)[t];
     std::printf("valley: north-facing slope reflected %.4f kWh/m2, albedo G(sunny) (1 - svf) %.4f, isotropic %.4f\n", got,
@@ -179,25 +194,17 @@ TEST(TerrainReflection, NorthFacingSlopeOfAValleySeesTheSunnySlope) {
 // (0.8). Its reflected light follows the albedo of what it sees, ~4x the uniform 0.2's, not
 // its own (0.5x); the part left to the isotropic ground (beyond the radius) takes its own.
 TEST(TerrainReflection, SeenTerrainReflectsWithItsOwnAlbedo) {
-    const int w = 160, h = 80, axis = 40, half = 20;
-    const float rise = 0.5f * float(kSpacing);
-    std::vector<float> z(std::size_t(w) * h);
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) z[std::size_t(r) * w + c] = rise * float(std::min(std::abs(r - axis), half));
-    Scene s(w, h, std::move(z), true);
-    visibility::HorizonOptions ho;
-    ho.directions = 64;
-    const visibility::HorizonSet horizons = visibility::compute_horizons(s.grid, ho);
-    const InsolationModel model = march_at_45n(rise * half);
-    const std::vector<float> lat(s.z.size(), 45.0f);
-    const InsolationMap first = integrate_insolation(model, s.grid, horizons, s.normals, lat);
+    const ValleyCase v;
+    const Scene& s = v.scene;
+    const InsolationMap& first = v.first;
     std::vector<float> albedo(s.z.size());
-    for (int r = 0; r < h; ++r)
-        for (int c = 0; c < w; ++c) albedo[s.at(c, r)] = r < axis ? 0.8f : 0.1f;  // row 0 is north: the sunny side
+    for (int r = 0; r < v.kHeight; ++r)
+        for (int c = 0; c < v.kWidth; ++c)
+            albedo[s.at(c, r)] = r < v.kAxis ? 0.8f : 0.1f;  // row 0 is north: the sunny side
     InsolationMap uniform = first, cover = first;
-    apply_terrain_reflection(uniform, s.grid, horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1);
-    apply_terrain_reflection(cover, s.grid, horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1, albedo);
-    const std::size_t t = s.at(w / 2, axis + 8);
+    apply_terrain_reflection(uniform, s.grid, v.horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1);
+    apply_terrain_reflection(cover, s.grid, v.horizons, s.normals, kAlbedo, TerrainReflectionSettings{}, 1, albedo);
+    const std::size_t t = s.at(v.kWidth / 2, v.kAxis + 8);
     const double ratio = cover.band(0, kReflected)[t] / uniform.band(0, kReflected)[t];
     std::printf("shaded forest slope facing snow: reflected %.2fx the uniform albedo's\n", ratio);
     EXPECT_GT(ratio, 3.0);
@@ -208,7 +215,7 @@ TEST(TerrainReflection, SeenTerrainReflectsWithItsOwnAlbedo) {
     TerrainReflectionSettings off;
     off.directions = 0;
     InsolationMap own = first;
-    apply_terrain_reflection(own, s.grid, horizons, s.normals, kAlbedo, off, 1, albedo);
+    apply_terrain_reflection(own, s.grid, v.horizons, s.normals, kAlbedo, off, 1, albedo);
     EXPECT_NEAR(own.band(0, kReflected)[t] / first.band(0, kReflected)[t], 0.5, 1e-5);
 }
 

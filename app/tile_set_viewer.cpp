@@ -77,17 +77,23 @@ tiles::TileSetInfo tile_set_info(const std::string& name, const std::string& att
     return info;
 }
 
-void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, const std::optional<Legend>& legend) {
+void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, const std::optional<Legend>& legend,
+                       const std::string& lightable) {
     StagedOutputs outputs;
     const fs::path d(dir);
     outputs.stage(d / tiles::kTileJsonFile, [&](const fs::path& tmp) { write_text(tmp, tiles::tilejson_text(info)); });
-    outputs.stage(d / tiles::kViewerPageFile,
-                  [&](const fs::path& tmp) { write_text(tmp, tiles::viewer_page_html(info)); });
+    // Data tiles are not pictures: a map page would show their planes. Their reader is
+    // web/lightable (docs/web-map.md); its page is still to come.
+    if (lightable.empty())
+        outputs.stage(d / tiles::kViewerPageFile,
+                      [&](const fs::path& tmp) { write_text(tmp, tiles::viewer_page_html(info)); });
     if (legend) {
         // Wide enough for the title in the legend's bitmap font.
         const int width = std::max(320, int(legend->title.size()) * fly::kGlyphAdvance + 8);
         outputs.stage(d / tiles::kLegendFile, [&](const fs::path& tmp) { write_legend_png(tmp.string(), width, *legend); });
     }
+    if (!lightable.empty())
+        outputs.stage(d / tiles::kLightableFile, [&](const fs::path& tmp) { write_text(tmp, lightable); });
     outputs.commit();
 }
 

@@ -27,6 +27,8 @@ tiles::TileSetInfo tile_set_info(const std::string& name, const std::string& att
 
 // tiles.json, index.html and, with a legend, legend.png into `dir`, all three renamed into place
 // together (an interrupted run leaves none half-written).
-void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, const std::optional<Legend>& legend);
+// A lightable set's `lightable` JSON (non-empty) goes beside them as lightable.json.
+void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, const std::optional<Legend>& legend,
+                       const std::string& lightable = "");
 
 }  // namespace ts::app

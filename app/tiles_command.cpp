@@ -111,9 +111,12 @@ void run_tiles(const TilesCommandArgs& a) {
     const std::string job_text = tiles::describe_job(job);
     const tiles::TileSetInfo info =
         tile_set_info(a.name, a.attribution, a.dem.files, dem, job, tile_set_legend(a.tiles, job));
+    // A lightable set's sky tables and site, for the reader that relights it.
+    const std::string lightable = job.shading.style->data_tile() ? tiles::lightable_json(dem, job.shading) : "";
     std::unique_ptr<tiles::TileSink> sink;
     if (mbtiles) {
         std::map<std::string, std::string> metadata = tiles::mbtiles_metadata(info);
+        if (!lightable.empty()) metadata["terrashade_lightable"] = lightable;
         if (!job.shard.whole()) metadata["terrashade_shard"] = shard_text(job.shard);
         using E = tiles::MbtilesFile::Existing;
         sink = std::make_unique<tiles::MbtilesFile>(a.out, std::move(metadata), job_text,
@@ -147,7 +150,7 @@ void run_tiles(const TilesCommandArgs& a) {
     }
     if (!mbtiles && !job.shard.whole()) write_shard_marker(a.out, job.shard);
     // The viewer last: it appears with a finished tile set (each shard's is the merged set's).
-    if (!mbtiles) write_tile_viewer(a.out, info, tile_set_legend(a.tiles, job));
+    if (!mbtiles) write_tile_viewer(a.out, info, tile_set_legend(a.tiles, job), lightable);
     const double total = watch.seconds();
     const std::size_t made = stats.written + stats.empty;
     std::printf("tiles: %zu written, %zu resumed, %zu without data (zoom %d-%d, %d px, %s)\n", stats.written,

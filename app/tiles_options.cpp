@@ -73,6 +73,13 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "relief: the shading's contrast in stops about open flat ground, 0.25..4 (1 = physical; 1.5 for "
                    "print: a slope a stop brighter than the flat becomes 1.5 stops brighter, a shadow as much darker)")
         ->capture_default_str();
+    cmd.add_option("--light-directions", a.light_directions,
+                   "lightable: horizon azimuths stored per pixel for the sun's shadows at any instant, a multiple of 4 "
+                   "(more: shadow rims closer to relief's, larger tiles; docs/web-map.md)")
+        ->capture_default_str();
+    cmd.add_option("--light-components", a.light_components,
+                   "lightable: principal components of the sky's transfer kept per tile, 1..9 (docs/web-map.md)")
+        ->capture_default_str();
     cmd.add_option("--level-bias", a.level_bias,
                    "Shade each zoom from the DEM level matching its pixels moved by B, -4..4: > 0 coarser (faster, "
                    "softer), < 0 finer (slower, aliased); docs/tiles.md")
@@ -217,6 +224,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.far_field = tiles::parse_far_field(a.far_field);
     s.resampling = tiles::parse_resampling(a.resampling);
     s.relief_contrast = a.relief_contrast;
+    s.light_directions = a.light_directions;
+    s.light_components = a.light_components;
     job.level_bias = a.level_bias;
     s.threads = a.threads;
     check_insolation_style(a, s);

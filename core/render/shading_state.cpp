@@ -216,6 +216,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             di.precision = options.shading_precision;
             s.diffuse_ = std::make_unique<DiffuseShading>(di);
         }
+        if (options.keep_diffuse_transfer) s.kept_transfer_ = std::move(t_diffuse);
     }
     // What the views need: V of the specular texels, the horizons of the water texels.
     for (std::size_t t = 0; t < texels; ++t) {

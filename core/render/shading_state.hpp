@@ -96,6 +96,9 @@ struct RendererOptions {
     // field beyond its window, core/tiles/shade_source.cpp): lowers each frame's sun visibility
     // after the grid's own shadows. Empty: the grid is all the terrain there is.
     std::function<void(const SunState&, std::vector<float>&)> outer_sun_shadow;
+    // Keep a float copy of the diffuse transfer T_d [16][texels] (kept_diffuse_transfer): what a
+    // lightable tile stores so that a browser relights it (core/tiles/lightable_style.cpp).
+    bool keep_diffuse_transfer = false;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
 };
@@ -138,6 +141,8 @@ public:
     const std::vector<std::uint32_t>& water_index() const { return water_index_; }
     const std::vector<float>& water_horizons() const { return water_horizons_; }
     int directions() const { return options_.directions; }
+    // T_d [16][texels] when RendererOptions::keep_diffuse_transfer, else empty.
+    const std::vector<float>& kept_diffuse_transfer() const { return kept_transfer_; }
 
     // The sun's visible fraction per texel (0 everywhere when `sun_up` is false) into `out`
     // (texels() entries): the terrain's, times the mesh blockers' in their footprints. The
@@ -184,6 +189,7 @@ private:
     std::string visibility_path_ = "cpu";
     std::vector<visibility::VisibilityStage> visibility_stages_;
     std::unique_ptr<DiffuseShading> diffuse_;
+    std::vector<float> kept_transfer_;
     std::unique_ptr<ShadeField> diffuse_field_;
     std::vector<std::uint32_t> spec_index_;
     std::vector<float> spec_log_sh_, spec_terrain_log_sh_;

@@ -27,13 +27,20 @@ render::RendererOptions renderer_options(const TileShading& s, ProgressBar* prog
     return o;
 }
 
-// One frame of radiance on `grid` with `materials`; `backend` null = the CPU on `grid`.
+// One frame of radiance on `grid` with `materials`; `backend` null = the CPU on `grid`. With
+// `inspect`, the state (its transfer kept) goes there instead and no frame is rendered.
 std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::MaterialRaster materials,
                                     const TileShading& s, ProgressBar* progress,
-                                    visibility::VisibilityBackend* backend = nullptr, OuterSunShadow outer_sun = {}) {
+                                    visibility::VisibilityBackend* backend = nullptr, OuterSunShadow outer_sun = {},
+                                    const StateInspector* inspect = nullptr) {
     render::NormalField normals = render::terrain_normals(grid, s.threads);
-    auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals),
-                                               renderer_options(s, progress, backend, std::move(outer_sun)));
+    render::RendererOptions options = renderer_options(s, progress, backend, std::move(outer_sun));
+    options.keep_diffuse_transfer = inspect != nullptr;
+    auto state = render::compute_shading_state(grid, std::move(materials), std::move(normals), options);
+    if (inspect) {
+        (*inspect)(*state);
+        return {};
+    }
     const render::ViewShading view = render::compute_view_shading(*state, {});
     render::FrameRenderer frame(*state, view);
     const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
@@ -65,6 +72,22 @@ double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
     return render::luminance(radiance[std::size_t(n / 2) * n + n / 2]);
 }
 
+std::array<float, 16> flat_diffuse_transfer(const terrain::HeightGrid& like, const TileShading& s) {
+    constexpr int n = 32;
+    const std::vector<float> z(std::size_t(n) * n, 0.0f);
+    const std::size_t mid_row = std::size_t(like.height / 2);
+    const terrain::HeightGrid flat = terrain::HeightGrid::uniform(n, n, z, like.dx_m[mid_row], like.dy_m[mid_row]);
+    TileShading quiet = s;
+    quiet.threads = 1;
+    std::array<float, 16> t{};
+    const StateInspector keep = [&](const render::ShadingState& state) {
+        const std::vector<float>& td = state.kept_diffuse_transfer();
+        for (int i = 0; i < 16; ++i) t[std::size_t(i)] = td[std::size_t(i) * state.texels() + std::size_t(n / 2) * n + n / 2];
+    };
+    render_frame(flat, grey_materials(z.size(), 1.0f), quiet, nullptr, nullptr, {}, &keep);
+    return t;
+}
+
 terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,
                                 std::vector<std::uint8_t>& voids) {
     z.resize(std::size_t(w.width) * std::size_t(w.height));
@@ -84,7 +107,8 @@ terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std
 }
 
 
-std::vector<glm::vec3> render_block(const BlockShading& b, const BlockMaterials& materials, bool true_heights) {
+std::vector<glm::vec3> render_block(const BlockShading& b, const BlockMaterials& materials, bool true_heights,
+                                    const StateInspector* inspect) {
     std::vector<float> wz, wtrue;
     std::vector<std::uint8_t> wvoids, wtrue_voids;
     std::unique_ptr<visibility::WindowFarFieldVisibility> backend;
@@ -98,7 +122,7 @@ std::vector<glm::vec3> render_block(const BlockShading& b, const BlockMaterials&
     }
     // The far field shades the core from the sun past the halo (the sweep's shadows end there).
     if (b.far) outer_sun = visibility::far_field_sun_shadow(b.window, b.core, *b.far, g);
-    return render_frame(g, materials(g, tg), b.shading, b.progress, backend.get(), outer_sun);
+    return render_frame(g, materials(g, tg), b.shading, b.progress, backend.get(), outer_sun, inspect);
 }
 
 visibility::VisibilityResult block_visibility(const BlockShading& b, visibility::VisibilityRequest request,

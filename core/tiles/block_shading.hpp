@@ -4,6 +4,7 @@
 // shading, and the shared steps the styles call (one frame of radiance on the window, the
 // window's svf). Each style's shade_block (relief_style.cpp, svf_style.cpp, color_style.cpp)
 // turns them into its values.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -18,6 +19,9 @@
 
 namespace ts {
 class ProgressBar;
+}
+namespace ts::render {
+class ShadingState;
 }
 
 namespace ts::tiles {
@@ -45,9 +49,14 @@ render::MaterialRaster grey_materials(std::size_t n, float albedo);
 using BlockMaterials =
     std::function<render::MaterialRaster(const terrain::HeightGrid& window, const terrain::HeightGrid& true_window)>;
 
+// Sees the shading state of a block's window (its diffuse transfer kept) instead of a frame.
+using StateInspector = std::function<void(const render::ShadingState&)>;
+
 // One frame of radiance per window texel under the shading's sun and sky; the true heights are
-// windowed for `materials` when `true_heights`.
-std::vector<glm::vec3> render_block(const BlockShading& block, const BlockMaterials& materials, bool true_heights);
+// windowed for `materials` when `true_heights`. With `inspect`: the window's shading state goes
+// there and nothing is returned (lightable_style.cpp keeps its transfer and normals).
+std::vector<glm::vec3> render_block(const BlockShading& block, const BlockMaterials& materials, bool true_heights,
+                                    const StateInspector* inspect = nullptr);
 
 // `request` (its horizon window set to the block's) for the block's window: through the far
 // field beyond the halo when there is one (`window_texels`: the window as a grid of its own, window_grid()),
@@ -61,6 +70,9 @@ std::vector<float> block_svf(const BlockShading& block);
 // Luminance of an open flat texel of albedo 1 under the same light, at the grid's spacing: the
 // reference that makes relief and color independent of the sky's absolute units.
 double flat_reference(const terrain::HeightGrid& like, const TileShading& s);
+
+// The diffuse transfer T_d of that open flat texel (what a lightable tile's reader divides by).
+std::array<float, 16> flat_diffuse_transfer(const terrain::HeightGrid& like, const TileShading& s);
 
 // A window of a grid as a grid of its own, its heights (and void mask) copied into `z`/`voids`.
 terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,

@@ -51,7 +51,7 @@ ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int lev
         std::vector<float>().swap(lvl.z);
         true_grid.z = {};
     }
-    out.channels = style.channels();
+    out.channels = style.channels(s);
     out.filmic = style.filmic();
     out.values.resize(std::size_t(out.channels) * n);
     const double flat = style.relative_to_flat() ? flat_reference(grid, s) : 1.0;

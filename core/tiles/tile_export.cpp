@@ -13,6 +13,9 @@
 #include <utility>
 
 #include "core/raster/png_writer.hpp"
+#include "core/render/render_scene.hpp"
+#include "core/tiles/block_shading.hpp"
+#include "core/tiles/lightable_sky.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_pixels.hpp"
 #include "core/tiles/tile_renderer.hpp"
@@ -57,6 +60,10 @@ void check_tile_job(const TileJob& job) {
     if (job.level_bias < -4 || job.level_bias > 4) throw QuantityError(Quantity::level_bias, "", "-4..4 levels");
     if (!(s.relief_contrast >= 0.25 && s.relief_contrast <= 4))
         throw QuantityError(Quantity::relief_contrast, "", "a number from 0.25 to 4 (1 = the physical shading)");
+    if (s.style->data_tile() && (s.light_directions < 8 || s.light_directions > 128 || s.light_directions % 4))
+        throw InputError("--light-directions: a multiple of 4 from 8 to 128");
+    if (s.style->data_tile() && (s.light_components < 1 || s.light_components > 9))
+        throw InputError("--light-components: 1 to 9");
     if (s.relief_contrast != 1.0 && !s.style->takes_relief_contrast())
         throw QuantityError(Quantity::relief_contrast, "", "only the relief style has it");
 }
@@ -82,6 +89,9 @@ std::string describe_job(const TileJob& job) {
         if (s.colors.snow_line_m) colors += ",\"snow_line\":" + number(*s.colors.snow_line_m);
     }
     const std::string insolation = s.insolation ? ",\"insolation\":\"" + s.insolation->describe + "\"" : "";
+    const std::string light = s.style->data_tile() ? ",\"light\":\"" + std::to_string(s.light_directions) + "_" +
+                                                         std::to_string(s.light_components) + "\""
+                                                   : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -91,7 +101,26 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + insolation + "}\n";
+           by_zoom + max_error + dem + colors + insolation + light + "}\n";
+}
+
+LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) {
+    const double latitude = dem.georef.pixel_to_lonlat(dem.width * 0.5, dem.height * 0.5).y;
+    LightableEncoding e;
+    e.directions = s.light_directions;
+    e.components = s.light_components;
+    e.planes = sun_directions(latitude, s.light_directions);
+    // A horizon above the sun's highest elevation hides it whatever the day (with the disc's radius).
+    e.max_horizon_rad = max_sun_elevation_rad(latitude) + 0.01;
+    return e;
+}
+
+std::string lightable_json(const dem::Dem& dem, const TileShading& s) {
+    const render::SunSite site = render::sun_site(dem);
+    const std::vector<float> z(64 * 64, 0.0f);
+    const terrain::HeightGrid like = terrain::HeightGrid::uniform(64, 64, z, 30.0, 30.0);
+    return lightable_json(s, {site.longitude_deg, site.latitude_deg, site.height_m}, flat_diffuse_transfer(like, s),
+                          lightable_encoding(dem, s).planes);
 }
 
 std::string dem_identity(const dem::Dem& dem) {
@@ -159,6 +188,9 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
     std::vector<TileImage> images(static_cast<std::size_t>(workers));
     std::vector<std::size_t> written(static_cast<std::size_t>(workers), 0), empty(static_cast<std::size_t>(workers), 0);
     const raster::PngEncoding encoding;
+    // A data style's encoding: the light directions the sun can reach at the DEM's centre.
+    std::unique_ptr<LightableEncoding> lightable;
+    if (job.shading.style->data_tile()) lightable = std::make_unique<LightableEncoding>(lightable_encoding(dem, job.shading));
 
     for (int z = job.z0; z <= job.z1; ++z) {
         std::vector<TileId> pending;
@@ -197,9 +229,13 @@ TileExportStats export_tiles(const dem::Dem& dem, const TileJob& job, TileSink& 
             try {
             const TileId& t = pending[std::size_t(item)];
             TileImage& image = images[std::size_t(worker)];
-            render_tile(map, source, job.shading, tile_frame(t, job.tile_size), scratch[std::size_t(worker)], image);
+            render_tile(map, source, job.shading, tile_frame(t, job.tile_size), scratch[std::size_t(worker)], image,
+                        lightable.get());
             if (image.covered == 0) {
                 ++empty[std::size_t(worker)];
+            } else if (!image.encoded.empty()) {
+                sink.put(t, std::move(image.encoded));
+                ++written[std::size_t(worker)];
             } else {
                 sink.put(t, raster::encode_png(image.size, image.size, image.channels, image.pixels.data(), encoding));
                 ++written[std::size_t(worker)];

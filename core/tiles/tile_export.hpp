@@ -13,6 +13,7 @@
 #include "core/dem/dem.hpp"
 #include "core/tiles/dem_footprint.hpp"
 #include "core/tiles/tile_sink.hpp"
+#include "core/tiles/lightable_tile.hpp"
 #include "core/tiles/tile_style.hpp"
 #include "core/util/shard.hpp"
 
@@ -60,6 +61,12 @@ std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job);
 std::string describe_job(const TileJob& job);
 // "WxH west,south,east,north": equal for the same DEM (and its shards' runs), different for another.
 std::string dem_identity(const dem::Dem& dem);
+
+// How a lightable job's tiles are encoded: its light directions and components, the directions
+// the sun can reach at the DEM's centre (where --time places the sun, as for relief).
+LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& shading);
+// The lightable.json of such a job (lightable_sky.hpp).
+std::string lightable_json(const dem::Dem& dem, const TileShading& shading);
 
 // The DEM level and vertical scale a pixel zoom is shaded with.
 struct ZoomShading {

@@ -202,7 +202,7 @@ void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, con
 }
 
 void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,
-                 TileScratch& sc, TileImage& out) {
+                 TileScratch& sc, TileImage& out, const LightableEncoding* lightable) {
     const TileStyle& style = *shading.style;
     const bool horn = !style.uses_visibility();
     const int halo = horn ? 1 : 0;
@@ -224,6 +224,24 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
             out.covered += c;
         }
     out.size = n;
+    out.encoded.clear();
+    if (style.data_tile()) {
+        // Every channel sampled as the picture styles sample theirs, then encoded by the style.
+        const std::size_t ch = std::size_t(source.channels);
+        sc.data.assign(std::size_t(n) * n * ch, 0.0f);
+        if (out.covered == 0 || !lightable) return;
+        for (std::size_t k = 0; k < sc.covered.size(); ++k) {
+            if (!sc.covered[k]) continue;
+            const double x = level_x(sc.at[k].x), y = level_x(sc.at[k].y);
+            float* v = sc.data.data() + k * ch;
+            if (shading.resampling == Resampling::cubic)
+                for (std::size_t c = 0; c < ch; ++c) v[c] = CatmullRom{source}(x, y, int(c));
+            else
+                for (std::size_t c = 0; c < ch; ++c) v[c] = Bilinear{source}(x, y, int(c));
+        }
+        out.encoded = encode_lightable_tile(n, sc.data.data(), sc.covered.data(), *lightable);
+        return;
+    }
     out.channels = source.channels == 3 ? 4 : 2;
     out.pixels.assign(std::size_t(n) * n * std::size_t(out.channels), 0);
     if (out.covered == 0) return;

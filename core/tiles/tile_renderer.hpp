@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/tiles/lightable_tile.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_pixels.hpp"
 #include "core/tiles/tile_style.hpp"
@@ -18,6 +19,7 @@ struct TileImage {
     int channels = 0;                 // 2 (grey, alpha) or 4 (RGBA)
     std::vector<std::uint8_t> pixels;
     std::size_t covered = 0;          // pixels with alpha 255
+    std::vector<std::uint8_t> encoded;  // a data tile's bytes (lightable); pixels then unused
 };
 
 // Per-thread buffers, kept from tile to tile.
@@ -25,13 +27,15 @@ struct TileScratch {
     std::vector<glm::dvec2> at;
     std::vector<float> values;
     std::vector<std::uint8_t> covered, grey;
+    std::vector<float> data;  // a data tile's sampled channels
 };
 
 // The heights a Horn style shades the tile from: (size + 2)^2 floats with the 1-px halo, into
 // scratch.values (scratch.at holds the pixels' DEM positions). render_tile calls it.
 void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& scratch);
 
+// A data style's tile (TileStyle::data_tile) comes out in `out.encoded`, `lightable` its encoding.
 void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,
-                 TileScratch& scratch, TileImage& out);
+                 TileScratch& scratch, TileImage& out, const LightableEncoding* lightable = nullptr);
 
 }  // namespace ts::tiles

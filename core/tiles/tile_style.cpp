@@ -15,6 +15,7 @@ const TileStyle& multidirectional_tile_style();
 const TileStyle& svf_tile_style();
 const TileStyle& color_tile_style();
 const TileStyle& insolation_tile_style();
+const TileStyle& lightable_tile_style();
 
 const std::vector<const TileStyle*>& tile_styles() {
     static const std::vector<const TileStyle*> styles = {
@@ -24,6 +25,7 @@ const std::vector<const TileStyle*>& tile_styles() {
         &svf_tile_style(),
         &color_tile_style(),
         &insolation_tile_style(),
+        &lightable_tile_style(),
     };
     return styles;
 }

@@ -13,6 +13,7 @@
 namespace ts::tiles {
 
 struct TileFrame;
+struct TileShading;
 struct HornLight;
 struct BlockShading;
 struct TileInsolation;
@@ -31,8 +32,12 @@ public:
     // Styles with visibility shade their values once over each zoom's DEM level
     // (shade_source.hpp, shade_block); the others shade each tile from its heights (shade_tile).
     virtual bool uses_visibility() const = 0;
-    // Values per source texel: 1 (grey) or 3 (RGB).
+    // Values per source texel: 1 (grey) or 3 (RGB); a data style (lightable) more, by its shading.
     virtual int channels() const { return 1; }
+    virtual int channels(const TileShading&) const { return channels(); }
+    // A data tile: the tile's sampled values are encoded by the style (encode_data_tile), not as
+    // a picture.
+    virtual bool data_tile() const { return false; }
     // RGB values are scene-linear light for the filmic curve (color); false: display-linear
     // colours, sRGB-encoded as they are (a colour ramp's).
     virtual bool filmic() const { return false; }
@@ -127,6 +132,10 @@ struct TileShading {
     // relief: the shading's contrast in stops about open flat ground (relief_grey,
     // shade_source.hpp); 1 = the physical picture, 1.5 for print.
     double relief_contrast = 1.0;
+    // lightable: horizon azimuths stored per pixel (the sun's visibility at any instant) and the
+    // principal components a tile keeps of the diffuse transfer (lightable_tile.hpp).
+    int light_directions = 32;
+    int light_components = 4;
     // insolation: the range's sun and the ramp (tile_insolation.hpp), set once the DEM is read.
     std::shared_ptr<const TileInsolation> insolation;
     int threads = 0;

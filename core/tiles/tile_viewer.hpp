@@ -15,9 +15,11 @@ namespace ts::tiles {
 constexpr const char* kTileJsonFile = "tiles.json";
 constexpr const char* kViewerPageFile = "index.html";
 constexpr const char* kLegendFile = "legend.png";
+// A lightable set's sky tables and site (lightable_sky.hpp).
+constexpr const char* kLightableFile = "lightable.json";
 // Every file of the viewer: a tile job owns them as it owns its tiles (removed with its tiles,
 // copied by a merge).
-constexpr std::array<const char*, 3> kViewerFiles = {kTileJsonFile, kViewerPageFile, kLegendFile};
+constexpr std::array<const char*, 4> kViewerFiles = {kTileJsonFile, kViewerPageFile, kLegendFile, kLightableFile};
 
 // The MapLibre GL JS release the page loads: the version of docs/tiles/package-lock.json, and
 // the sha384 of its dist files there (the bytes the CDN serves for that version).

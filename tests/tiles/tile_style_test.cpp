@@ -21,13 +21,13 @@ TEST(TileStyle, EveryStyleIsRegisteredOnceInUserOrder) {
     std::vector<std::string> names;
     std::set<const TileStyle*> distinct;
     for (const TileStyle* s : tile_styles()) names.emplace_back(s->name()), distinct.insert(s);
-    EXPECT_EQ(names, (std::vector<std::string>{"relief", "hillshade", "multidirectional", "svf", "color", "insolation"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"relief", "hillshade", "multidirectional", "svf", "color", "insolation", "lightable"}));
     EXPECT_EQ(distinct.size(), names.size());
     for (const std::string& n : names) EXPECT_EQ(find_tile_style(n)->name(), n);
     EXPECT_EQ(find_tile_style("Relief"), nullptr);
     EXPECT_EQ(&default_tile_style(), find_tile_style("relief"));
     EXPECT_EQ(TileShading{}.style, find_tile_style("relief"));
-    EXPECT_EQ(tile_style_names(" | "), "relief | hillshade | multidirectional | svf | color | insolation");
+    EXPECT_EQ(tile_style_names(" | "), "relief | hillshade | multidirectional | svf | color | insolation | lightable");
 }
 
 TEST(TileStyle, ParseNamesEveryStyleInItsError) {
@@ -36,7 +36,7 @@ TEST(TileStyle, ParseNamesEveryStyleInItsError) {
         parse_tile_style("slope");
         FAIL() << "no error";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("use relief, hillshade, multidirectional, svf, color or insolation"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("use relief, hillshade, multidirectional, svf, color, insolation or lightable"), std::string::npos) << e.what();
     }
 }
 

@@ -9,7 +9,7 @@
 // removed at the end. Exits 1 with "FAIL: ..." on the first failed check.
 
 import { execFileSync } from 'node:child_process';
-import { mkdtemp, readFile, writeFile, readdir, rm } from 'node:fs/promises';
+import { mkdir, mkdtemp, readFile, writeFile, readdir, rm } from 'node:fs/promises';
 import { deflateSync, inflateSync } from 'node:zlib';
 import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -23,6 +23,7 @@ if (!binary || !tmpRoot) {
   console.error('usage: node tests/web/png_test.mjs TERRASHADE_BINARY TMPDIR');
   process.exit(2);
 }
+await mkdir(tmpRoot, { recursive: true });  // the build's folder for it may not exist yet
 
 function check(cond, msg) {
   if (!cond) throw new Error(msg);

@@ -1,0 +1,52 @@
+#!/usr/bin/env node
+// One lightable tile relit for an instant, as a grey + alpha PNG (docs/web-map.md):
+//   node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast]
+// TILESET: an XYZ folder or an MBTiles file of `terrashade tiles --style lightable`; TIME: ISO
+// 8601 with a zone (2024-06-21T17:00Z). The sun is placed where `tiles --time` places it: the
+// DEM's centre (lightable.json's site).
+import fs from 'node:fs';
+import path from 'node:path';
+import {decodePng, encodePng} from '../web/lightable/png.mjs';
+import {readTile, readJsonBeside} from '../web/lightable/tileset.mjs';
+import {readLightableTile, lightFor, relightTile} from '../web/lightable/relight.mjs';
+import {sunPosition} from '../web/lightable/sun_position.mjs';
+
+function fail(message) {
+  console.error(`relight_tile: ${message}`);
+  process.exit(2);
+}
+
+const args = process.argv.slice(2);
+let sky;
+const skyAt = args.indexOf('--sky');
+if (skyAt >= 0) [, sky] = args.splice(skyAt, 2);
+if (args.length !== 4) fail('usage: node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast]');
+const [tileset, zxy, timeText, out] = args;
+const m = /^(\d+)\/(\d+)\/(\d+)$/.exec(zxy);
+if (!m) fail(`${zxy}: give the tile as Z/X/Y`);
+if (!/(Z|[+-]\d\d:?\d\d)$/.test(timeText) || Number.isNaN(Date.parse(timeText)))
+  fail(`${timeText}: give an ISO 8601 time with a zone, e.g. 2024-06-21T17:00Z`);
+if (!fs.existsSync(tileset)) fail(`${tileset}: no such tile set`);
+if (path.resolve(out) === path.resolve(tileset)) fail(`${out}: would overwrite the tile set`);
+
+try {
+  const meta = await readJsonBeside(tileset, fs.statSync(tileset).isDirectory() ? 'lightable.json' : 'terrashade_lightable');
+  if (!meta || meta.format !== 'terrashade-lightable') fail(`${tileset}: not a lightable tile set (no lightable.json)`);
+  const bytes = await readTile(tileset, +m[1], +m[2], +m[3]);
+  if (!bytes) fail(`${tileset}: no tile ${zxy}`);
+  const tile = readLightableTile(await decodePng(bytes));
+  const sun = sunPosition(new Date(timeText), {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg,
+                                                heightM: meta.site.height_m});
+  const rgba = relightTile(tile, lightFor(meta, sun, sky ?? meta.sky), new Uint8Array(tile.n * 4),
+                           {contrast: meta.relief_contrast, flatGrey: meta.flat_grey});
+  const ga = new Uint8Array(tile.n * 2);
+  for (let k = 0; k < tile.n; ++k) ga[2 * k] = rgba[4 * k], ga[2 * k + 1] = rgba[4 * k + 3];
+  const png = await encodePng(tile.size, tile.size, 2, ga);
+  // Whole or nothing: a temporary file renamed into place.
+  const tmp = `${out}.tmp-${process.pid}`;
+  fs.writeFileSync(tmp, png);
+  fs.renameSync(tmp, out);
+  console.log(`${out}: ${zxy} at ${timeText}, sun azimuth ${sun.azimuthDeg.toFixed(2)} deg, elevation ${sun.elevationDeg.toFixed(2)} deg`);
+} catch (e) {
+  fail(e.message);
+}

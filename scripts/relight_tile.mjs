@@ -37,10 +37,11 @@ try {
   const tile = readLightableTile(await decodePng(bytes));
   const sun = sunPosition(new Date(timeText), {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg,
                                                 heightM: meta.site.height_m});
-  const rgba = relightTile(tile, lightFor(meta, sun, sky ?? meta.sky), new Uint8Array(tile.n * 4),
+  const rgba = relightTile(tile, lightFor(meta, sun, sky ?? meta.sky), new Uint8Array(tile.size * tile.size * 4),
                            {contrast: meta.relief_contrast, flatGrey: meta.flat_grey});
-  const ga = new Uint8Array(tile.n * 2);
-  for (let k = 0; k < tile.n; ++k) ga[2 * k] = rgba[4 * k], ga[2 * k + 1] = rgba[4 * k + 3];
+  const pixels = tile.size * tile.size;
+  const ga = new Uint8Array(pixels * 2);
+  for (let k = 0; k < pixels; ++k) ga[2 * k] = rgba[4 * k], ga[2 * k + 1] = rgba[4 * k + 3];
   const png = await encodePng(tile.size, tile.size, 2, ga);
   // Whole or nothing: a temporary file renamed into place.
   const tmp = `${out}.tmp-${process.pid}`;

@@ -93,34 +93,44 @@ std::vector<int> sun_directions(double latitude_deg, int directions) {
     return out;
 }
 
-std::vector<std::uint8_t> encode_lightable_tile(int size, const float* values, const std::uint8_t* covered,
+namespace {
+
+void put_u16(std::vector<std::uint8_t>& out, int v) {
+    out.push_back(std::uint8_t(v & 255)), out.push_back(std::uint8_t((v >> 8) & 255));
+}
+void put_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+    for (int b = 0; b < 4; ++b) out.push_back(std::uint8_t((v >> (8 * b)) & 255));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const LightablePixels& px,
                                                 const LightableEncoding& e) {
     const int ch = lightable_channels(e.directions);
-    const std::size_t n = std::size_t(size) * std::size_t(size);
+    const std::size_t n = std::size_t(tx.width) * std::size_t(tx.height);
     const int k_count = std::clamp(e.components, 1, kLightTransfer);
-    std::vector<std::uint8_t> has(n, 0);
-    for (std::size_t p = 0; p < n; ++p) {
-        if (!covered[p]) continue;
+    auto at = [&](std::size_t t, int c) { return double(tx.values[t * std::size_t(ch) + std::size_t(c)]); };
+    std::vector<std::uint8_t> valid(n, 0);
+    for (std::size_t t = 0; t < n; ++t) {
         bool finite = true;
-        for (int c = 0; c < ch && finite; ++c) finite = std::isfinite(values[p * std::size_t(ch) + std::size_t(c)]);
-        has[p] = finite;
+        for (int c = 0; c < ch && finite; ++c) finite = std::isfinite(at(t, c));
+        valid[t] = finite;
     }
-    auto at = [&](std::size_t p, int c) { return double(values[p * std::size_t(ch) + std::size_t(c)]); };
 
-    // The transfer's mean and principal components over the tile's pixels.
+    // The transfer's mean and principal components over the window's texels.
     std::array<double, kLightTransfer> mean{};
     std::size_t count = 0;
-    for (std::size_t p = 0; p < n; ++p)
-        if (has[p]) {
+    for (std::size_t t = 0; t < n; ++t)
+        if (valid[t]) {
             ++count;
-            for (int i = 0; i < kLightTransfer; ++i) mean[std::size_t(i)] += at(p, kLightTransferAt + i);
+            for (int i = 0; i < kLightTransfer; ++i) mean[std::size_t(i)] += at(t, kLightTransferAt + i);
         }
     for (double& m : mean) m = count ? m / double(count) : 0.0;
     Matrix9 cov{}, basis{};
-    for (std::size_t p = 0; p < n; ++p) {
-        if (!has[p]) continue;
+    for (std::size_t t = 0; t < n; ++t) {
+        if (!valid[t]) continue;
         double d[kLightTransfer];
-        for (int i = 0; i < kLightTransfer; ++i) d[i] = at(p, kLightTransferAt + i) - mean[std::size_t(i)];
+        for (int i = 0; i < kLightTransfer; ++i) d[i] = at(t, kLightTransferAt + i) - mean[std::size_t(i)];
         for (int i = 0; i < kLightTransfer; ++i)
             for (int j = 0; j < kLightTransfer; ++j) cov[i][j] += d[i] * d[j];
     }
@@ -129,21 +139,20 @@ std::vector<std::uint8_t> encode_lightable_tile(int size, const float* values, c
     for (int i = 0; i < kLightTransfer; ++i) order[std::size_t(i)] = i;
     std::sort(order.begin(), order.end(), [&](int a, int b) { return cov[a][a] > cov[b][b]; });
 
-    const int planes = 4 + k_count + int(e.planes.size());
     std::vector<float> w(n * std::size_t(k_count), 0.0f);
     std::vector<double> w_lo(std::size_t(k_count), 0.0), w_hi(std::size_t(k_count), 0.0);
     double h_lo = 1e9, h_hi = -1e9;
-    for (std::size_t p = 0; p < n; ++p) {
-        if (!has[p]) continue;
+    for (std::size_t t = 0; t < n; ++t) {
+        if (!valid[t]) continue;
         for (int k = 0; k < k_count; ++k) {
-            double s = 0;
+            double sum = 0;
             for (int i = 0; i < kLightTransfer; ++i)
-                s += basis[i][order[std::size_t(k)]] * (at(p, kLightTransferAt + i) - mean[std::size_t(i)]);
-            w[p * std::size_t(k_count) + std::size_t(k)] = float(s);
-            w_lo[std::size_t(k)] = std::min(w_lo[std::size_t(k)], s), w_hi[std::size_t(k)] = std::max(w_hi[std::size_t(k)], s);
+                sum += basis[i][order[std::size_t(k)]] * (at(t, kLightTransferAt + i) - mean[std::size_t(i)]);
+            w[t * std::size_t(k_count) + std::size_t(k)] = float(sum);
+            w_lo[std::size_t(k)] = std::min(w_lo[std::size_t(k)], sum), w_hi[std::size_t(k)] = std::max(w_hi[std::size_t(k)], sum);
         }
         for (int d : e.planes) {
-            const double h = at(p, kLightHorizonAt + d);
+            const double h = at(t, kLightHorizonAt + d);
             h_lo = std::min(h_lo, h), h_hi = std::max(h_hi, h);
         }
     }
@@ -151,10 +160,18 @@ std::vector<std::uint8_t> encode_lightable_tile(int size, const float* values, c
     h_hi = std::min(h_hi, e.max_horizon_rad);
     if (!(h_hi > h_lo + 1e-4)) h_hi = h_lo + 1e-4;
 
-    // The header.
+    const int size = px.size;
+    const int width = std::max(size, tx.width);
     std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 1, std::uint8_t(k_count), std::uint8_t(e.directions),
-                                        std::uint8_t(e.planes.size()), std::uint8_t(size & 255), std::uint8_t(size >> 8),
-                                        0, 0};
+                                        std::uint8_t(e.planes.size())};
+    put_u16(header, size);
+    put_u16(header, 0);  // header rows, below
+    put_u16(header, width);
+    header.push_back(px.separable ? 1 : 0);
+    header.push_back(std::uint8_t(px.grid_step));
+    put_u32(header, std::uint32_t(tx.level_width)), put_u32(header, std::uint32_t(tx.level_height));
+    put_u32(header, std::uint32_t(tx.x0)), put_u32(header, std::uint32_t(tx.y0));
+    put_u16(header, tx.width), put_u16(header, tx.height);
     for (int d : e.planes) header.push_back(std::uint8_t(d));
     while (header.size() % 4) header.push_back(0);
     put_float(header, h_lo), put_float(header, h_hi);
@@ -163,31 +180,44 @@ std::vector<std::uint8_t> encode_lightable_tile(int size, const float* values, c
         for (int i = 0; i < kLightTransfer; ++i) put_float(header, basis[i][order[std::size_t(k)]]);
     for (double v : w_lo) put_float(header, v);
     for (double v : w_hi) put_float(header, v);
-    const int header_rows = int((header.size() + std::size_t(size) - 1) / std::size_t(size));
+    for (float v : px.x) put_float(header, v);
+    for (float v : px.y) put_float(header, v);
+    const int header_rows = int((header.size() + std::size_t(width) - 1) / std::size_t(width));
     header[10] = std::uint8_t(header_rows & 255), header[11] = std::uint8_t(header_rows >> 8);
 
-    const std::size_t height = std::size_t(header_rows) + std::size_t(planes) * std::size_t(size);
-    std::vector<std::uint8_t> image(height * std::size_t(size), 0);
+    const int texel_planes = 4 + k_count + int(e.planes.size());
+    const std::size_t rows = std::size_t(header_rows) + std::size_t(size) + std::size_t(texel_planes) * std::size_t(tx.height);
+    std::vector<std::uint8_t> image(rows * std::size_t(width), 0);
     std::copy(header.begin(), header.end(), image.begin());
-    auto plane = [&](int k) { return image.data() + (std::size_t(header_rows) + std::size_t(k) * std::size_t(size)) * std::size_t(size); };
-    for (std::size_t p = 0; p < n; ++p) {
-        if (!has[p]) continue;
-        plane(0)[p] = 255;
-        double nx = at(p, kLightNormal), ny = at(p, kLightNormal + 1), nz = at(p, kLightNormal + 2);
+    std::uint8_t* coverage = image.data() + std::size_t(header_rows) * std::size_t(width);
+    for (int r = 0; r < size; ++r)
+        for (int c = 0; c < size; ++c)
+            coverage[std::size_t(r) * std::size_t(width) + std::size_t(c)] = px.covered[std::size_t(r) * std::size_t(size) + std::size_t(c)] ? 255 : 0;
+    // Texel t of plane k.
+    auto texel = [&](int k, std::size_t t) -> std::uint8_t& {
+        const std::size_t row = std::size_t(header_rows) + std::size_t(size) + std::size_t(k) * std::size_t(tx.height) +
+                                t / std::size_t(tx.width);
+        return image[row * std::size_t(width) + t % std::size_t(tx.width)];
+    };
+    for (std::size_t t = 0; t < n; ++t) {
+        if (!valid[t]) continue;
+        texel(0, t) = 255;
+        double nx = at(t, kLightNormal), ny = at(t, kLightNormal + 1), nz = at(t, kLightNormal + 2);
         const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
         if (len > 0) nx /= len, ny /= len;
         const int qx = int(std::lround(std::clamp((nx + 1) * 0.5, 0.0, 1.0) * 4095));
         const int qy = int(std::lround(std::clamp((ny + 1) * 0.5, 0.0, 1.0) * 4095));
-        plane(1)[p] = std::uint8_t(qx >> 4), plane(2)[p] = std::uint8_t(qy >> 4);
-        plane(3)[p] = std::uint8_t(((qx & 15) << 4) | (qy & 15));
+        texel(1, t) = std::uint8_t(qx >> 4), texel(2, t) = std::uint8_t(qy >> 4);
+        texel(3, t) = std::uint8_t(((qx & 15) << 4) | (qy & 15));
         for (int k = 0; k < k_count; ++k)
-            plane(4 + k)[p] = quantise(w[p * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
+            texel(4 + k, t) = quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
         for (std::size_t j = 0; j < e.planes.size(); ++j)
-            plane(4 + k_count + int(j))[p] = quantise(at(p, kLightHorizonAt + e.planes[j]), h_lo, h_hi);
+            texel(4 + k_count + int(j), t) = quantise(at(t, kLightHorizonAt + e.planes[j]), h_lo, h_hi);
     }
     raster::PngEncoding encoding;
-    encoding.deflater = raster::Deflater::isal;
-    return raster::encode_png(size, int(height), 1, image.data(), encoding);
+    encoding.deflater = raster::Deflater::libdeflate;
+    encoding.level = e.deflate_level;
+    return raster::encode_png(width, int(rows), 1, image.data(), encoding);
 }
 
 }  // namespace ts::tiles

@@ -1,26 +1,38 @@
 #pragma once
 // The bytes of one lightable data tile (docs/web-map.md, "The data tile"): what a reader needs to
-// light each pixel as `relief` does for any sun and sky, quantised per tile.
+// light the tile as `relief` does for any sun and sky, quantised per tile.
 //
-// One 8-bit greyscale PNG, `size` pixels wide: `header rows` of binary header, then planes of
-// size x size bytes one below the other:
-//   plane 0          coverage: 255 where the pixel has data, 0 elsewhere
-//   planes 1, 2      the unit normal's east and north components, high 8 of 12 bits:
-//                    q = round((n + 1) / 2 * 4095); plane 3 their low 4 bits (east << 4 | north);
-//                    up = sqrt(1 - e^2 - n^2)
-//   K planes         the tile's principal components of the diffuse transfer T_d (9 SH
-//                    coefficients, bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k +
-//                    q / 255 (hi_k - lo_k)
-//   P planes         horizon elevations at the stored azimuths: h = lo + q / 255 (hi - lo),
-//                    radians; the azimuths the sun never reaches at the tile set's latitude are
-//                    left out (their neighbours are kept for interpolation)
+// Relief lights the texels of its zoom's DEM level, then samples each pixel from them by
+// Catmull-Rom. A lightable tile keeps the same two steps apart: the data of the window of texels
+// the tile's pixels sample, and where each pixel samples them. A reader lights the texels, then
+// resamples their grey as relief does, so both agree wherever the light agrees; and a zoom that
+// magnifies its level stores its texels, not its pixels (a 256-px tile at 4x magnification holds
+// 67 x 67 texels).
+//
+// One 8-bit greyscale PNG, W = max(size, window width) bytes wide: `header rows` of binary
+// header, then planes, each starting on a new row:
+//   pixels: coverage (size x size): 255 where relief's pixel shows data, 0 elsewhere
+//   texels (window width x height), row-major:
+//     valid: 255 where every value is finite
+//     normal: east and north components at 12 bits, q = round((n + 1) / 2 * 4095): high 8 bits of
+//       each (2 planes), their low 4 bits (east << 4 | north); up = sqrt(1 - e^2 - n^2)
+//     K planes: the window's principal components of the diffuse transfer T_d (9 SH coefficients,
+//       bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k + q / 255 (hi_k - lo_k)
+//     P planes: horizon elevations at the stored azimuths, h = lo + q / 255 (hi - lo) radians;
+//       azimuths the sun never reaches at the tile set's latitude are left out (their neighbours
+//       are kept for interpolation)
 // Header (little-endian): "TSL1", u8 version 1, u8 K, u8 D (light directions: azimuth of
-// direction d = 360 d / D degrees clockwise from north), u8 P, u16 size, u16 header rows,
-// P bytes (the stored directions, ascending), zero padding to 4 bytes, then float32: horizon lo,
-// hi; mean[9]; basis[K][9]; w lo[K]; w hi[K].
-// Why this: a grey PNG any browser decodes; planes keep each quantity's neighbours adjacent, so
-// PNG's row filters find them; per-tile ranges and components spend the 8 bits where the tile's
-// values are (a tile's transfer vectors span few dimensions: 4 components keep it within 1%).
+// direction d = 360 d / D degrees clockwise from north), u8 P, u16 size, u16 header rows, u16 W,
+// u8 separable, u8 grid step, u32 level width, u32 level height, u32 window x0, u32 window y0,
+// u16 window width, u16 window height, P bytes (the stored directions, ascending), zero padding
+// to 4 bytes, then float32: horizon lo, hi; mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
+// pixels sample the level, in level texel-centre coordinates minus the window's origin:
+//   separable (geographic and Web Mercator DEMs): x of each column [size], y of each row [size],
+//     clamped to the level as relief clamps them
+//   otherwise: x, y at every `grid step` pixels, ((size / step + 1)^2 nodes, row-major, x then
+//     y per node; NaN off the CRS's domain), interpolated bilinearly between nodes, then clamped
+// Why: a grey PNG any browser decodes; planes keep each quantity's neighbours adjacent for PNG's
+// row filters; per-tile ranges and components spend the 8 bits where the tile's values are.
 #include <cstdint>
 #include <vector>
 
@@ -38,6 +50,7 @@ struct LightableEncoding {
     int components = 4;               // principal components of the transfer kept (1..9)
     std::vector<int> planes;          // stored directions, ascending (sun_directions)
     double max_horizon_rad = 1.5708;  // horizons above it always hide the sun (clamped)
+    int deflate_level = 9;            // libdeflate's: tiles are made once and fetched often
 };
 
 // The directions whose horizons can hide the sun at `latitude_deg` on some day of a year (the
@@ -47,9 +60,24 @@ std::vector<int> sun_directions(double latitude_deg, int directions);
 // The sun's highest elevation over a year at a latitude, radians.
 double max_sun_elevation_rad(double latitude_deg);
 
-// A tile's bytes from its pixels' values (size * size * lightable_channels(D) floats, row-major)
-// where `covered` is non-zero; pixels with a non-finite value are not covered.
-std::vector<std::uint8_t> encode_lightable_tile(int size, const float* values, const std::uint8_t* covered,
+// The window of a zoom's level a tile's pixels sample, with its texels' values
+// (lightable_channels(D) floats each, row-major).
+struct LightableTexels {
+    int level_width = 0, level_height = 0;
+    int x0 = 0, y0 = 0, width = 0, height = 0;
+    const float* values = nullptr;
+};
+
+// Where a tile's pixels sample the window (see the header comment) and which show data.
+struct LightablePixels {
+    int size = 256;
+    const std::uint8_t* covered = nullptr;  // size^2
+    bool separable = true;
+    int grid_step = 8;                      // non-separable maps
+    std::vector<float> x, y;                // separable: size each; else one per grid node
+};
+
+std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& texels, const LightablePixels& pixels,
                                                 const LightableEncoding& encoding);
 
 }  // namespace ts::tiles

@@ -154,6 +154,52 @@ void shade_grey_cubic_separable(const ShadeSource& source, const TileScratch& sc
     }
 }
 
+// A lightable tile (lightable_tile.hpp): the window of source texels the covered pixels' Catmull-Rom
+// taps reach, and where each pixel samples it (sc.at located, sc.covered set).
+std::vector<std::uint8_t> encode_data_tile(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f,
+                                           const TileScratch& sc, const LightableEncoding& encoding) {
+    const int n = f.size, w = source.width, h = source.height;
+    const double inv_scale = 1.0 / double(1 << source.level);
+    auto level = [&](double p, int size) { return std::clamp(p * inv_scale - 0.5, 0.0, double(size - 1)); };
+    int x_lo = w, x_hi = -1, y_lo = h, y_hi = -1;
+    for (std::size_t k = 0; k < sc.covered.size(); ++k) {
+        if (!sc.covered[k]) continue;
+        const int i = std::min(int(level(sc.at[k].x, w)), w - 1), j = std::min(int(level(sc.at[k].y, h)), h - 1);
+        x_lo = std::min(x_lo, i - 1), x_hi = std::max(x_hi, i + 2), y_lo = std::min(y_lo, j - 1), y_hi = std::max(y_hi, j + 2);
+    }
+    LightablePixels px;
+    px.size = n;
+    px.covered = sc.covered.data();
+    px.separable = map.separable();
+    // Between a non-separable map's grid nodes the reader interpolates: a texel more on each side.
+    const int margin = px.separable ? 0 : 1;
+    LightableTexels tx;
+    tx.level_width = w, tx.level_height = h;
+    tx.x0 = std::max(0, x_lo - margin), tx.y0 = std::max(0, y_lo - margin);
+    tx.width = std::min(w - 1, x_hi + margin) - tx.x0 + 1, tx.height = std::min(h - 1, y_hi + margin) - tx.y0 + 1;
+    if (px.separable) {
+        for (int i = 0; i < n; ++i) px.x.push_back(float(level(sc.at[std::size_t(i)].x, w) - tx.x0));
+        for (int j = 0; j < n; ++j) px.y.push_back(float(level(sc.at[std::size_t(j) * std::size_t(n)].y, h) - tx.y0));
+    } else {
+        std::vector<glm::dvec2> at;
+        map.locate(f, 1, at);  // pixels -1..n: node n is the halo's
+        const int m = n + 2;
+        for (int j = 0; j <= n; j += px.grid_step)
+            for (int i = 0; i <= n; i += px.grid_step) {
+                const glm::dvec2 p = at[std::size_t(j + 1) * std::size_t(m) + std::size_t(i + 1)];
+                px.x.push_back(float(p.x * inv_scale - 0.5 - tx.x0));
+                px.y.push_back(float(p.y * inv_scale - 0.5 - tx.y0));
+            }
+    }
+    const std::size_t ch = std::size_t(source.channels);
+    std::vector<float> values(std::size_t(tx.width) * std::size_t(tx.height) * ch);
+    for (int r = 0; r < tx.height; ++r)
+        std::copy_n(source.values.data() + (std::size_t(tx.y0 + r) * std::size_t(w) + std::size_t(tx.x0)) * ch,
+                    std::size_t(tx.width) * ch, values.data() + std::size_t(r) * std::size_t(tx.width) * ch);
+    tx.values = values.data();
+    return encode_lightable_tile(tx, px, encoding);
+}
+
 }  // namespace
 
 void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& sc) {
@@ -226,20 +272,8 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
     out.size = n;
     out.encoded.clear();
     if (style.data_tile()) {
-        // Every channel sampled as the picture styles sample theirs, then encoded by the style.
-        const std::size_t ch = std::size_t(source.channels);
-        sc.data.assign(std::size_t(n) * n * ch, 0.0f);
         if (out.covered == 0 || !lightable) return;
-        for (std::size_t k = 0; k < sc.covered.size(); ++k) {
-            if (!sc.covered[k]) continue;
-            const double x = level_x(sc.at[k].x), y = level_x(sc.at[k].y);
-            float* v = sc.data.data() + k * ch;
-            if (shading.resampling == Resampling::cubic)
-                for (std::size_t c = 0; c < ch; ++c) v[c] = CatmullRom{source}(x, y, int(c));
-            else
-                for (std::size_t c = 0; c < ch; ++c) v[c] = Bilinear{source}(x, y, int(c));
-        }
-        out.encoded = encode_lightable_tile(n, sc.data.data(), sc.covered.data(), *lightable);
+        out.encoded = encode_data_tile(map, source, f, sc, *lightable);
         return;
     }
     out.channels = source.channels == 3 ? 4 : 2;

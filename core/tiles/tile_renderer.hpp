@@ -27,7 +27,6 @@ struct TileScratch {
     std::vector<glm::dvec2> at;
     std::vector<float> values;
     std::vector<std::uint8_t> covered, grey;
-    std::vector<float> data;  // a data tile's sampled channels
 };
 
 // The heights a Horn style shades the tile from: (size + 2)^2 floats with the 1-px halo, into

@@ -45,9 +45,9 @@ try {
     let alpha = 0;
     for (const t of tiles) {
       const tile = readLightableTile(await decodePng(fs.readFileSync(path.join(lightable, t))));
-      const lit = relightTile(tile, light, new Uint8Array(tile.n * 4), {contrast: meta.relief_contrast});
+      const lit = relightTile(tile, light, new Uint8Array(tile.size * tile.size * 4), {contrast: meta.relief_contrast});
       const ref = await decodePng(fs.readFileSync(path.join(relief, t)));
-      for (let k = 0; k < tile.n; ++k) {
+      for (let k = 0; k < tile.size * tile.size; ++k) {
         const a = lit[4 * k + 3] > 0, b = ref.data[2 * k + 1] > 0;
         if (a !== b) { ++alpha; continue; }
         if (a) diffs.push(Math.abs(lit[4 * k] - ref.data[2 * k]));

@@ -12,30 +12,42 @@
 const DEG = Math.PI / 180;
 const LUM = [0.2126, 0.7152, 0.0722];
 
-// The tile's header and planes from its decoded PNG ({width, height, channels: 1, data}).
+// The tile's header, planes and sampling from its decoded PNG ({width, height, channels: 1, data};
+// the format: core/tiles/lightable_tile.hpp).
 export function readLightableTile(img) {
-  const d = img.data, S = img.width;
+  const d = img.data, W = img.width;
   if (img.channels !== 1 || d[0] !== 84 || d[1] !== 83 || d[2] !== 76 || d[3] !== 49)
     throw new Error('not a terrashade lightable tile (no TSL1 header)');
-  const K = d[5], D = d[6], P = d[7];
-  const headerRows = d[10] | (d[11] << 8);
-  const dirs = Array.from(d.subarray(12, 12 + P));
-  let at = 12 + P;
-  at = (at + 3) & ~3;
-  const view = new DataView(d.buffer, d.byteOffset + at, 4 * (2 + 9 + 9 * K + 2 * K));
-  const f = (i) => view.getFloat32(4 * i, true);
-  const hLo = f(0), hHi = f(1);
-  const mean = Float64Array.from({length: 9}, (_, i) => f(2 + i));
-  const basis = Float64Array.from({length: 9 * K}, (_, i) => f(11 + i));
-  const wLo = Float64Array.from({length: K}, (_, k) => f(11 + 9 * K + k));
-  const wHi = Float64Array.from({length: K}, (_, k) => f(11 + 10 * K + k));
-  const n = S * S;
-  const plane = (p) => d.subarray((headerRows + p * S) * S, (headerRows + (p + 1) * S) * S);
-  // direction index -> plane index (-1: not stored: the sun never shines from there)
+  const u16 = (i) => d[i] | (d[i + 1] << 8);
+  const u32 = (i) => (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)) >>> 0;
+  const K = d[5], D = d[6], P = d[7], S = u16(8), headerRows = u16(10);
+  const separable = d[14] === 1, step = d[15];
+  const levelW = u32(16), levelH = u32(20), x0 = u32(24), y0 = u32(28), tw = u16(32), th = u16(34);
+  const dirs = Array.from(d.subarray(36, 36 + P));
+  const start = (36 + P + 3) & ~3;
+  const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
+  const floats = new Float32Array(2 + 9 + 9 * K + 2 * K + nodes);
+  const view = new DataView(d.buffer, d.byteOffset + start, 4 * floats.length);
+  for (let i = 0; i < floats.length; ++i) floats[i] = view.getFloat32(4 * i, true);
+  const hLo = floats[0], hHi = floats[1];
+  const mean = floats.subarray(2, 11), basis = floats.subarray(11, 11 + 9 * K);
+  const wLo = floats.subarray(11 + 9 * K, 11 + 10 * K), wHi = floats.subarray(11 + 10 * K, 11 + 11 * K);
+  const coords = floats.subarray(11 + 11 * K);
+  // Plane rows: pixels' coverage (S rows), then the texel planes (th rows each), W bytes a row.
+  const rowOf = (r) => (headerRows + r) * W;
+  const coverage = new Uint8Array(S * S);
+  for (let r = 0; r < S; ++r) coverage.set(d.subarray(rowOf(r), rowOf(r) + S), r * S);
+  const n = tw * th;
+  const texelPlane = (k) => {
+    const out = new Uint8Array(n), first = S + k * th;
+    for (let r = 0; r < th; ++r) out.set(d.subarray(rowOf(first + r), rowOf(first + r) + tw), r * tw);
+    return out;
+  };
   const planeOf = new Int16Array(D).fill(-1);
   dirs.forEach((dir, j) => (planeOf[dir] = 4 + K + j));
-  return {size: S, n, K, D, dirs, hLo, hHi, mean, basis, wLo, wHi, plane, planeOf,
-          cover: plane(0), nHiX: plane(1), nHiY: plane(2), nLo: plane(3)};
+  return {size: S, n, K, D, dirs, hLo, hHi, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
+          coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
+          valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
 }
 
 // Linear interpolation in a sky table at elevation e (degrees): {sh: 27 numbers, sun: [r, g, b]}.
@@ -112,16 +124,15 @@ const SRGB = (() => {
   return t;
 })();
 
-// Per pixel: the sun's visible fraction (0..1, NaN where no data) for `light`.
+// Per texel of the tile's window: the sun's visible fraction (0..1) for `light`.
 export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
-  const {n, D, planeOf, hLo, hHi, cover} = tile;
+  const {n, D, planeOf, hLo, hHi} = tile;
   const u = ((light.azimuthDeg % 360) + 360) % 360 / (360 / D);
   const d0 = Math.floor(u) % D, d1 = (d0 + 1) % D, t = u - Math.floor(u);
   const p0 = planeOf[d0], p1 = planeOf[d1];
   const scale = (hHi - hLo) / 255;
   const h0 = p0 >= 0 ? tile.plane(p0) : null, h1 = p1 >= 0 ? tile.plane(p1) : null;
   for (let k = 0; k < n; ++k) {
-    if (!cover[k]) { out[k] = NaN; continue; }
     // A direction not stored is one the sun never shines from: nothing there hides it.
     const a = h0 ? hLo + h0[k] * scale : -Math.PI / 2, b = h1 ? hLo + h1[k] * scale : -Math.PI / 2;
     out[k] = discVisible(a + t * (b - a), light.el, light.radius);
@@ -129,32 +140,29 @@ export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
   return out;
 }
 
-// The tile's pixels lit by `light` into `out` (RGBA bytes, size^2 * 4): relief's grey, alpha 0
-// where the tile has no data.
-export function relightTile(tile, light, out, {contrast = 1, flatGrey = 0.5} = {}) {
-  const {n, K, mean, basis, wLo, wHi, cover, nHiX, nHiY, nLo} = tile;
+// Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
+export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
+  const {n, K, mean, basis, wLo, wHi, valid, nHiX, nHiY, nLo} = tile;
   // The sky's light per principal component: <mean, L> + sum_k w_k <basis_k, L>.
   let base = 0;
   for (let i = 0; i < 9; ++i) base += mean[i] * light.skyLum[i];
-  const wk = new Float64Array(K), w0 = new Float64Array(K);
+  const wk = new Float64Array(K);
   for (let k = 0; k < K; ++k) {
     let b = 0;
     for (let i = 0; i < 9; ++i) b += basis[9 * k + i] * light.skyLum[i];
     wk[k] = b * (wHi[k] - wLo[k]) / 255;
-    w0[k] = b * wLo[k];
-    base += w0[k];
+    base += b * wLo[k];
   }
   const planes = [];
   for (let k = 0; k < K; ++k) planes.push(tile.plane(4 + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
   const [sx, sy, sz] = light.s;
   const inv = 1 / light.flat;
+  const grey = new Float32Array(n);
   for (let k = 0; k < n; ++k) {
-    const o = 4 * k;
-    if (!cover[k]) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
-    let sky = base;
-    for (let c = 0; c < K; ++c) sky += wk[c] * planes[c][k];
-    let lum = sky;
+    if (!valid[k]) { grey[k] = NaN; continue; }
+    let lum = base;
+    for (let c = 0; c < K; ++c) lum += wk[c] * planes[c][k];
     if (vis) {
       const qx = (nHiX[k] << 4) | (nLo[k] >> 4), qy = (nHiY[k] << 4) | (nLo[k] & 15);
       const nx = qx / 4095 * 2 - 1, ny = qy / 4095 * 2 - 1;
@@ -163,10 +171,108 @@ export function relightTile(tile, light, out, {contrast = 1, flatGrey = 0.5} = {
       if (cos > 0) lum += vis[k] * cos * light.eDiffuse;
     }
     const ratio = Math.max(0, lum * inv);
-    const grey = Math.min(1, Math.max(0, flatGrey * (contrast === 1 ? ratio : Math.pow(ratio, contrast))));
-    const code = SRGB[Math.round(Math.fround(grey) * 16383)];
+    grey[k] = Math.min(1, Math.max(0, flatGrey * (contrast === 1 ? ratio : Math.pow(ratio, contrast))));
+  }
+  return grey;
+}
+
+// Catmull-Rom (a = -0.5) weights at t, as the C++ tiles' CatmullRom.
+function cubicWeights(t, w) {
+  const t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t3 + 2 * t2 - t);
+  w[1] = 0.5 * (3 * t3 - 5 * t2 + 2);
+  w[2] = 0.5 * (-3 * t3 + 4 * t2 + t);
+  w[3] = 0.5 * (t3 - t2);
+}
+
+// Where pixel (i, j) samples the window: {x, y} relative to its origin, clamped to the level.
+function pixelAt(tile, i, j) {
+  const {separable, coords, size, step, x0, y0, levelW, levelH} = tile;
+  let x, y;
+  if (separable) {
+    x = coords[i], y = coords[size + j];
+  } else {
+    const m = size / step + 1, gi = Math.min(Math.floor(i / step), m - 2), gj = Math.min(Math.floor(j / step), m - 2);
+    const fx = (i - gi * step) / step, fy = (j - gj * step) / step;
+    const node = (a, b, c) => coords[2 * (b * m + a) + c];
+    const lerp2 = (c) => (node(gi, gj, c) * (1 - fx) + node(gi + 1, gj, c) * fx) * (1 - fy) +
+                         (node(gi, gj + 1, c) * (1 - fx) + node(gi + 1, gj + 1, c) * fx) * fy;
+    x = Math.min(Math.max(lerp2(0), -x0), levelW - 1 - x0);
+    y = Math.min(Math.max(lerp2(1), -y0), levelH - 1 - y0);
+  }
+  return {x, y};
+}
+
+// The taps of one axis at window coordinate v: indices into the window and weights.
+function taps(v, origin, levelSize, out) {
+  const a = v + origin;                      // the level's coordinate, as relief clamps it
+  const i0 = Math.min(Math.floor(a), levelSize - 1);
+  cubicWeights(Math.fround(a - i0), out.w);
+  for (let k = 0; k < 4; ++k) out.i[k] = Math.min(Math.max(i0 - 1 + k, 0), levelSize - 1) - origin;
+}
+
+// Resamples a per-texel value of the window (e.g. texelGrey) to the tile's pixels by Catmull-Rom,
+// as relief does: NaN where a tap is not valid or the pixel is not covered.
+export function resampleToPixels(tile, texels, out = new Float32Array(tile.size * tile.size)) {
+  const {size, tw, coverage} = tile;
+  const tx = {i: new Int32Array(4), w: new Float64Array(4)}, ty = {i: new Int32Array(4), w: new Float64Array(4)};
+  for (let j = 0; j < size; ++j)
+    for (let i = 0; i < size; ++i) {
+      const k = j * size + i;
+      if (!coverage[k]) { out[k] = NaN; continue; }
+      const p = pixelAt(tile, i, j);
+      taps(p.x, tile.x0, tile.levelW, tx);
+      taps(p.y, tile.y0, tile.levelH, ty);
+      let sum = 0;
+      for (let b = 0; b < 4; ++b) {
+        const row = ty.i[b] * tw;
+        let acc = 0;
+        for (let a = 0; a < 4; ++a) acc += tx.w[a] * texels[row + tx.i[a]];
+        sum += ty.w[b] * acc;
+      }
+      out[k] = sum;
+    }
+  return out;
+}
+
+// The tile's pixels lit by `light` into `out` (RGBA bytes, size^2 * 4): relief's grey, alpha 0
+// where relief's tile is transparent.
+export function relightTile(tile, light, out, options = {}) {
+  const grey = resampleToPixels(tile, texelGrey(tile, light, options));
+  for (let k = 0; k < grey.length; ++k) {
+    const o = 4 * k, v = grey[k];
+    if (Number.isNaN(v)) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
+    const code = SRGB[Math.round(Math.min(1, Math.max(0, v)) * 16383)];
     out[o] = out[o + 1] = out[o + 2] = code;
     out[o + 3] = 255;
   }
   return out;
+}
+
+// Hours of direct sun per texel of the window on the UTC day of `date` (the part of the sun's
+// disc seen, summed every `stepMinutes`): the page's second layer. `sunAt(date)` gives the sun
+// ({azimuthDeg, elevationDeg}) at an instant, e.g. sunPosition at the tile set's site.
+export function sunHoursTexels(tile, meta, date, sunAt, stepMinutes = 10) {
+  const hours = new Float32Array(tile.n);
+  const vis = new Float32Array(tile.n);
+  const {valid, nHiX, nHiY, nLo} = tile;
+  const day = Date.UTC(date.getUTCFullYear(), date.getUTCMonth(), date.getUTCDate());
+  const radius = meta.skies.clear.sun_radius_rad;
+  for (let m = stepMinutes / 2; m < 24 * 60; m += stepMinutes) {
+    const sun = sunAt(new Date(day + m * 60000));
+    if (sun.elevationDeg < -1) continue;
+    const el = sun.elevationDeg * DEG, az = sun.azimuthDeg * DEG;
+    const s = [Math.cos(el) * Math.sin(az), Math.cos(el) * Math.cos(az), Math.sin(el)];
+    sunVisibility(tile, {azimuthDeg: sun.azimuthDeg, el, radius}, vis);
+    for (let k = 0; k < tile.n; ++k) {
+      if (!valid[k]) continue;
+      const qx = (nHiX[k] << 4) | (nLo[k] >> 4), qy = (nHiY[k] << 4) | (nLo[k] & 15);
+      const nx = qx / 4095 * 2 - 1, ny = qy / 4095 * 2 - 1;
+      const nz = Math.sqrt(Math.max(0, 1 - nx * nx - ny * ny));
+      // Direct sun on the surface: its disc seen and the surface facing it.
+      if (nx * s[0] + ny * s[1] + nz * s[2] > 0) hours[k] += vis[k] * stepMinutes / 60;
+    }
+  }
+  for (let k = 0; k < tile.n; ++k) if (!valid[k]) hours[k] = NaN;
+  return hours;
 }

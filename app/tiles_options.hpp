@@ -30,8 +30,8 @@ struct TilesArgs {
     std::string far_field = "balanced";
     std::string resampling = "cubic";
     double relief_contrast = 1.0;
-    int light_directions = 32;  // lightable
-    int light_components = 4;   // lightable
+    int light_directions = 128;  // lightable
+    int light_components = 6;    // lightable
     int level_bias = 0;
     int threads = 0;
     bool verbose = false;  // -v: what each zoom was shaded from

@@ -69,10 +69,10 @@ std::array<light::Rgb, 9> turn_sky_sh(const std::array<light::Rgb, 9>& in, doubl
 }
 
 std::string lightable_json(const TileShading& s, const LightableSite& site, const std::array<float, 16>& flat_transfer,
-                           const std::vector<int>& stored) {
+                           const std::vector<SunBand>& stored) {
     std::string flat, dirs;
     for (int i = 0; i < 9; ++i) flat += (i ? "," : "") + number(flat_transfer[std::size_t(i)]);
-    for (std::size_t i = 0; i < stored.size(); ++i) dirs += (i ? "," : "") + std::to_string(stored[i]);
+    for (std::size_t i = 0; i < stored.size(); ++i) dirs += (i ? "," : "") + std::to_string(stored[i].direction);
     light::SkyOptions clear = s.sky, overcast = s.sky;
     clear.kind = light::SkyOptions::Kind::clear;
     overcast.kind = light::SkyOptions::Kind::overcast;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/light/sky.hpp"
+#include "core/tiles/lightable_tile.hpp"
 #include "core/tiles/tile_style.hpp"
 
 namespace ts::tiles {
@@ -32,6 +33,6 @@ std::array<light::Rgb, 9> turn_sky_sh(const std::array<light::Rgb, 9>& sky_sh, d
 
 // The JSON text of lightable.json for a job's shading at `site`.
 std::string lightable_json(const TileShading& shading, const LightableSite& site, const std::array<float, 16>& flat_transfer,
-                           const std::vector<int>& stored_directions);
+                           const std::vector<SunBand>& stored_directions);
 
 }  // namespace ts::tiles

@@ -14,6 +14,8 @@ namespace {
 constexpr double kObliquityDeg = 23.44;
 // Horizons below this always let the sun through (the lowest sun that lights anything).
 constexpr double kLowestHorizonRad = -5.0 * std::numbers::pi / 180.0;
+// Around the sun's band in a direction: its disc's radius and the sun sampling's step.
+constexpr double kBandMarginRad = 0.5 * std::numbers::pi / 180.0;
 
 using Matrix9 = std::array<std::array<double, kLightTransfer>, kLightTransfer>;
 
@@ -68,28 +70,34 @@ double max_sun_elevation_rad(double latitude_deg) {
     return (90.0 - std::max(0.0, std::abs(latitude_deg) - kObliquityDeg)) * std::numbers::pi / 180.0;
 }
 
-std::vector<int> sun_directions(double latitude_deg, int directions) {
+std::vector<SunBand> sun_bands(double latitude_deg, int directions) {
     const double deg = std::numbers::pi / 180.0;
     const double phi = latitude_deg * deg;
-    std::vector<char> keep(std::size_t(directions), 0);
+    // Per interval between adjacent directions: the sun's lowest and highest elevation there.
+    std::vector<double> lo(std::size_t(directions), 1e9), hi(std::size_t(directions), -1e9);
     const double step = 360.0 / directions;
-    for (double decl = -kObliquityDeg; decl <= kObliquityDeg + 1e-9; decl += 0.5) {
+    for (double decl = -kObliquityDeg; decl <= kObliquityDeg + 1e-9; decl += 0.25) {
         const double d = decl * deg;
-        for (double hour = -180.0; hour < 180.0; hour += 0.25) {
+        for (double hour = -180.0; hour < 180.0; hour += 0.05) {
             const double h = hour * deg;
             const double sin_el = std::sin(phi) * std::sin(d) + std::cos(phi) * std::cos(d) * std::cos(h);
-            if (sin_el < std::sin(-2.0 * deg)) continue;
+            const double el = std::asin(std::clamp(sin_el, -1.0, 1.0));
+            if (el < -2.0 * deg) continue;
             // Clockwise from north.
             double az = std::atan2(std::sin(h), std::cos(h) * std::sin(phi) - std::tan(d) * std::cos(phi)) / deg + 180.0;
             az = std::fmod(az + 360.0, 360.0);
-            const int lo = int(std::floor(az / step)) % directions;
-            keep[std::size_t(lo)] = 1;
-            keep[std::size_t((lo + 1) % directions)] = 1;
+            const std::size_t i = std::size_t(int(std::floor(az / step)) % directions);
+            lo[i] = std::min(lo[i], el), hi[i] = std::max(hi[i], el);
         }
     }
-    std::vector<int> out;
-    for (int i = 0; i < directions; ++i)
-        if (keep[std::size_t(i)]) out.push_back(i);
+    // A direction's band covers both intervals it bounds (the reader interpolates across them).
+    std::vector<SunBand> out;
+    for (int d = 0; d < directions; ++d) {
+        const std::size_t before = std::size_t((d + directions - 1) % directions), after = std::size_t(d);
+        const double l = std::min(lo[before], lo[after]), h = std::max(hi[before], hi[after]);
+        if (h < l) continue;  // the sun never shines from either side
+        out.push_back({d, l, h});
+    }
     return out;
 }
 
@@ -141,7 +149,8 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
 
     std::vector<float> w(n * std::size_t(k_count), 0.0f);
     std::vector<double> w_lo(std::size_t(k_count), 0.0), w_hi(std::size_t(k_count), 0.0);
-    double h_lo = 1e9, h_hi = -1e9;
+    const std::size_t planes = e.bands.size();
+    std::vector<double> h_lo(planes, 1e9), h_hi(planes, -1e9);
     for (std::size_t t = 0; t < n; ++t) {
         if (!valid[t]) continue;
         for (int k = 0; k < k_count; ++k) {
@@ -151,19 +160,25 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
             w[t * std::size_t(k_count) + std::size_t(k)] = float(sum);
             w_lo[std::size_t(k)] = std::min(w_lo[std::size_t(k)], sum), w_hi[std::size_t(k)] = std::max(w_hi[std::size_t(k)], sum);
         }
-        for (int d : e.planes) {
-            const double h = at(t, kLightHorizonAt + d);
-            h_lo = std::min(h_lo, h), h_hi = std::max(h_hi, h);
+        for (std::size_t j = 0; j < planes; ++j) {
+            const double h = at(t, kLightHorizonAt + e.bands[j].direction);
+            h_lo[j] = std::min(h_lo[j], h), h_hi[j] = std::max(h_hi[j], h);
         }
     }
-    h_lo = std::max(h_lo, kLowestHorizonRad);
-    h_hi = std::min(h_hi, e.max_horizon_rad);
-    if (!(h_hi > h_lo + 1e-4)) h_hi = h_lo + 1e-4;
+    // Each plane spends its 8 bits on the sun's band in its direction: a horizon below the
+    // band's foot lets every sun there through, one above its top hides it; both are clamped.
+    for (std::size_t j = 0; j < planes; ++j) {
+        const double margin = kBandMarginRad;
+        h_lo[j] = std::max({h_lo[j], e.bands[j].lowest_rad - margin, kLowestHorizonRad});
+        h_hi[j] = std::min(h_hi[j], e.bands[j].highest_rad + margin);
+        if (!(h_hi[j] > h_lo[j] + 1e-4)) h_hi[j] = h_lo[j] + 1e-4;
+    }
 
     const int size = px.size;
     const int width = std::max(size, tx.width);
-    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 1, std::uint8_t(k_count), std::uint8_t(e.directions),
-                                        std::uint8_t(e.planes.size())};
+    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 1, std::uint8_t(k_count)};
+    put_u16(header, e.directions);
+    put_u16(header, int(planes));
     put_u16(header, size);
     put_u16(header, 0);  // header rows, below
     put_u16(header, width);
@@ -172,9 +187,9 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     put_u32(header, std::uint32_t(tx.level_width)), put_u32(header, std::uint32_t(tx.level_height));
     put_u32(header, std::uint32_t(tx.x0)), put_u32(header, std::uint32_t(tx.y0));
     put_u16(header, tx.width), put_u16(header, tx.height);
-    for (int d : e.planes) header.push_back(std::uint8_t(d));
+    for (const SunBand& b : e.bands) put_u16(header, b.direction);
     while (header.size() % 4) header.push_back(0);
-    put_float(header, h_lo), put_float(header, h_hi);
+    for (std::size_t j = 0; j < planes; ++j) put_float(header, h_lo[j]), put_float(header, h_hi[j]);
     for (double m : mean) put_float(header, m);
     for (int k = 0; k < k_count; ++k)
         for (int i = 0; i < kLightTransfer; ++i) put_float(header, basis[i][order[std::size_t(k)]]);
@@ -183,9 +198,9 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     for (float v : px.x) put_float(header, v);
     for (float v : px.y) put_float(header, v);
     const int header_rows = int((header.size() + std::size_t(width) - 1) / std::size_t(width));
-    header[10] = std::uint8_t(header_rows & 255), header[11] = std::uint8_t(header_rows >> 8);
+    header[12] = std::uint8_t(header_rows & 255), header[13] = std::uint8_t(header_rows >> 8);
 
-    const int texel_planes = 4 + k_count + int(e.planes.size());
+    const int texel_planes = 4 + k_count + int(planes);
     const std::size_t rows = std::size_t(header_rows) + std::size_t(size) + std::size_t(texel_planes) * std::size_t(tx.height);
     std::vector<std::uint8_t> image(rows * std::size_t(width), 0);
     std::copy(header.begin(), header.end(), image.begin());
@@ -193,10 +208,16 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     for (int r = 0; r < size; ++r)
         for (int c = 0; c < size; ++c)
             coverage[std::size_t(r) * std::size_t(width) + std::size_t(c)] = px.covered[std::size_t(r) * std::size_t(size) + std::size_t(c)] ? 255 : 0;
-    // Texel t of plane k.
+    // Texel t of plane k. The horizon planes interleave by texel row (row r of direction j is
+    // image row r * P + j of their block), so PNG's Up filter predicts each horizon from the
+    // same texel's in the previous direction: neighbouring azimuths differ little.
+    const int first_horizon = 4 + k_count;
     auto texel = [&](int k, std::size_t t) -> std::uint8_t& {
-        const std::size_t row = std::size_t(header_rows) + std::size_t(size) + std::size_t(k) * std::size_t(tx.height) +
-                                t / std::size_t(tx.width);
+        const std::size_t r = t / std::size_t(tx.width);
+        const std::size_t row = std::size_t(header_rows) + std::size_t(size) +
+                                (k < first_horizon ? std::size_t(k) * std::size_t(tx.height) + r
+                                                   : std::size_t(first_horizon) * std::size_t(tx.height) +
+                                                         r * planes + std::size_t(k - first_horizon));
         return image[row * std::size_t(width) + t % std::size_t(tx.width)];
     };
     for (std::size_t t = 0; t < n; ++t) {
@@ -211,8 +232,8 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
         texel(3, t) = std::uint8_t(((qx & 15) << 4) | (qy & 15));
         for (int k = 0; k < k_count; ++k)
             texel(4 + k, t) = quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
-        for (std::size_t j = 0; j < e.planes.size(); ++j)
-            texel(4 + k_count + int(j), t) = quantise(at(t, kLightHorizonAt + e.planes[j]), h_lo, h_hi);
+        for (std::size_t j = 0; j < planes; ++j)
+            texel(4 + k_count + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j]);
     }
     raster::PngEncoding encoding;
     encoding.deflater = raster::Deflater::libdeflate;

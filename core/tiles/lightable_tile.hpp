@@ -18,14 +18,16 @@
 //       each (2 planes), their low 4 bits (east << 4 | north); up = sqrt(1 - e^2 - n^2)
 //     K planes: the window's principal components of the diffuse transfer T_d (9 SH coefficients,
 //       bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k + q / 255 (hi_k - lo_k)
-//     P planes: horizon elevations at the stored azimuths, h = lo + q / 255 (hi - lo) radians;
-//       azimuths the sun never reaches at the tile set's latitude are left out (their neighbours
-//       are kept for interpolation)
-// Header (little-endian): "TSL1", u8 version 1, u8 K, u8 D (light directions: azimuth of
-// direction d = 360 d / D degrees clockwise from north), u8 P, u16 size, u16 header rows, u16 W,
+//     P planes: horizon elevations at the stored azimuths, h = lo_p + q / 255 (hi_p - lo_p)
+//       radians, clamped to the sun's band in that direction (sun_bands; a horizon below it
+//       lets every sun there through, one above it hides every sun there), so most of a plane is
+//       one value; azimuths the sun never reaches at the tile set's latitude are left out
+// Header (little-endian): "TSL1", u8 version 1, u8 K, u16 D (light directions: azimuth of
+// direction d = 360 d / D degrees clockwise from north), u16 P, u16 size, u16 header rows, u16 W,
 // u8 separable, u8 grid step, u32 level width, u32 level height, u32 window x0, u32 window y0,
-// u16 window width, u16 window height, P bytes (the stored directions, ascending), zero padding
-// to 4 bytes, then float32: horizon lo, hi; mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
+// u16 window width, u16 window height, P u16 (the stored directions, ascending), zero padding
+// to 4 bytes, then float32: P pairs (horizon lo, hi of each plane: the tile's range within the
+// sun's band in that direction, clamped there); mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
 // pixels sample the level, in level texel-centre coordinates minus the window's origin:
 //   separable (geographic and Web Mercator DEMs): x of each column [size], y of each row [size],
 //     clamped to the level as relief clamps them
@@ -45,18 +47,24 @@ inline constexpr int kLightTransfer = 9;
 inline constexpr int kLightHorizonAt = kLightTransferAt + kLightTransfer;
 inline constexpr int lightable_channels(int directions) { return kLightHorizonAt + directions; }
 
+// Where the sun can be seen from one light direction: its lowest and highest elevation (radians)
+// over a year in the two intervals between the direction and its neighbours.
+struct SunBand {
+    int direction = 0;
+    double lowest_rad = 0, highest_rad = 0;
+};
+
 struct LightableEncoding {
     int directions = 32;
     int components = 4;               // principal components of the transfer kept (1..9)
-    std::vector<int> planes;          // stored directions, ascending (sun_directions)
-    double max_horizon_rad = 1.5708;  // horizons above it always hide the sun (clamped)
+    std::vector<struct SunBand> bands;  // stored directions, ascending (sun_bands)
     int deflate_level = 9;            // libdeflate's: tiles are made once and fetched often
 };
 
-// The directions whose horizons can hide the sun at `latitude_deg` on some day of a year (the
-// sun above -2 degrees between them), each with its neighbours (the reader interpolates between
-// adjacent directions).
-std::vector<int> sun_directions(double latitude_deg, int directions);
+// The directions the sun shines from at `latitude_deg` on some day of a year (above -2 degrees
+// on either side of the direction: the reader interpolates between adjacent directions), each
+// with the sun's band there.
+std::vector<SunBand> sun_bands(double latitude_deg, int directions);
 // The sun's highest elevation over a year at a latitude, radians.
 double max_sun_elevation_rad(double latitude_deg);
 

@@ -60,8 +60,8 @@ void check_tile_job(const TileJob& job) {
     if (job.level_bias < -4 || job.level_bias > 4) throw QuantityError(Quantity::level_bias, "", "-4..4 levels");
     if (!(s.relief_contrast >= 0.25 && s.relief_contrast <= 4))
         throw QuantityError(Quantity::relief_contrast, "", "a number from 0.25 to 4 (1 = the physical shading)");
-    if (s.style->data_tile() && (s.light_directions < 8 || s.light_directions > 128 || s.light_directions % 4))
-        throw InputError("--light-directions: a multiple of 4 from 8 to 128");
+    if (s.style->data_tile() && (s.light_directions < 8 || s.light_directions > 1024 || s.light_directions % 4))
+        throw InputError("--light-directions: a multiple of 4 from 8 to 1024");
     if (s.style->data_tile() && (s.light_components < 1 || s.light_components > 9))
         throw InputError("--light-components: 1 to 9");
     if (s.relief_contrast != 1.0 && !s.style->takes_relief_contrast())
@@ -109,9 +109,7 @@ LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) 
     LightableEncoding e;
     e.directions = s.light_directions;
     e.components = s.light_components;
-    e.planes = sun_directions(latitude, s.light_directions);
-    // A horizon above the sun's highest elevation hides it whatever the day (with the disc's radius).
-    e.max_horizon_rad = max_sun_elevation_rad(latitude) + 0.01;
+    e.bands = sun_bands(latitude, s.light_directions);
     return e;
 }
 
@@ -120,7 +118,7 @@ std::string lightable_json(const dem::Dem& dem, const TileShading& s) {
     const std::vector<float> z(64 * 64, 0.0f);
     const terrain::HeightGrid like = terrain::HeightGrid::uniform(64, 64, z, 30.0, 30.0);
     return lightable_json(s, {site.longitude_deg, site.latitude_deg, site.height_m}, flat_diffuse_transfer(like, s),
-                          lightable_encoding(dem, s).planes);
+                          lightable_encoding(dem, s).bands);
 }
 
 std::string dem_identity(const dem::Dem& dem) {

@@ -134,8 +134,8 @@ struct TileShading {
     double relief_contrast = 1.0;
     // lightable: horizon azimuths stored per pixel (the sun's visibility at any instant) and the
     // principal components a tile keeps of the diffuse transfer (lightable_tile.hpp).
-    int light_directions = 32;
-    int light_components = 4;
+    int light_directions = 128;
+    int light_components = 6;
     // insolation: the range's sun and the ramp (tile_insolation.hpp), set once the DEM is read.
     std::shared_ptr<const TileInsolation> insolation;
     int threads = 0;

@@ -1,6 +1,6 @@
 // Relit lightable tiles against `terrashade tiles --style relief --time T` of the same tiles
 // (docs/web-map.md, "Agreement"): for a morning, a noon and a low evening sun over the Grenoble
-// crop, every tile of a zoom is relit in Node and compared code by code with the relief tile.
+// crop, and under an overcast sky, every tile of a zoom is relit in Node and compared code by code with the relief tile.
 //   node tests/web/relight_agreement_test.mjs TERRASHADE DEM TMPDIR [ZOOM]
 // Prints the differences' percentiles per instant and fails if they exceed the bounds below.
 import {execFileSync} from 'node:child_process';
@@ -16,13 +16,14 @@ if (!tmp) {
   process.exit(2);
 }
 const zoom = Number(zoomText);
-const instants = ['2024-06-21T05:30Z', '2024-06-21T11:30Z', '2024-06-21T18:30Z'];
-// Bounds (sRGB codes) at the measured values (p90 5, 1, 4; p99 35, 4, 23 at zoom 11): the median
-// pixel agrees, the rims of cast shadows do not: the reader takes the sun's visibility from the
-// horizons resampled to its pixel, relief from its sun sweep per texel, then resamples the shade.
-// More light directions barely move it (p99 29 at 128): docs/web-map.md, "Agreement".
-// LIGHT_ARGS="--light-directions 64 ..." passes options to the lightable run (studies).
-const bounds = {p50: 1, p90: 6, mean: 2.5};
+const instants = [['2024-06-21T05:30Z', 'clear'], ['2024-06-21T11:30Z', 'clear'], ['2024-06-21T18:30Z', 'clear'],
+                  ['2024-06-21T09:00Z', 'overcast']];
+// Bounds in sRGB codes, at the measured values with the default light directions (128) and
+// components (6) at zoom 10: p99 3, 1, 2; the issue's goal is 2. What remains is relief's sun
+// sweep against the reader's horizons interpolated between azimuths at shadow rims
+// (docs/web-map.md, "Agreement"). LIGHT_ARGS="--light-directions 64 ..." passes options to the
+// lightable run (studies).
+const bounds = {p50: 0, p90: 1, p99: 3, mean: 0.3};
 
 fs.mkdirSync(tmp, {recursive: true});
 const work = fs.mkdtempSync(path.join(tmp, 'relight-'));
@@ -36,11 +37,11 @@ try {
   const tiles = [];
   for (const x of fs.readdirSync(path.join(lightable, `${zoom}`)))
     for (const y of fs.readdirSync(path.join(lightable, `${zoom}`, x))) tiles.push(`${zoom}/${x}/${y}`);
-  for (const when of instants) {
-    const relief = path.join(work, `relief-${when.replace(/:/g, '')}`);
-    run(['tiles', dem, '--zoom', `${zoom}`, '--style', 'relief', '--time', when, '--out', relief]);
+  for (const [when, sky] of instants) {
+    const relief = path.join(work, `relief-${sky}-${when.replace(/:/g, '')}`);
+    run(['tiles', dem, '--zoom', `${zoom}`, '--style', 'relief', '--time', when, '--sky', sky, '--out', relief]);
     const sun = sunPosition(new Date(when), site);
-    const light = lightFor(meta, sun);
+    const light = lightFor(meta, sun, sky);
     const diffs = [];
     let alpha = 0;
     for (const t of tiles) {
@@ -57,9 +58,9 @@ try {
     const q = (p) => diffs[Math.min(diffs.length - 1, Math.floor(p * diffs.length))];
     const mean = diffs.reduce((s, v) => s + v, 0) / diffs.length;
     const r = {p50: q(0.5), p90: q(0.9), p99: q(0.99), max: diffs[diffs.length - 1], mean: +mean.toFixed(3)};
-    console.log(`${when}: sun ${sun.azimuthDeg.toFixed(1)}/${sun.elevationDeg.toFixed(1)} deg, ${diffs.length} pixels of ` +
+    console.log(`${when} ${sky}: sun ${sun.azimuthDeg.toFixed(1)}/${sun.elevationDeg.toFixed(1)} deg, ${diffs.length} pixels of ` +
                 `${tiles.length} tiles, |relit - relief| codes: ${JSON.stringify(r)}, coverage differs at ${alpha}`);
-    if (alpha || r.p50 > bounds.p50 || r.p90 > bounds.p90 || r.mean > bounds.mean) {
+    if (alpha || r.p50 > bounds.p50 || r.p90 > bounds.p90 || r.p99 > bounds.p99 || r.mean > bounds.mean) {
       console.error(`FAIL ${when}: beyond ${JSON.stringify(bounds)} or coverage differs`);
       failed = true;
     }

@@ -20,31 +20,41 @@ export function readLightableTile(img) {
     throw new Error('not a terrashade lightable tile (no TSL1 header)');
   const u16 = (i) => d[i] | (d[i + 1] << 8);
   const u32 = (i) => (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)) >>> 0;
-  const K = d[5], D = d[6], P = d[7], S = u16(8), headerRows = u16(10);
-  const separable = d[14] === 1, step = d[15];
-  const levelW = u32(16), levelH = u32(20), x0 = u32(24), y0 = u32(28), tw = u16(32), th = u16(34);
-  const dirs = Array.from(d.subarray(36, 36 + P));
-  const start = (36 + P + 3) & ~3;
+  const K = d[5], D = u16(6), P = u16(8), S = u16(10), headerRows = u16(12);
+  const separable = d[16] === 1, step = d[17];
+  const levelW = u32(18), levelH = u32(22), x0 = u32(26), y0 = u32(30), tw = u16(34), th = u16(36);
+  const dirs = Array.from({length: P}, (_, j) => u16(38 + 2 * j));
+  const start = (38 + 2 * P + 3) & ~3;
   const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
-  const floats = new Float32Array(2 + 9 + 9 * K + 2 * K + nodes);
+  const floats = new Float32Array(2 * P + 9 + 9 * K + 2 * K + nodes);
   const view = new DataView(d.buffer, d.byteOffset + start, 4 * floats.length);
   for (let i = 0; i < floats.length; ++i) floats[i] = view.getFloat32(4 * i, true);
-  const hLo = floats[0], hHi = floats[1];
-  const mean = floats.subarray(2, 11), basis = floats.subarray(11, 11 + 9 * K);
-  const wLo = floats.subarray(11 + 9 * K, 11 + 10 * K), wHi = floats.subarray(11 + 10 * K, 11 + 11 * K);
-  const coords = floats.subarray(11 + 11 * K);
+  // Each stored direction's horizon range (radians), by plane.
+  const hLo = new Float32Array(P), hHi = new Float32Array(P);
+  for (let j = 0; j < P; ++j) hLo[j] = floats[2 * j], hHi[j] = floats[2 * j + 1];
+  const f0 = 2 * P;
+  const mean = floats.subarray(f0, f0 + 9), basis = floats.subarray(f0 + 9, f0 + 9 + 9 * K);
+  const wLo = floats.subarray(f0 + 9 + 9 * K, f0 + 9 + 10 * K), wHi = floats.subarray(f0 + 9 + 10 * K, f0 + 9 + 11 * K);
+  const coords = floats.subarray(f0 + 9 + 11 * K);
   // Plane rows: pixels' coverage (S rows), then the texel planes (th rows each), W bytes a row.
   const rowOf = (r) => (headerRows + r) * W;
   const coverage = new Uint8Array(S * S);
   for (let r = 0; r < S; ++r) coverage.set(d.subarray(rowOf(r), rowOf(r) + S), r * S);
   const n = tw * th;
+  // Planes below 4 + K are th rows each; the horizon planes interleave by texel row (row r of
+  // stored direction j is row r * P + j of their block).
   const texelPlane = (k) => {
-    const out = new Uint8Array(n), first = S + k * th;
-    for (let r = 0; r < th; ++r) out.set(d.subarray(rowOf(first + r), rowOf(first + r) + tw), r * tw);
+    const out = new Uint8Array(n);
+    for (let r = 0; r < th; ++r) {
+      const row = k < 4 + K ? S + k * th + r : S + (4 + K) * th + r * P + (k - 4 - K);
+      out.set(d.subarray(rowOf(row), rowOf(row) + tw), r * tw);
+    }
     return out;
   };
-  const planeOf = new Int16Array(D).fill(-1);
-  dirs.forEach((dir, j) => (planeOf[dir] = 4 + K + j));
+  // direction -> its index among the stored ones (-1: the sun never shines from there)
+  const stored = new Int32Array(D).fill(-1);
+  dirs.forEach((dir, j) => (stored[dir] = j));
+  const planeOf = (dir) => (stored[dir] >= 0 ? 4 + K + stored[dir] : -1);
   return {size: S, n, K, D, dirs, hLo, hHi, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
@@ -126,16 +136,20 @@ const SRGB = (() => {
 
 // Per texel of the tile's window: the sun's visible fraction (0..1) for `light`.
 export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
-  const {n, D, planeOf, hLo, hHi} = tile;
+  const {n, D} = tile;
   const u = ((light.azimuthDeg % 360) + 360) % 360 / (360 / D);
   const d0 = Math.floor(u) % D, d1 = (d0 + 1) % D, t = u - Math.floor(u);
-  const p0 = planeOf[d0], p1 = planeOf[d1];
-  const scale = (hHi - hLo) / 255;
-  const h0 = p0 >= 0 ? tile.plane(p0) : null, h1 = p1 >= 0 ? tile.plane(p1) : null;
+  // A direction not stored is one the sun never shines from: nothing there hides it.
+  const side = (d) => {
+    const p = tile.planeOf(d);
+    if (p < 0) return null;
+    const j = p - 4 - tile.K;
+    return {q: tile.plane(p), lo: tile.hLo[j], scale: (tile.hHi[j] - tile.hLo[j]) / 255};
+  };
+  const a = side(d0), b = side(d1);
   for (let k = 0; k < n; ++k) {
-    // A direction not stored is one the sun never shines from: nothing there hides it.
-    const a = h0 ? hLo + h0[k] * scale : -Math.PI / 2, b = h1 ? hLo + h1[k] * scale : -Math.PI / 2;
-    out[k] = discVisible(a + t * (b - a), light.el, light.radius);
+    const ha = a ? a.lo + a.q[k] * a.scale : -Math.PI / 2, hb = b ? b.lo + b.q[k] * b.scale : -Math.PI / 2;
+    out[k] = discVisible(ha + t * (hb - ha), light.el, light.radius);
   }
   return out;
 }

@@ -43,7 +43,9 @@ export function readLightableTile(img) {
   const n = tw * th;
   // Planes below 4 + K are th rows each; the horizon planes interleave by texel row (row r of
   // stored direction j is row r * P + j of their block).
-  const texelPlane = (k) => {
+  const cache = [];
+  const texelPlane = (k) => (cache[k] ??= copyPlane(k));  // copied out once, kept
+  const copyPlane = (k) => {
     const out = new Uint8Array(n);
     for (let r = 0; r < th; ++r) {
       const row = k < 4 + K ? S + k * th + r : S + (4 + K) * th + r * P + (k - 4 - K);
@@ -225,27 +227,41 @@ function taps(v, origin, levelSize, out) {
   for (let k = 0; k < 4; ++k) out.i[k] = Math.min(Math.max(i0 - 1 + k, 0), levelSize - 1) - origin;
 }
 
-// Resamples a per-texel value of the window (e.g. texelGrey) to the tile's pixels by Catmull-Rom,
-// as relief does: NaN where a tap is not valid or the pixel is not covered.
-export function resampleToPixels(tile, texels, out = new Float32Array(tile.size * tile.size)) {
+// Each covered pixel's 16 Catmull-Rom taps (window indices) and weights, found once per tile: a
+// slider move then only multiplies and adds.
+function pixelTaps(tile) {
+  if (tile.taps) return tile.taps;
   const {size, tw, coverage} = tile;
+  const index = new Int32Array(size * size * 16), weight = new Float32Array(size * size * 16);
   const tx = {i: new Int32Array(4), w: new Float64Array(4)}, ty = {i: new Int32Array(4), w: new Float64Array(4)};
   for (let j = 0; j < size; ++j)
     for (let i = 0; i < size; ++i) {
       const k = j * size + i;
-      if (!coverage[k]) { out[k] = NaN; continue; }
+      if (!coverage[k]) continue;
       const p = pixelAt(tile, i, j);
       taps(p.x, tile.x0, tile.levelW, tx);
       taps(p.y, tile.y0, tile.levelH, ty);
-      let sum = 0;
-      for (let b = 0; b < 4; ++b) {
-        const row = ty.i[b] * tw;
-        let acc = 0;
-        for (let a = 0; a < 4; ++a) acc += tx.w[a] * texels[row + tx.i[a]];
-        sum += ty.w[b] * acc;
-      }
-      out[k] = sum;
+      for (let b = 0; b < 4; ++b)
+        for (let a = 0; a < 4; ++a) {
+          index[16 * k + 4 * b + a] = ty.i[b] * tw + tx.i[a];
+          weight[16 * k + 4 * b + a] = ty.w[b] * tx.w[a];
+        }
     }
+  tile.taps = {index, weight};
+  return tile.taps;
+}
+
+// Resamples a per-texel value of the window (e.g. texelGrey) to the tile's pixels by Catmull-Rom,
+// as relief does: NaN where a tap is not valid or the pixel is not covered.
+export function resampleToPixels(tile, texels, out = new Float32Array(tile.size * tile.size)) {
+  const {size, coverage} = tile;
+  const {index, weight} = pixelTaps(tile);
+  for (let k = 0, n = size * size; k < n; ++k) {
+    if (!coverage[k]) { out[k] = NaN; continue; }
+    let sum = 0;
+    for (let t = 16 * k, e = t + 16; t < e; ++t) sum += weight[t] * texels[index[t]];
+    out[k] = sum;
+  }
   return out;
 }
 

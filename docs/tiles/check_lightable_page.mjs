@@ -7,7 +7,9 @@
 //       `terrashade tiles --style relief --time T` of that tile: p99 of |difference| in codes;
 //   (b) moves the time 5 times and prints the median time to relight and draw the visible tiles;
 //   (c) with LIGHTABLE_SCREENSHOTS=DIR, saves a screenshot per instant there;
-//   (d) fails on a page error or a request off 127.0.0.1.
+//   (d) fails on a page error or a request off 127.0.0.1;
+// and that the slider does not refetch tiles, a drag ends at its last instant, play runs, the
+// second layer draws, the attribution shows, and from file:// the page says how to serve it.
 // LIGHTABLE_PAGE_QUERY=update=settiles&encode=png adds to the page's query (to time its other ways).
 // Exit 0 if all holds, 1 with one line otherwise.
 //   node docs/tiles/check_lightable_page.mjs TERRASHADE DEM
@@ -15,7 +17,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { launchHeadlessChromium } from './headless_chromium.mjs';
 import { serve } from './serve.mjs';
 import { decodePng } from '../../web/lightable/png.mjs';
@@ -72,7 +74,7 @@ try {
   const outside = [];
   await page.route('**/*', (route) => {
     const u = route.request().url();
-    if (u.startsWith('http://127.0.0.1:') || u.startsWith('blob:') || u.startsWith('data:')) return route.continue();
+    if (u.startsWith('http://127.0.0.1:') || u.startsWith('blob:') || u.startsWith('data:') || u.startsWith('file:')) return route.continue();
     outside.push(u);
     return route.abort();
   });
@@ -83,9 +85,10 @@ try {
                              { timeout: 60000 });
   const first = await page.evaluate(() => window.relitStats);
   if (first.problem) throw new Error(`the page says: ${first.problem}`);
-  console.log(`first view: ${first.tilesRelit} tiles fetched, decoded and relit in ${first.lastRelightMs} ms`);
+  console.log(`first view: ${first.tilesRelit} tiles (${tileFetches} requests) fetched, decoded and relit in ${first.lastRelightMs} ms`);
 
   const fetchedFirst = tileFetches;
+  if (fetchedFirst < 16) throw new Error(`only ${fetchedFirst} data tiles fetched for a view of 16`);
 
   // (a) agreement with relief, on a tile inside the view whose pixels are all covered.
   const candidates = [];
@@ -190,13 +193,18 @@ try {
   await page.waitForFunction(() => window.map.getSource('sunhours').loaded() && window.map.loaded(), null, { timeout: 60000 });
   console.log(`hours of direct sun: the view's tiles computed and drawn in ${Date.now() - t0} ms`);
   if (shots) await page.screenshot({ path: join(shots, 'lightable-sunhours.png') });
+  const problemBefore = await page.evaluate(() => window.relitStats.problem);
   const attribution = await page.evaluate(() => document.querySelector('.maplibregl-ctrl-attrib')?.textContent || '');
-  const problem = await page.evaluate(() => window.relitStats.problem);
+  const pageErrors = errors.length;
+  // From file://, the page must say how to serve it.
+  await page.goto(pathToFileURL(join(repo, 'web/lightable/map.html')).href);
+  const fileNotice = await page.evaluate(() => window.relitStats?.problem || '');
   console.log(`p99 per instant: ${p99s.join(', ')} codes; attribution "${attribution}"`);
-  if (errors.length) failure = `page error: ${errors[0]}`;
-  else if (problem) failure = `the page says: ${problem}`;
+  if (pageErrors) failure = `page error: ${errors[0]}`;
+  else if (problemBefore) failure = `the page says: ${problemBefore}`;
   else if (outside.length) failure = `the page asked for ${outside[0]} (off 127.0.0.1)`;
   else if (meta.attribution && !attribution.includes(meta.attribution)) failure = `no attribution "${meta.attribution}" on the map`;
+  else if (!fileNotice.includes('serve')) failure = 'opened from file://, the page does not say how to serve it';
 } catch (err) {
   failure = String(err.message || err).split('\n')[0];
 } finally {

@@ -7,19 +7,21 @@
 //        ?sky=clear|overcast  ?maplibre=URL_PREFIX of maplibre-gl's dist/
 //        ?update=refresh|settiles (how a change reaches MapLibre; default refresh, the faster)
 //        ?encode=bitmap|png (what the protocol returns; default bitmap, the faster)
+//        ?workers=N (module workers sharing the tile work; default 0: all on the page's thread)
 // The view is in the URL's hash (#zoom/lat/lon), else tiles.json's centre.
 // For tests: window.relitStats, window.setInstant(iso), window.relitTile(z, x, y).
-import {decodePng, encodePng} from './png.mjs';
-import {readTile, readJsonBeside} from './tileset.mjs';
-import {readLightableTile, lightFor, relightTile, sunHoursTexels, resampleToPixels} from './relight.mjs';
+import {encodePng} from './png.mjs';
+import {readJsonBeside} from './tileset.mjs';
+import {lightFor} from './relight.mjs';
 import {sunPosition} from './sun_position.mjs';
+import {makeEngine} from './relight_worker.mjs';
 
 const query = new URLSearchParams(location.search);
 const $ = (id) => document.getElementById(id);
 const problem = (text) => { $('problem').textContent = text; window.relitStats.problem = text; };
 
 // lastRelightMs: from a change until MapLibre is idle with every visible tile relit and drawn;
-// relightComputeMs: the part of it spent in relightTile.
+// relightComputeMs: the time spent in relightTile (summed over the workers, which run at once).
 window.relitStats = {lastRelightMs: null, tilesRelit: 0, relightComputeMs: 0, ready: false, changes: 0, problem: null};
 
 // The tile set's folder, absolute, without the trailing slash tileset.mjs adds itself.
@@ -28,6 +30,38 @@ let mlPrefix = new URL(query.get('maplibre') || '../../docs/tiles/node_modules/m
 if (!mlPrefix.endsWith('/')) mlPrefix += '/';
 const updateMode = query.get('update') === 'settiles' ? 'settiles' : 'refresh';
 const encodeMode = query.get('encode') === 'png' ? 'png' : 'bitmap';
+// Measured on 2 cores under SwiftShader (docs/tiles/check_lightable_page.mjs), the page's own thread
+// relit 16 tiles fastest: workers compete with the renderer. More cores are not measured yet.
+const workerCount = query.has('workers') ? Math.max(0, Math.min(16, +query.get('workers') || 0)) : 0;
+
+// The tile work on this thread (n = 0) or spread over n workers by the tile's z/x/y.
+function makeWork(n, tileset, meta) {
+  if (n === 0) return makeEngine(tileset, meta);
+  const workers = [], waiting = new Map();
+  let next = 0;
+  for (let i = 0; i < n; ++i) {
+    const w = new Worker(new URL('./relight_worker.mjs', import.meta.url), {type: 'module'});
+    w.onmessage = ({data}) => {
+      const p = waiting.get(data.id);
+      waiting.delete(data.id);
+      if (data.error) p.reject(new Error(data.error));
+      else p.resolve(data.result);
+    };
+    w.onerror = (e) => problem(`tile worker: ${e.message || 'failed to start'}`);
+    w.postMessage({type: 'init', tileset, meta});
+    workers.push(w);
+  }
+  const call = (message) => new Promise((resolve, reject) => {
+    const id = ++next;
+    waiting.set(id, {resolve, reject});
+    const {z, x, y} = message;
+    workers[(((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)) >>> 0) % n].postMessage({...message, id});
+  });
+  return {
+    relight: (z, x, y, light) => call({type: 'relight', z, x, y, light}),
+    hours: (z, x, y, date) => call({type: 'hours', z, x, y, date}),
+  };
+}
 
 // ---- the instant ------------------------------------------------------------------------------
 
@@ -76,11 +110,7 @@ function loadScript(src) {
 }
 
 async function start() {
-  if (location.protocol === 'file:') {
-    problem('Opened from file://: serve the folder over HTTP, e.g. node docs/tiles/serve.mjs 8000 . ' +
-            'or python3 -m http.server, then open http://127.0.0.1:8000/web/lightable/map.html');
-    return;
-  }
+  if (location.protocol === 'file:') return;    // map.html says how to serve it
   const css = document.createElement('link');
   css.rel = 'stylesheet';
   css.href = mlPrefix + 'maplibre-gl.css';
@@ -100,19 +130,9 @@ async function start() {
   if (tj.name) $('title').textContent = `${tj.name}: relief by time of day`;
   document.title = `terrashade: ${tj.name || 'lightable tiles'} by time of day`;
 
-  // The data tiles, decoded once: z/x/y -> Promise of the tile (null where the set has none).
-  const tiles = new Map();
-  const getTile = (z, x, y) => {
-    const key = `${z}/${x}/${y}`;
-    let p = tiles.get(key);
-    if (!p) {
-      p = readTile(tileset, z, x, y).then(async (bytes) => bytes ? readLightableTile(await decodePng(bytes)) : null);
-      p.catch(() => tiles.delete(key));
-      tiles.set(key, p);
-      if (tiles.size > 400) tiles.delete(tiles.keys().next().value);   // the oldest
-    }
-    return p;
-  };
+  // The tile work (relight_worker.mjs): in `workers` module workers, each keeping the tiles whose
+  // z/x/y hash to it, or on this thread with ?workers=0.
+  const engine = makeWork(workerCount, tileset, meta);
   const parse = (url) => {
     const m = /^\w+:\/\/(\d+)\/(\d+)\/(\d+)/.exec(url);
     if (!m) throw new Error(`bad tile URL ${url}`);
@@ -128,20 +148,17 @@ async function start() {
   let relitThisChange = 0, relightMsThisChange = 0;   // tiles relit since the change, ms in relightTile
   maplibregl.addProtocol('relit', async (params) => {
     const {z, x, y, key} = parse(params.url);
-    const tile = await getTile(z, x, y);
-    if (!tile) return blank();
     const {light, instantMs, sky} = state;
-    const t0 = performance.now();
-    const rgba = relightTile(tile, light, new Uint8ClampedArray(tile.size * tile.size * 4), opts);
-    relightMsThisChange += performance.now() - t0;
-    lastRelit.set(key, {rgba, instantMs, sky});
+    const r = await engine.relight(z, x, y, light);
+    if (!r) return blank();
+    relightMsThisChange += r.ms;
+    lastRelit.set(key, {rgba: r.rgba, instantMs, sky});
     if (lastRelit.size > 400) lastRelit.delete(lastRelit.keys().next().value);
     relitThisChange += 1;
-    return toImage(rgba, tile.size);
+    return toImage(r.rgba, r.size);
   });
 
   // sunhours://z/x/y?d=DATE: hours of direct sun on the day, a colour ramp at alpha 0.6.
-  const hoursCache = new Map();
   const RAMP = [[0, [48, 18, 59]], [0.25, [50, 136, 189]], [0.5, [102, 194, 165]], [0.75, [254, 224, 139]], [1, [215, 48, 39]]];
   const rampAt = (t) => {
     t = Math.min(1, Math.max(0, t));
@@ -159,23 +176,17 @@ async function start() {
   maplibregl.addProtocol('sunhours', async (params) => {
     const {z, x, y, key} = parse(params.url);
     const date = /[?&]d=(\d{4}-\d\d-\d\d)/.exec(params.url)?.[1] || state.date;
-    const tile = await getTile(z, x, y);
-    if (!tile) return blank();
-    const ck = `${date}|${key}`;
-    let hours = hoursCache.get(ck);
-    if (!hours) {
-      hours = resampleToPixels(tile, sunHoursTexels(tile, meta, new Date(`${date}T00:00Z`), sunAt, 10));
-      hoursCache.set(ck, hours);
-      if (hoursCache.size > 200) hoursCache.delete(hoursCache.keys().next().value);
-    }
+    const r = await engine.hours(z, x, y, date);
+    if (!r) return blank();
+    const {hours, size} = r;
     const top = dayHours(date);
-    const rgba = new Uint8ClampedArray(tile.size * tile.size * 4);
+    const rgba = new Uint8ClampedArray(size * size * 4);
     for (let k = 0; k < hours.length; ++k) {
       if (Number.isNaN(hours[k])) continue;
       const c = rampAt(hours[k] / top);
       rgba[4 * k] = c[0], rgba[4 * k + 1] = c[1], rgba[4 * k + 2] = c[2], rgba[4 * k + 3] = 153;   // alpha 0.6
     }
-    return toImage(rgba, tile.size);
+    return toImage(rgba, size);
   });
 
   // ---- the map --------------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include "core/fly/bitmap_font.hpp"
 #include "core/solar/insolation_model.hpp"
 #include "core/tiles/svf_stretch.hpp"
+#include "core/tiles/lightable_page.hpp"
 #include "core/tiles/tile_viewer.hpp"
 #include "core/util/error.hpp"
 #include "core/util/staged_outputs.hpp"
@@ -82,11 +83,14 @@ void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, c
     StagedOutputs outputs;
     const fs::path d(dir);
     outputs.stage(d / tiles::kTileJsonFile, [&](const fs::path& tmp) { write_text(tmp, tiles::tilejson_text(info)); });
-    // Data tiles are not pictures: a map page would show their planes. Their reader is
-    // web/lightable (docs/web-map.md); its page is still to come.
-    if (lightable.empty())
+    if (lightable.empty()) {
         outputs.stage(d / tiles::kViewerPageFile,
                       [&](const fs::path& tmp) { write_text(tmp, tiles::viewer_page_html(info)); });
+    } else {
+        // Data tiles are not pictures: their page relights them (web/lightable, embedded).
+        for (auto& [name, text] : tiles::lightable_viewer_files(info))
+            outputs.stage(d / name, [&, text = text](const fs::path& tmp) { write_text(tmp, text); });
+    }
     if (legend) {
         // Wide enough for the title in the legend's bitmap font.
         const int width = std::max(320, int(legend->title.size()) * fly::kGlyphAdvance + 8);

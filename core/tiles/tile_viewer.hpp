@@ -19,7 +19,10 @@ constexpr const char* kLegendFile = "legend.png";
 constexpr const char* kLightableFile = "lightable.json";
 // Every file of the viewer: a tile job owns them as it owns its tiles (removed with its tiles,
 // copied by a merge).
-constexpr std::array<const char*, 4> kViewerFiles = {kTileJsonFile, kViewerPageFile, kLegendFile, kLightableFile};
+// A lightable set's page imports its modules from beside it (lightable_page.hpp).
+constexpr std::array<const char*, 10> kViewerFiles = {kTileJsonFile,   kViewerPageFile, kLegendFile,     kLightableFile,
+                                                      "map.mjs",       "relight.mjs",   "relight_worker.mjs",
+                                                      "png.mjs",       "tileset.mjs",   "sun_position.mjs"};
 
 // The MapLibre GL JS release the page loads: the version of docs/tiles/package-lock.json, and
 // the sha384 of its dist files there (the bytes the CDN serves for that version).

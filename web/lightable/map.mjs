@@ -99,10 +99,16 @@ function equationOfTimeMinutes(ms) {
 
 // ---- start ------------------------------------------------------------------------------------
 
-function loadScript(src) {
+// A page terrashade writes beside a tile set pins MapLibre on a CDN with Subresource Integrity
+// (window.TERRASHADE_MAPLIBRE = {js, jsIntegrity, css, cssIntegrity}); the repository's page takes
+// ?maplibre= or docs/tiles/node_modules.
+const pinned = window.TERRASHADE_MAPLIBRE;
+
+function loadScript(src, integrity) {
   return new Promise((resolve, reject) => {
     const s = document.createElement('script');
     s.src = src;
+    if (integrity) s.integrity = integrity, s.crossOrigin = 'anonymous';
     s.onload = resolve;
     s.onerror = () => reject(new Error(`could not load MapLibre from ${src} (give ?maplibre=URL_PREFIX of maplibre-gl/dist/)`));
     document.head.appendChild(s);
@@ -113,10 +119,11 @@ async function start() {
   if (location.protocol === 'file:') return;    // map.html says how to serve it
   const css = document.createElement('link');
   css.rel = 'stylesheet';
-  css.href = mlPrefix + 'maplibre-gl.css';
+  css.href = pinned ? pinned.css : mlPrefix + 'maplibre-gl.css';
+  if (pinned) css.integrity = pinned.cssIntegrity, css.crossOrigin = 'anonymous';
   document.head.appendChild(css);
   const [, tilejson, meta] = await Promise.all([
-    loadScript(mlPrefix + 'maplibre-gl.js'),
+    pinned ? loadScript(pinned.js, pinned.jsIntegrity) : loadScript(mlPrefix + 'maplibre-gl.js'),
     readJsonBeside(tileset, 'tiles.json'),
     readJsonBeside(tileset, 'lightable.json'),
   ]);

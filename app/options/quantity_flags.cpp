@@ -30,6 +30,8 @@ std::string_view flag_of(Quantity q, std::string_view command) {
         case Quantity::block_texels: return "--block-texels";
         case Quantity::block_halo: return "--block-halo";
         case Quantity::level_bias: return "--level-bias";
+        case Quantity::light_directions: return "--light-directions";
+        case Quantity::light_components: return "--light-components";
         case Quantity::resume: return "--resume";
         case Quantity::shard: return "--shard";
         case Quantity::crop: return "--crop";

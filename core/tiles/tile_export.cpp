@@ -61,9 +61,9 @@ void check_tile_job(const TileJob& job) {
     if (!(s.relief_contrast >= 0.25 && s.relief_contrast <= 4))
         throw QuantityError(Quantity::relief_contrast, "", "a number from 0.25 to 4 (1 = the physical shading)");
     if (s.style->data_tile() && (s.light_directions < 8 || s.light_directions > 1024 || s.light_directions % 4))
-        throw InputError("--light-directions: a multiple of 4 from 8 to 1024");
+        throw QuantityError(Quantity::light_directions, "", "a multiple of 4 from 8 to 1024");
     if (s.style->data_tile() && (s.light_components < 1 || s.light_components > 9))
-        throw InputError("--light-components: 1 to 9");
+        throw QuantityError(Quantity::light_components, "", "1 to 9");
     if (s.relief_contrast != 1.0 && !s.style->takes_relief_contrast())
         throw QuantityError(Quantity::relief_contrast, "", "only the relief style has it");
 }

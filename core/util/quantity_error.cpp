@@ -28,6 +28,8 @@ std::string_view quantity_words(Quantity q) {
         case Quantity::block_texels: return "block size";
         case Quantity::block_halo: return "block halo";
         case Quantity::level_bias: return "level bias";
+        case Quantity::light_directions: return "light directions";
+        case Quantity::light_components: return "light components";
         case Quantity::resume: return "resuming";
         case Quantity::shard: return "shard";
         case Quantity::crop: return "crop";

@@ -36,6 +36,8 @@ enum class Quantity {
     block_texels,
     block_halo,
     level_bias,
+    light_directions,  // a lightable tile's horizon azimuths
+    light_components,  // a lightable tile's transfer components
     resume,            // continuing an interrupted job
     shard,
     crop,

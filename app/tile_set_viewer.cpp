@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/lightable_page.hpp"
 #include "core/fly/bitmap_font.hpp"
 #include "core/solar/insolation_model.hpp"
 #include "core/tiles/svf_stretch.hpp"
-#include "core/tiles/lightable_page.hpp"
 #include "core/tiles/tile_viewer.hpp"
 #include "core/util/error.hpp"
 #include "core/util/staged_outputs.hpp"
@@ -87,8 +87,8 @@ void write_tile_viewer(const std::string& dir, const tiles::TileSetInfo& info, c
         outputs.stage(d / tiles::kViewerPageFile,
                       [&](const fs::path& tmp) { write_text(tmp, tiles::viewer_page_html(info)); });
     } else {
-        // Data tiles are not pictures: their page relights them (web/lightable, embedded).
-        for (auto& [name, text] : tiles::lightable_viewer_files(info))
+        // Data tiles are not pictures: their page relights them (app/web, embedded).
+        for (auto& [name, text] : lightable_viewer_files(info))
             outputs.stage(d / name, [&, text = text](const fs::path& tmp) { write_text(tmp, text); });
     }
     if (legend) {

@@ -6,10 +6,10 @@
 // DEM's centre (lightable.json's site).
 import fs from 'node:fs';
 import path from 'node:path';
-import {decodePng, encodePng} from '../web/lightable/png.mjs';
-import {readTile, readJsonBeside} from '../web/lightable/tileset.mjs';
-import {readLightableTile, lightFor, relightTile} from '../web/lightable/relight.mjs';
-import {sunPosition} from '../web/lightable/sun_position.mjs';
+import {decodePng, encodePng} from '../app/web/png.mjs';
+import {readTile, readJsonBeside} from '../app/web/tileset.mjs';
+import {readLightableTile, lightFor, relightTile, siteOf} from '../app/web/relight.mjs';
+import {sunPosition} from '../app/web/sun_position.mjs';
 
 function fail(message) {
   console.error(`relight_tile: ${message}`);
@@ -35,8 +35,7 @@ try {
   const bytes = await readTile(tileset, +m[1], +m[2], +m[3]);
   if (!bytes) fail(`${tileset}: no tile ${zxy}`);
   const tile = readLightableTile(await decodePng(bytes));
-  const sun = sunPosition(new Date(timeText), {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg,
-                                                heightM: meta.site.height_m});
+  const sun = sunPosition(new Date(timeText), siteOf(meta));
   const rgba = relightTile(tile, lightFor(meta, sun, sky ?? meta.sky), new Uint8Array(tile.size * tile.size * 4),
                            {contrast: meta.relief_contrast, flatGrey: meta.flat_grey});
   const pixels = tile.size * tile.size;

@@ -34,7 +34,7 @@ DEMO_PKGS=(
   glslang-tools glslang-dev spirv-tools  # GLSL -> SPIR-V at build time
   libassimp-dev             # mesh import (AC3D, glTF, OBJ, ...)
   libsqlite3-dev            # MBTiles
-  sqlite3                   # reads MBTiles for the lightable tiles' Node reader (web/lightable/tileset.mjs)
+  sqlite3                   # reads MBTiles for the lightable tiles' Node reader (app/web/tileset.mjs)
   libcli11-dev              # command-line parsing
   nlohmann-json3-dev        # JSON output (info --json)
 )

@@ -61,30 +61,36 @@ render::MaterialRaster grey_materials(std::size_t n, float albedo) {
     return m;
 }
 
-double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
-    constexpr int n = 32;
-    const std::vector<float> z(std::size_t(n) * n, 0.0f);
-    const std::size_t mid_row = std::size_t(like.height / 2);
-    const terrain::HeightGrid flat = terrain::HeightGrid::uniform(n, n, z, like.dx_m[mid_row], like.dy_m[mid_row]);
+namespace {
+
+// The centre texel of open flat ground (32 x 32 texels of dx x dy) rendered under the shading's
+// light, or its state handed to `inspect`.
+constexpr int kFlatTexels = 32;
+constexpr std::size_t kFlatCentre = std::size_t(kFlatTexels / 2) * kFlatTexels + kFlatTexels / 2;
+
+std::vector<glm::vec3> render_flat(double dx, double dy, const TileShading& s, const StateInspector* inspect = nullptr) {
+    const std::vector<float> z(std::size_t(kFlatTexels) * kFlatTexels, 0.0f);
+    const terrain::HeightGrid flat = terrain::HeightGrid::uniform(kFlatTexels, kFlatTexels, z, dx, dy);
     TileShading quiet = s;
     quiet.threads = 1;
-    const auto radiance = render_frame(flat, grey_materials(z.size(), 1.0f), quiet, nullptr);
-    return render::luminance(radiance[std::size_t(n / 2) * n + n / 2]);
+    return render_frame(flat, grey_materials(z.size(), 1.0f), quiet, nullptr, nullptr, {}, inspect);
 }
 
-std::array<float, 16> flat_diffuse_transfer(const terrain::HeightGrid& like, const TileShading& s) {
-    constexpr int n = 32;
-    const std::vector<float> z(std::size_t(n) * n, 0.0f);
+}  // namespace
+
+double flat_reference(const terrain::HeightGrid& like, const TileShading& s) {
     const std::size_t mid_row = std::size_t(like.height / 2);
-    const terrain::HeightGrid flat = terrain::HeightGrid::uniform(n, n, z, like.dx_m[mid_row], like.dy_m[mid_row]);
-    TileShading quiet = s;
-    quiet.threads = 1;
+    return render::luminance(render_flat(like.dx_m[mid_row], like.dy_m[mid_row], s)[kFlatCentre]);
+}
+
+std::array<float, 16> flat_diffuse_transfer(const TileShading& s) {
     std::array<float, 16> t{};
     const StateInspector keep = [&](const render::ShadingState& state) {
         const std::vector<float>& td = state.kept_diffuse_transfer();
-        for (int i = 0; i < 16; ++i) t[std::size_t(i)] = td[std::size_t(i) * state.texels() + std::size_t(n / 2) * n + n / 2];
+        for (int i = 0; i < 16; ++i) t[std::size_t(i)] = td[std::size_t(i) * state.texels() + kFlatCentre];
     };
-    render_frame(flat, grey_materials(z.size(), 1.0f), quiet, nullptr, nullptr, {}, &keep);
+    // The transfer of open flat ground does not depend on the spacing.
+    render_flat(30.0, 30.0, s, &keep);
     return t;
 }
 

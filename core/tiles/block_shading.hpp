@@ -72,7 +72,7 @@ std::vector<float> block_svf(const BlockShading& block);
 double flat_reference(const terrain::HeightGrid& like, const TileShading& s);
 
 // The diffuse transfer T_d of that open flat texel (what a lightable tile's reader divides by).
-std::array<float, 16> flat_diffuse_transfer(const terrain::HeightGrid& like, const TileShading& s);
+std::array<float, 16> flat_diffuse_transfer(const TileShading& s);
 
 // A window of a grid as a grid of its own, its heights (and void mask) copied into `z`/`voids`.
 terrain::HeightGrid window_grid(const terrain::HeightGrid& g, const Rect& w, std::vector<float>& z,

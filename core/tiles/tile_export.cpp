@@ -115,9 +115,7 @@ LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) 
 
 std::string lightable_json(const dem::Dem& dem, const TileShading& s) {
     const render::SunSite site = render::sun_site(dem);
-    const std::vector<float> z(64 * 64, 0.0f);
-    const terrain::HeightGrid like = terrain::HeightGrid::uniform(64, 64, z, 30.0, 30.0);
-    return lightable_json(s, {site.longitude_deg, site.latitude_deg, site.height_m}, flat_diffuse_transfer(like, s),
+    return lightable_json(s, {site.longitude_deg, site.latitude_deg, site.height_m}, flat_diffuse_transfer(s),
                           lightable_encoding(dem, s).bands);
 }
 

@@ -1,4 +1,4 @@
-// The time-of-day page (web/lightable/map.html) in headless Chromium (Debian's /usr/bin/chromium,
+// The time-of-day page (app/web/map.html) in headless Chromium (Debian's /usr/bin/chromium,
 // driven by playwright-core): makes a lightable tile set of the DEM at zooms 9-11 with the built
 // terrashade, serves the repository (the page, its modules, MapLibre in docs/tiles/node_modules)
 // and the tile set on 127.0.0.1, refuses any other request, opens the page on 16 tiles of zoom 10
@@ -21,7 +21,7 @@ import { join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { launchHeadlessChromium } from './headless_chromium.mjs';
 import { serve } from './serve.mjs';
-import { decodePng } from '../../web/lightable/png.mjs';
+import { decodePng } from '../../app/web/png.mjs';
 
 const [terrashade, dem] = process.argv.slice(2);
 if (!terrashade || !dem) {
@@ -64,7 +64,7 @@ try {
   const lat = Math.atan(Math.sinh(Math.PI * (1 - 2 * ty / 2 ** ZOOM))) * 180 / Math.PI;
   // LIGHTABLE_PAGE_QUERY (e.g. update=settiles&encode=png) adds to the page's query: to compare its ways.
   const extra = process.env.LIGHTABLE_PAGE_QUERY ? `&${process.env.LIGHTABLE_PAGE_QUERY}` : '';
-  const url = `${base}web/lightable/map.html?tiles=${encodeURIComponent(tilesUrl)}&date=${DATE}${extra}` +
+  const url = `${base}app/web/map.html?tiles=${encodeURIComponent(tilesUrl)}&date=${DATE}${extra}` +
               `#${ZOOM - 1}/${lat.toFixed(6)}/${lon.toFixed(6)}`;
 
   context = await launchHeadlessChromium(join(scratch, 'chromium'));
@@ -230,7 +230,7 @@ try {
   if (generated.problem) throw new Error(`the written page says: ${generated.problem}`);
   if (cdn < 2 || genSame < 0.99 * 65536) throw new Error('the page written beside the tiles does not show them relit as relief');
   // From file://, the page must say how to serve it.
-  await page.goto(pathToFileURL(join(repo, 'web/lightable/map.html')).href);
+  await page.goto(pathToFileURL(join(repo, 'app/web/map.html')).href);
   const fileNotice = await page.evaluate(() => window.relitStats?.problem || '');
   console.log(`p99 per instant: ${p99s.join(', ')} codes; attribution "${attribution}"`);
   if (pageErrors) failure = `page error: ${errors[0]}`;

@@ -1,4 +1,4 @@
-// Test of web/lightable/png.mjs and tileset.mjs in Node.
+// Test of app/web/png.mjs and tileset.mjs in Node.
 //   node tests/web/png_test.mjs TERRASHADE_BINARY TMPDIR
 // Fixtures come from other encoders available here: GDAL's PNG driver
 // (libpng) writes PNGs of each colour type from raw rasters whose values this
@@ -15,8 +15,8 @@ import { join, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const here = dirname(fileURLToPath(import.meta.url));
-const { decodePng, encodePng, crc32 } = await import(join(here, '../../web/lightable/png.mjs'));
-const { readTile, readMetadata, readJsonBeside } = await import(join(here, '../../web/lightable/tileset.mjs'));
+const { decodePng, encodePng, crc32 } = await import(join(here, '../../app/web/png.mjs'));
+const { readTile, readMetadata, readJsonBeside } = await import(join(here, '../../app/web/tileset.mjs'));
 
 const [binary, tmpRoot] = process.argv.slice(2);
 if (!binary || !tmpRoot) {

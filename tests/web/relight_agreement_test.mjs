@@ -6,9 +6,9 @@
 import {execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import {decodePng} from '../../web/lightable/png.mjs';
-import {readLightableTile, lightFor, relightTile} from '../../web/lightable/relight.mjs';
-import {sunPosition} from '../../web/lightable/sun_position.mjs';
+import {decodePng} from '../../app/web/png.mjs';
+import {readLightableTile, lightFor, relightTile, siteOf} from '../../app/web/relight.mjs';
+import {sunPosition} from '../../app/web/sun_position.mjs';
 
 const [binary, dem, tmp, zoomText = '11'] = process.argv.slice(2);
 if (!tmp) {
@@ -33,7 +33,7 @@ try {
   const lightable = path.join(work, 'lightable');
   run(['tiles', dem, '--zoom', `${zoom}`, '--style', 'lightable', ...(process.env.LIGHT_ARGS ? process.env.LIGHT_ARGS.split(' ') : []), '--out', lightable]);
   const meta = JSON.parse(fs.readFileSync(path.join(lightable, 'lightable.json'), 'utf8'));
-  const site = {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg, heightM: meta.site.height_m};
+  const site = siteOf(meta);
   const tiles = [];
   for (const x of fs.readdirSync(path.join(lightable, `${zoom}`)))
     for (const y of fs.readdirSync(path.join(lightable, `${zoom}`, x))) tiles.push(`${zoom}/${x}/${y}`);

@@ -1,4 +1,4 @@
-// web/lightable/sun_position.mjs against terrashade's SPA: the cases of tests/web/sun_reference.json
+// app/web/sun_position.mjs against terrashade's SPA: the cases of tests/web/sun_reference.json
 // (made by scripts/make_sun_reference.sh from `terrashade sun --json`).
 // Run: node tests/web/sun_position_test.mjs   (exit 0 on pass, 1 with the failing cases otherwise)
 //
@@ -14,7 +14,7 @@
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
-import { sunPosition } from '../../web/lightable/sun_position.mjs';
+import { sunPosition } from '../../app/web/sun_position.mjs';
 
 const TOLERANCE_DEG = 0.01;
 const THRESHOLD_DEG = -(0.26667 + 0.5667);

@@ -104,6 +104,31 @@ export function discVisible(h, e, r) {
   return Math.min(1, Math.max(0, 1 - below));
 }
 
+// The unit vector towards the sun (east, north, up) from {azimuthDeg, elevationDeg}.
+function sunDirection(sun) {
+  const el = sun.elevationDeg * DEG, az = sun.azimuthDeg * DEG;
+  return [Math.cos(el) * Math.sin(az), Math.cos(el) * Math.cos(az), Math.sin(el)];
+}
+
+// The texels' unit normals from their 12-bit east and north components, decoded once per tile.
+function texelNormals(tile) {
+  if (tile.normals) return tile.normals;
+  const {n, nHiX, nHiY, nLo} = tile;
+  const x = new Float64Array(n), y = new Float64Array(n), z = new Float64Array(n);
+  for (let k = 0; k < n; ++k) {
+    const qx = (nHiX[k] << 4) | (nLo[k] >> 4), qy = (nHiY[k] << 4) | (nLo[k] & 15);
+    x[k] = qx / 4095 * 2 - 1, y[k] = qy / 4095 * 2 - 1;
+    z[k] = Math.sqrt(Math.max(0, 1 - x[k] * x[k] - y[k] * y[k]));
+  }
+  tile.normals = {x, y, z};
+  return tile.normals;
+}
+
+// The site lightable.json places the sun at, as sunPosition takes it.
+export function siteOf(meta) {
+  return {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg, heightM: meta.site.height_m};
+}
+
 // The light of one instant: the sun at {azimuthDeg, elevationDeg} (sunPosition's) under the
 // tile set's `sky` ('clear' or 'overcast'; default the job's). Luminance-weighted for relief.
 export function lightFor(meta, sun, skyName = meta.sky) {
@@ -113,8 +138,8 @@ export function lightFor(meta, sun, skyName = meta.sky) {
   const turned = turnSh(sh, sun.azimuthDeg);
   const skyLum = Float64Array.from({length: 9}, (_, i) => LUM[0] * turned[3 * i] + LUM[1] * turned[3 * i + 1] + LUM[2] * turned[3 * i + 2]);
   const eLum = LUM[0] * e[0] + LUM[1] * e[1] + LUM[2] * e[2];
-  const el = sun.elevationDeg * DEG, az = sun.azimuthDeg * DEG;
-  const s = [Math.cos(el) * Math.sin(az), Math.cos(el) * Math.cos(az), Math.sin(el)];
+  const el = sun.elevationDeg * DEG;
+  const s = sunDirection(sun);
   const radius = table.sun_radius_rad;
   const up = eLum > 0 && sun.elevationDeg > -radius / DEG;
   const eDiffuse = up ? eLum / Math.PI : 0;
@@ -158,7 +183,7 @@ export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
 
 // Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
 export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
-  const {n, K, mean, basis, wLo, wHi, valid, nHiX, nHiY, nLo} = tile;
+  const {n, K, mean, basis, wLo, wHi, valid} = tile;
   // The sky's light per principal component: <mean, L> + sum_k w_k <basis_k, L>.
   let base = 0;
   for (let i = 0; i < 9; ++i) base += mean[i] * light.skyLum[i];
@@ -172,6 +197,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
   const planes = [];
   for (let k = 0; k < K; ++k) planes.push(tile.plane(4 + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
+  const normal = vis ? texelNormals(tile) : null;
   const [sx, sy, sz] = light.s;
   const inv = 1 / light.flat;
   const grey = new Float32Array(n);
@@ -180,10 +206,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
     let lum = base;
     for (let c = 0; c < K; ++c) lum += wk[c] * planes[c][k];
     if (vis) {
-      const qx = (nHiX[k] << 4) | (nLo[k] >> 4), qy = (nHiY[k] << 4) | (nLo[k] & 15);
-      const nx = qx / 4095 * 2 - 1, ny = qy / 4095 * 2 - 1;
-      const nz = Math.sqrt(Math.max(0, 1 - nx * nx - ny * ny));
-      const cos = nx * sx + ny * sy + nz * sz;
+      const cos = normal.x[k] * sx + normal.y[k] * sy + normal.z[k] * sz;
       if (cos > 0) lum += vis[k] * cos * light.eDiffuse;
     }
     const ratio = Math.max(0, lum * inv);
@@ -285,22 +308,19 @@ export function relightTile(tile, light, out, options = {}) {
 export function sunHoursTexels(tile, meta, date, sunAt, stepMinutes = 10) {
   const hours = new Float32Array(tile.n);
   const vis = new Float32Array(tile.n);
-  const {valid, nHiX, nHiY, nLo} = tile;
+  const {valid} = tile;
+  const normal = texelNormals(tile);
   const day = Date.UTC(date.getUTCFullYear(), date.getUTCMonth(), date.getUTCDate());
   const radius = meta.skies.clear.sun_radius_rad;
   for (let m = stepMinutes / 2; m < 24 * 60; m += stepMinutes) {
     const sun = sunAt(new Date(day + m * 60000));
     if (sun.elevationDeg < -1) continue;
-    const el = sun.elevationDeg * DEG, az = sun.azimuthDeg * DEG;
-    const s = [Math.cos(el) * Math.sin(az), Math.cos(el) * Math.cos(az), Math.sin(el)];
-    sunVisibility(tile, {azimuthDeg: sun.azimuthDeg, el, radius}, vis);
+    const s = sunDirection(sun);
+    sunVisibility(tile, {azimuthDeg: sun.azimuthDeg, el: sun.elevationDeg * DEG, radius}, vis);
     for (let k = 0; k < tile.n; ++k) {
       if (!valid[k]) continue;
-      const qx = (nHiX[k] << 4) | (nLo[k] >> 4), qy = (nHiY[k] << 4) | (nLo[k] & 15);
-      const nx = qx / 4095 * 2 - 1, ny = qy / 4095 * 2 - 1;
-      const nz = Math.sqrt(Math.max(0, 1 - nx * nx - ny * ny));
       // Direct sun on the surface: its disc seen and the surface facing it.
-      if (nx * s[0] + ny * s[1] + nz * s[2] > 0) hours[k] += vis[k] * stepMinutes / 60;
+      if (normal.x[k] * s[0] + normal.y[k] * s[1] + normal.z[k] * s[2] > 0) hours[k] += vis[k] * stepMinutes / 60;
     }
   }
   for (let k = 0; k < tile.n; ++k) if (!valid[k]) hours[k] = NaN;

@@ -12,7 +12,7 @@
 // For tests: window.relitStats, window.setInstant(iso), window.relitTile(z, x, y).
 import {encodePng} from './png.mjs';
 import {readJsonBeside} from './tileset.mjs';
-import {lightFor} from './relight.mjs';
+import {lightFor, siteOf} from './relight.mjs';
 import {sunPosition} from './sun_position.mjs';
 import {makeEngine} from './relight_worker.mjs';
 
@@ -130,7 +130,7 @@ async function start() {
   if (!meta || meta.format !== 'terrashade-lightable')
     throw new Error(`${tileset}/ is not a lightable tile set (no lightable.json): make one with terrashade tiles DEM --style lightable`);
   if (!meta.skies[state.sky]) state.sky = meta.sky;
-  const site = {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg, heightM: meta.site.height_m};
+  const site = siteOf(meta);
   const sunAt = (date) => sunPosition(date, site);
   const opts = {contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5};
   const tj = tilejson || {};

@@ -1,5 +1,5 @@
 #pragma once
-// The time-of-day page of a lightable tile set (docs/web-map.md): web/lightable's page and ES
+// The time-of-day page of a lightable tile set (docs/web-map.md): app/web's page and ES
 // modules, embedded when terrashade is built, written beside the tiles as the set's viewer.
 #include <string>
 #include <string_view>
@@ -7,10 +7,10 @@
 
 #include "core/tiles/tile_set_info.hpp"
 
-namespace ts::tiles {
+namespace ts::app {
 
 struct EmbeddedFile {
-    const char* name;       // as in web/lightable
+    const char* name;       // as in app/web
     std::string_view text;
 };
 
@@ -20,6 +20,6 @@ const std::vector<EmbeddedFile>& lightable_page_files();
 // The files a lightable set's folder gets, by name: index.html (map.html with MapLibre pinned on
 // the CDN with Subresource Integrity, as every viewer, and the set's name in its title) and the
 // modules beside it.
-std::vector<std::pair<std::string, std::string>> lightable_viewer_files(const TileSetInfo& info);
+std::vector<std::pair<std::string, std::string>> lightable_viewer_files(const tiles::TileSetInfo& info);
 
-}  // namespace ts::tiles
+}  // namespace ts::app

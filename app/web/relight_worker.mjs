@@ -3,12 +3,12 @@
 // thread (?workers=0) or as a module Web Worker, several of them sharing the tiles by z/x/y.
 import {decodePng} from './png.mjs';
 import {readTile} from './tileset.mjs';
-import {readLightableTile, relightTile, sunHoursTexels, resampleToPixels} from './relight.mjs';
+import {readLightableTile, relightTile, sunHoursTexels, resampleToPixels, siteOf} from './relight.mjs';
 import {sunPosition} from './sun_position.mjs';
 
 // tileset: the folder's absolute URL without the trailing slash; meta: its lightable.json.
 export function makeEngine(tileset, meta, maxTiles = 400) {
-  const site = {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg, heightM: meta.site.height_m};
+  const site = siteOf(meta);
   const opts = {contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5};
   const tiles = new Map();       // z/x/y -> Promise of the tile (null where the set has none)
   const hoursCache = new Map();  // date|z/x/y -> per-pixel hours

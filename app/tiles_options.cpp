@@ -203,7 +203,7 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     if (s.style->colours_land()) {
         s.colors = color_design(a.colors);
     } else if (a.colors.colors != render::kDefaultPalette || a.colors.snow_line_m) {
-        throw InputError("--colors and --snow-line colour --style color; " + a.style + " tiles are grey by design");
+        throw InputError("--colors and --snow-line colour --style color and lightable; " + a.style + " tiles are grey by design");
     }
     s.z_factor = a.z_factor;
     if (a.exaggeration != "auto") {

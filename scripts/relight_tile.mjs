@@ -1,6 +1,7 @@
 #!/usr/bin/env node
-// One lightable tile relit for an instant, as a grey + alpha PNG (docs/web-map.md):
-//   node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast]
+// One lightable tile relit for an instant, as a grey + alpha PNG (relief's look), or with
+// --colors as an RGBA PNG of the land's colours (`color`'s look) (docs/web-map.md):
+//   node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast] [--colors]
 // TILESET: an XYZ folder or an MBTiles file of `terrashade tiles --style lightable`; TIME: ISO
 // 8601 with a zone (2024-06-21T17:00Z). The sun is placed where `tiles --time` places it: the
 // DEM's centre (lightable.json's site).
@@ -20,7 +21,10 @@ const args = process.argv.slice(2);
 let sky;
 const skyAt = args.indexOf('--sky');
 if (skyAt >= 0) [, sky] = args.splice(skyAt, 2);
-if (args.length !== 4) fail('usage: node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast]');
+const colorsAt = args.indexOf('--colors');
+const colors = colorsAt >= 0;
+if (colors) args.splice(colorsAt, 1);
+if (args.length !== 4) fail('usage: node scripts/relight_tile.mjs TILESET Z/X/Y TIME OUT.png [--sky clear|overcast] [--colors]');
 const [tileset, zxy, timeText, out] = args;
 const m = /^(\d+)\/(\d+)\/(\d+)$/.exec(zxy);
 if (!m) fail(`${zxy}: give the tile as Z/X/Y`);
@@ -37,11 +41,16 @@ try {
   const tile = readLightableTile(await decodePng(bytes));
   const sun = sunPosition(new Date(timeText), siteOf(meta));
   const rgba = relightTile(tile, lightFor(meta, sun, sky ?? meta.sky), new Uint8Array(tile.size * tile.size * 4),
-                           {contrast: meta.relief_contrast, flatGrey: meta.flat_grey});
+                           {contrast: meta.relief_contrast, flatGrey: meta.flat_grey, colors: colors ? meta.colors : null});
   const pixels = tile.size * tile.size;
-  const ga = new Uint8Array(pixels * 2);
-  for (let k = 0; k < pixels; ++k) ga[2 * k] = rgba[4 * k], ga[2 * k + 1] = rgba[4 * k + 3];
-  const png = await encodePng(tile.size, tile.size, 2, ga);
+  let png;
+  if (colors) {
+    png = await encodePng(tile.size, tile.size, 4, rgba);
+  } else {
+    const ga = new Uint8Array(pixels * 2);
+    for (let k = 0; k < pixels; ++k) ga[2 * k] = rgba[4 * k], ga[2 * k + 1] = rgba[4 * k + 3];
+    png = await encodePng(tile.size, tile.size, 2, ga);
+  }
   // Whole or nothing: a temporary file renamed into place.
   const tmp = `${out}.tmp-${process.pid}`;
   fs.writeFileSync(tmp, png);

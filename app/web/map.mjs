@@ -4,12 +4,14 @@
 // Plain ES module, no build step.
 //
 // Query: ?tiles=URL_OF_FOLDER/ (default ./)  ?date=YYYY-MM-DD (default today)  ?time=HH:MM (UTC)
-//        ?sky=clear|overcast  ?maplibre=URL_PREFIX of maplibre-gl's dist/
+//        ?sky=clear|overcast  ?look=colors|relief (the land's colours, default, or grey relief)
+//        ?maplibre=URL_PREFIX of maplibre-gl's dist/
 //        ?update=refresh|settiles (how a change reaches MapLibre; default refresh, the faster)
 //        ?encode=bitmap|png (what the protocol returns; default bitmap, the faster)
 //        ?workers=N (module workers sharing the tile work; default 0: all on the page's thread)
 // The view is in the URL's hash (#zoom/lat/lon), else tiles.json's centre.
-// For tests: window.relitStats, window.setInstant(iso), window.relitTile(z, x, y).
+// For tests: window.relitStats, window.setInstant(iso), window.setSky(s), window.setLook(l),
+// window.relitTile(z, x, y).
 import {encodePng} from './png.mjs';
 import {readJsonBeside} from './tileset.mjs';
 import {lightFor, siteOf} from './relight.mjs';
@@ -58,7 +60,7 @@ function makeWork(n, tileset, meta) {
     workers[(((x * 73856093) ^ (y * 19349663) ^ (z * 83492791)) >>> 0) % n].postMessage({...message, id});
   });
   return {
-    relight: (z, x, y, light) => call({type: 'relight', z, x, y, light}),
+    relight: (z, x, y, light, look) => call({type: 'relight', z, x, y, light, look}),
     hours: (z, x, y, date) => call({type: 'hours', z, x, y, date}),
   };
 }
@@ -76,6 +78,7 @@ const state = {
   date: /^\d{4}-\d\d-\d\d$/.test(query.get('date') || '') ? query.get('date') : today(),
   minutes: 720,              // UTC minutes of the day; may be off the slider's 5-minute steps
   sky: query.get('sky') === 'overcast' ? 'overcast' : 'clear',
+  look: query.get('look') === 'relief' ? 'relief' : 'colors',
   instantMs: 0, sun: null, light: null,
 };
 {
@@ -130,6 +133,7 @@ async function start() {
   if (!meta || meta.format !== 'terrashade-lightable')
     throw new Error(`${tileset}/ is not a lightable tile set (no lightable.json): make one with terrashade tiles DEM --style lightable`);
   if (!meta.skies[state.sky]) state.sky = meta.sky;
+  if (!meta.colors) state.look = 'relief';
   const site = siteOf(meta);
   const sunAt = (date) => sunPosition(date, site);
   const opts = {contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5};
@@ -151,15 +155,15 @@ async function start() {
   const blank = () => toImage(new Uint8ClampedArray(4 * 256 * 256), 256);
 
   // relit://z/x/y: the data tile lit for the current instant and sky.
-  const lastRelit = new Map();         // z/x/y -> {rgba, instantMs, sky}
+  const lastRelit = new Map();         // z/x/y -> {rgba, instantMs, sky, look}
   let relitThisChange = 0, relightMsThisChange = 0;   // tiles relit since the change, ms in relightTile
   maplibregl.addProtocol('relit', async (params) => {
     const {z, x, y, key} = parse(params.url);
-    const {light, instantMs, sky} = state;
-    const r = await engine.relight(z, x, y, light);
+    const {light, instantMs, sky, look} = state;
+    const r = await engine.relight(z, x, y, light, look);
     if (!r) return blank();
     relightMsThisChange += r.ms;
-    lastRelit.set(key, {rgba: r.rgba, instantMs, sky});
+    lastRelit.set(key, {rgba: r.rgba, instantMs, sky, look});
     if (lastRelit.size > 400) lastRelit.delete(lastRelit.keys().next().value);
     relitThisChange += 1;
     return toImage(r.rgba, r.size);
@@ -225,9 +229,32 @@ async function start() {
   window.map = map;
 
   // ---- controls -------------------------------------------------------------------------------
-  const dateInput = $('date'), slider = $('time'), skySelect = $('sky'), hoursBox = $('hours');
+  const dateInput = $('date'), slider = $('time'), skySelect = $('sky'), lookSelect = $('look'), hoursBox = $('hours');
   dateInput.value = state.date;
   skySelect.value = state.sky;
+  lookSelect.value = state.look;
+  lookSelect.disabled = !meta.colors;
+  // The colours' legend: the palette's stops (metres, sRGB) over their height range.
+  if (meta.colors) {
+    const stops = meta.colors.stops, lo = stops[0][0], hi = stops[stops.length - 1][0];
+    const at = (v) => (hi > lo ? (100 * (v - lo) / (hi - lo)).toFixed(1) : 0);
+    $('colors-ramp').style.background =
+      `linear-gradient(to right, ${stops.map(([v, r, g, b]) => `rgb(${r}, ${g}, ${b}) ${at(v)}%`).join(', ')})`;
+    $('colors-labels').innerHTML = '';
+    for (const v of [lo, (lo + hi) / 2, hi]) {
+      const span = document.createElement('span');
+      span.textContent = `${Math.round(v)} m`;
+      $('colors-labels').appendChild(span);
+    }
+    $('colors-title').textContent = `land colour by height (${meta.colors.name || 'palette'})` +
+      (meta.colors.snow_line_m != null ? `, snow above ${Math.round(meta.colors.snow_line_m)} m` : '') +
+      ', shaded by sun and sky';
+  }
+  const showLook = () => {
+    $('relief-legend').hidden = state.look !== 'relief';
+    $('colors-legend').hidden = state.look !== 'colors';
+  };
+  showLook();
   const flatCode = 255 * (1.055 * Math.pow(opts.flatGrey, 1 / 2.4) - 0.055);
   $('flat-mark').style.left = `${(100 * flatCode / 255).toFixed(1)}%`;
   $('flat-label').style.marginLeft = `${(100 * flatCode / 255 - 50).toFixed(1)}%`;
@@ -266,7 +293,7 @@ async function start() {
     changeStart = performance.now();
     relitThisChange = 0, relightMsThisChange = 0;
     window.relitStats.ready = false;
-    if (updateMode === 'settiles') map.getSource('relit').setTiles([`relit://{z}/{x}/{y}?t=${state.instantMs}&s=${state.sky}`]);
+    if (updateMode === 'settiles') map.getSource('relit').setTiles([`relit://{z}/{x}/{y}?t=${state.instantMs}&s=${state.sky}&l=${state.look}`]);
     else map.refreshTiles('relit');
   };
   const relight = () => {
@@ -308,6 +335,7 @@ async function start() {
   });
   slider.addEventListener('input', () => { state.minutes = +slider.value; relight(); });
   skySelect.addEventListener('change', () => { state.sky = skySelect.value; relight(); });
+  lookSelect.addEventListener('change', () => { state.look = lookSelect.value; showLook(); relight(); });
   hoursBox.addEventListener('change', () => {
     map.setLayoutProperty('sunhours', 'visibility', hoursBox.checked ? 'visible' : 'none');
     $('hours-legend').hidden = !hoursBox.checked;
@@ -337,10 +365,11 @@ async function start() {
     return relight();
   };
   window.setSky = (sky) => { state.sky = skySelect.value = sky; return relight(); };
+  window.setLook = (look) => { state.look = lookSelect.value = look; showLook(); return relight(); };
   // The RGBA bytes the page last made for tile z/x/y (an Array, for tests), with their instant.
   window.relitTile = (z, x, y) => {
     const r = lastRelit.get(`${z}/${x}/${y}`);
-    return r ? {instant: new Date(r.instantMs).toISOString(), sky: r.sky, rgba: Array.from(r.rgba)} : null;
+    return r ? {instant: new Date(r.instantMs).toISOString(), sky: r.sky, look: r.look, rgba: Array.from(r.rgba)} : null;
   };
 
   applyState();

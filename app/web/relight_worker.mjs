@@ -9,7 +9,9 @@ import {sunPosition} from './sun_position.mjs';
 // tileset: the folder's absolute URL without the trailing slash; meta: its lightable.json.
 export function makeEngine(tileset, meta, maxTiles = 400) {
   const site = siteOf(meta);
-  const opts = {contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5};
+  // 'relief': relief's grey; 'colors': the land's colours (lightable.json's palette).
+  const optsFor = (look) => ({contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5,
+                              colors: look === 'colors' ? meta.colors : null});
   const tiles = new Map();       // z/x/y -> Promise of the tile (null where the set has none)
   const hoursCache = new Map();  // date|z/x/y -> per-pixel hours
   const remember = (cache, key, value) => {
@@ -27,12 +29,12 @@ export function makeEngine(tileset, meta, maxTiles = 400) {
     return p;
   };
   return {
-    // The tile lit by `light` (lightFor's) as RGBA bytes, or null where the set has no tile.
-    async relight(z, x, y, light) {
+    // The tile lit by `light` (lightFor's) in `look` as RGBA bytes, or null where the set has no tile.
+    async relight(z, x, y, light, look = 'relief') {
       const tile = await getTile(z, x, y);
       if (!tile) return null;
       const t0 = performance.now();
-      const rgba = relightTile(tile, light, new Uint8ClampedArray(tile.size * tile.size * 4), opts);
+      const rgba = relightTile(tile, light, new Uint8ClampedArray(tile.size * tile.size * 4), optsFor(look));
       return {rgba, size: tile.size, ms: performance.now() - t0};
     },
     // Per pixel, hours of direct sun on the UTC day `date` (YYYY-MM-DD); NaN where transparent.
@@ -51,7 +53,7 @@ export function makeEngine(tileset, meta, maxTiles = 400) {
   };
 }
 
-// As a worker: {type: 'init', tileset, meta}, then {id, type: 'relight'|'hours', z, x, y, light|date};
+// As a worker: {type: 'init', tileset, meta}, then {id, type: 'relight'|'hours', z, x, y, light, look|date};
 // answers {id, result} (buffers transferred) or {id, error}.
 if (typeof WorkerGlobalScope !== 'undefined' && self instanceof WorkerGlobalScope) {
   let engine = null;
@@ -62,7 +64,7 @@ if (typeof WorkerGlobalScope !== 'undefined' && self instanceof WorkerGlobalScop
     }
     try {
       if (m.type === 'relight') {
-        const r = await engine.relight(m.z, m.x, m.y, m.light);
+        const r = await engine.relight(m.z, m.x, m.y, m.light, m.look);
         self.postMessage({id: m.id, result: r}, r ? [r.rgba.buffer] : []);
       } else if (m.type === 'hours') {
         const r = await engine.hours(m.z, m.x, m.y, m.date);

@@ -9,10 +9,6 @@
 namespace ts::tiles {
 namespace {
 
-// The exposure puts an open flat texel of albedo 1 at this (before the filmic curve), so a
-// meadow (albedo ~0.15-0.2) lands near the filmic's middle grey.
-constexpr double kColorExposure = 2.2;
-
 class ColorStyle final : public TileStyle {
 public:
     std::string_view name() const override { return "color"; }

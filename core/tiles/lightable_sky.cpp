@@ -77,11 +77,19 @@ std::string lightable_json(const TileShading& s, const LightableSite& site, cons
     clear.kind = light::SkyOptions::Kind::clear;
     overcast.kind = light::SkyOptions::Kind::overcast;
     const std::string default_sky = s.sky.kind == light::SkyOptions::Kind::overcast ? "overcast" : "clear";
-    return "{\"format\":\"terrashade-lightable\",\"version\":1,\"site\":{\"longitude_deg\":" + number(site.longitude_deg) +
+    // The palette as the tiles hold it (fitted to the job's heights): the page's legend.
+    std::string stops;
+    for (const render::PaletteStop& p : s.colors.palette.stops())
+        stops += (stops.empty() ? "[" : ",[") + number(p.value) + "," + number(p.srgb.x) + "," + number(p.srgb.y) + "," +
+                 number(p.srgb.z) + "]";
+    const std::string colors = "{\"name\":\"" + s.colors.palette.name() + "\",\"stops\":[" + stops +
+                               "],\"snow_line_m\":" + (s.colors.snow_line_m ? number(*s.colors.snow_line_m) : "null") +
+                               ",\"exposure\":" + number(kColorExposure) + "}";
+    return "{\"format\":\"terrashade-lightable\",\"version\":2,\"site\":{\"longitude_deg\":" + number(site.longitude_deg) +
            ",\"latitude_deg\":" + number(site.latitude_deg) + ",\"height_m\":" + number(site.height_m) +
            "},\"relief_contrast\":" + number(s.relief_contrast) + ",\"flat_grey\":0.5,\"light_directions\":" +
            std::to_string(s.light_directions) + ",\"stored_directions\":[" + dirs + "],\"components\":" +
-           std::to_string(s.light_components) + ",\"flat_transfer\":[" + flat + "],\"sky\":\"" + default_sky +
+           std::to_string(s.light_components) + ",\"flat_transfer\":[" + flat + "],\"colors\":" + colors + ",\"sky\":\"" + default_sky +
            "\",\"skies\":{\"clear\":" + sky_table_json(clear) + ",\"overcast\":" + sky_table_json(overcast) + "}}\n";
 }
 

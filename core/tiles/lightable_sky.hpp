@@ -5,6 +5,8 @@
 //
 //   site                 the DEM's centre and mean height (--time places the sun there)
 //   flat_transfer        T_d of open flat ground (9 SH coefficients): relief is relative to it
+//   colors               the palette's stops (metres, sRGB) the tiles' albedos come from, the
+//                        snow line, and `color`'s exposure (kColorExposure)
 //   skies.clear/overcast per elevation: the sky's SH (9 coefficients x RGB) with the sun at
 //                        azimuth 90 (east), and the sun's irradiance (RGB), its disc's radius
 // A reader turns the SH about the vertical to the sun's azimuth (lightable_sky_sh_at in C++;

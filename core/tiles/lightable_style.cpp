@@ -1,10 +1,13 @@
 // `lightable`: data tiles a browser relights for any instant (docs/web-map.md). Per source texel
-// it keeps what `relief` lights a texel from, except the light itself: the unit normal, the
-// diffuse transfer T_d of bands 0..2 (the band correction zeroes band 3) and the exact horizons
-// at the job's light directions; lightable_tile.hpp encodes them per tile.
+// it keeps what `relief` and `color` light a texel from, except the light itself: the unit
+// normal, the land's albedo (the job's palette, as `color`), the diffuse transfer T_d of bands
+// 0..2 (the band correction zeroes band 3) and the exact horizons at the job's light
+// directions; lightable_tile.hpp encodes them per tile.
 #include <cmath>
 
+#include "core/material/palette_materials.hpp"
 #include "core/render/shading_state.hpp"
+#include "core/terrain/terrain_normals.hpp"
 #include "core/tiles/block_shading.hpp"
 #include "core/tiles/lightable_tile.hpp"
 #include "core/tiles/tile_style.hpp"
@@ -19,6 +22,8 @@ public:
     bool data_tile() const override { return true; }
     int channels(const TileShading& s) const override { return lightable_channels(s.light_directions); }
     bool takes_relief_contrast() const override { return true; }
+    bool needs_true_heights() const override { return true; }
+    bool colours_land() const override { return true; }
     std::vector<float> shade_block(const BlockShading& b) const override {
         const int d_count = b.shading.light_directions;
         const int ch = lightable_channels(d_count);
@@ -35,8 +40,21 @@ public:
                 for (int i = 0; i < kLightTransfer; ++i) v[kLightTransferAt + i] = t[std::size_t(i) * n + k];
             }
         };
-        render_block(b, [](const terrain::HeightGrid& g, const terrain::HeightGrid&) { return grey_materials(g.z.size(), 1.0f); },
-                     false, &keep);
+        // The land's colours as `color` finds them: from the true heights (and slopes, for snow).
+        const int threads = b.shading.threads;
+        const render::ColorDesign& colors = b.shading.colors;
+        render::MaterialRaster land;
+        render_block(
+            b,
+            [&](const terrain::HeightGrid&, const terrain::HeightGrid& tg) {
+                land = render::palette_materials(tg, render::terrain_normals(tg, threads), colors);
+                return land;
+            },
+            true, &keep);
+        for (std::size_t k = 0; k < land.albedo_r.size(); ++k) {
+            float* v = values.data() + k * std::size_t(ch);
+            v[kLightAlbedoAt] = land.albedo_r[k], v[kLightAlbedoAt + 1] = land.albedo_g[k], v[kLightAlbedoAt + 2] = land.albedo_b[k];
+        }
         // The exact horizons at the light directions, through the far field as the sky's.
         visibility::VisibilityRequest request;
         request.horizon.directions = d_count;

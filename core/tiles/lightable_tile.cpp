@@ -147,6 +147,17 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     for (int i = 0; i < kLightTransfer; ++i) order[std::size_t(i)] = i;
     std::sort(order.begin(), order.end(), [&](int a, int b) { return cov[a][a] > cov[b][b]; });
 
+    // The albedo's range over the window, per channel.
+    std::array<double, 3> a_lo{1e9, 1e9, 1e9}, a_hi{-1e9, -1e9, -1e9};
+    for (std::size_t t = 0; t < n; ++t)
+        if (valid[t])
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double a = at(t, kLightAlbedoAt + int(c));
+                a_lo[c] = std::min(a_lo[c], a), a_hi[c] = std::max(a_hi[c], a);
+            }
+    for (std::size_t c = 0; c < 3; ++c)
+        if (!(a_hi[c] >= a_lo[c])) a_lo[c] = a_hi[c] = 0.0;
+
     std::vector<float> w(n * std::size_t(k_count), 0.0f);
     std::vector<double> w_lo(std::size_t(k_count), 0.0), w_hi(std::size_t(k_count), 0.0);
     const std::size_t planes = e.bands.size();
@@ -176,7 +187,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
 
     const int size = px.size;
     const int width = std::max(size, tx.width);
-    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 1, std::uint8_t(k_count)};
+    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 2, std::uint8_t(k_count)};
     put_u16(header, e.directions);
     put_u16(header, int(planes));
     put_u16(header, size);
@@ -190,6 +201,8 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     for (const SunBand& b : e.bands) put_u16(header, b.direction);
     while (header.size() % 4) header.push_back(0);
     for (std::size_t j = 0; j < planes; ++j) put_float(header, h_lo[j]), put_float(header, h_hi[j]);
+    for (double v : a_lo) put_float(header, v);
+    for (double v : a_hi) put_float(header, v);
     for (double m : mean) put_float(header, m);
     for (int k = 0; k < k_count; ++k)
         for (int i = 0; i < kLightTransfer; ++i) put_float(header, basis[i][order[std::size_t(k)]]);
@@ -200,7 +213,9 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     const int header_rows = int((header.size() + std::size_t(width) - 1) / std::size_t(width));
     header[12] = std::uint8_t(header_rows & 255), header[13] = std::uint8_t(header_rows >> 8);
 
-    const int texel_planes = 4 + k_count + int(planes);
+    // valid, normal (3), albedo (3), transfer (K), horizons (P)
+    constexpr int kFirstTransferPlane = 7;
+    const int texel_planes = kFirstTransferPlane + k_count + int(planes);
     const std::size_t rows = std::size_t(header_rows) + std::size_t(size) + std::size_t(texel_planes) * std::size_t(tx.height);
     std::vector<std::uint8_t> image(rows * std::size_t(width), 0);
     std::copy(header.begin(), header.end(), image.begin());
@@ -211,7 +226,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     // Texel t of plane k. The horizon planes interleave by texel row (row r of direction j is
     // image row r * P + j of their block), so PNG's Up filter predicts each horizon from the
     // same texel's in the previous direction: neighbouring azimuths differ little.
-    const int first_horizon = 4 + k_count;
+    const int first_horizon = kFirstTransferPlane + k_count;
     auto texel = [&](int k, std::size_t t) -> std::uint8_t& {
         const std::size_t r = t / std::size_t(tx.width);
         const std::size_t row = std::size_t(header_rows) + std::size_t(size) +
@@ -230,10 +245,12 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
         const int qy = int(std::lround(std::clamp((ny + 1) * 0.5, 0.0, 1.0) * 4095));
         texel(1, t) = std::uint8_t(qx >> 4), texel(2, t) = std::uint8_t(qy >> 4);
         texel(3, t) = std::uint8_t(((qx & 15) << 4) | (qy & 15));
+        for (std::size_t c = 0; c < 3; ++c) texel(4 + int(c), t) = quantise(at(t, kLightAlbedoAt + int(c)), a_lo[c], a_hi[c]);
         for (int k = 0; k < k_count; ++k)
-            texel(4 + k, t) = quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
+            texel(kFirstTransferPlane + k, t) =
+                quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
         for (std::size_t j = 0; j < planes; ++j)
-            texel(4 + k_count + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j]);
+            texel(first_horizon + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j]);
     }
     raster::PngEncoding encoding;
     encoding.deflater = raster::Deflater::libdeflate;

@@ -16,18 +16,20 @@
 //     valid: 255 where every value is finite
 //     normal: east and north components at 12 bits, q = round((n + 1) / 2 * 4095): high 8 bits of
 //       each (2 planes), their low 4 bits (east << 4 | north); up = sqrt(1 - e^2 - n^2)
+//     3 planes: the land's albedo (linear R, G, B of the job's palette, snow line and land
+//       cover, as `color` colours the texel), a_c = lo_c + q / 255 (hi_c - lo_c)
 //     K planes: the window's principal components of the diffuse transfer T_d (9 SH coefficients,
 //       bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k + q / 255 (hi_k - lo_k)
 //     P planes: horizon elevations at the stored azimuths, h = lo_p + q / 255 (hi_p - lo_p)
 //       radians, clamped to the sun's band in that direction (sun_bands; a horizon below it
 //       lets every sun there through, one above it hides every sun there), so most of a plane is
 //       one value; azimuths the sun never reaches at the tile set's latitude are left out
-// Header (little-endian): "TSL1", u8 version 1, u8 K, u16 D (light directions: azimuth of
+// Header (little-endian): "TSL1", u8 version 2, u8 K, u16 D (light directions: azimuth of
 // direction d = 360 d / D degrees clockwise from north), u16 P, u16 size, u16 header rows, u16 W,
 // u8 separable, u8 grid step, u32 level width, u32 level height, u32 window x0, u32 window y0,
 // u16 window width, u16 window height, P u16 (the stored directions, ascending), zero padding
 // to 4 bytes, then float32: P pairs (horizon lo, hi of each plane: the tile's range within the
-// sun's band in that direction, clamped there); mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
+// sun's band in that direction, clamped there); albedo lo[3], hi[3]; mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
 // pixels sample the level, in level texel-centre coordinates minus the window's origin:
 //   separable (geographic and Web Mercator DEMs): x of each column [size], y of each row [size],
 //     clamped to the level as relief clamps them
@@ -40,9 +42,10 @@
 
 namespace ts::tiles {
 
-// Per source texel and tile pixel, in this order: normal (3), transfer (9), horizons (D).
+// Per source texel and tile pixel, in this order: normal (3), albedo (3), transfer (9), horizons (D).
 inline constexpr int kLightNormal = 0;
-inline constexpr int kLightTransferAt = 3;
+inline constexpr int kLightAlbedoAt = 3;
+inline constexpr int kLightTransferAt = 6;
 inline constexpr int kLightTransfer = 9;
 inline constexpr int kLightHorizonAt = kLightTransferAt + kLightTransfer;
 inline constexpr int lightable_channels(int directions) { return kLightHorizonAt + directions; }

@@ -12,6 +12,11 @@
 
 namespace ts::tiles {
 
+// `color`'s exposure: an open flat texel of albedo 1 lands here before the filmic curve, so a
+// meadow (albedo ~0.15-0.2) lands near the filmic's middle grey. Lightable tiles' readers get it
+// in lightable.json.
+inline constexpr double kColorExposure = 2.2;
+
 struct TileFrame;
 struct TileShading;
 struct HornLight;

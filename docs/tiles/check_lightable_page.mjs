@@ -4,9 +4,11 @@
 // and the tile set on 127.0.0.1, refuses any other request, opens the page on 16 tiles of zoom 10
 // (1024 x 1024) for 21 June 2024 and:
 //   (a) at 05:30Z, 11:30Z and 18:30Z compares the page's relit pixels of a fully covered tile with
-//       `terrashade tiles --style relief --time T` of that tile: p99 of |difference| in codes;
-//   (b) moves the time 5 times and prints the median time to relight and draw the visible tiles;
-//   (c) with LIGHTABLE_SCREENSHOTS=DIR, saves a screenshot per instant there;
+//       `terrashade tiles --style relief --time T` of that tile (the grey look) and with
+//       `--style color --time T` (the land's colours, every channel): p99 of |difference| in codes;
+//   (b) moves the time 5 times in the land's colours (the page's default) and prints the median
+//       time to relight and draw the visible tiles;
+//   (c) with LIGHTABLE_SCREENSHOTS=DIR, saves a screenshot per instant there (in colours);
 //   (d) fails on a page error or a request off 127.0.0.1;
 // and that the slider does not refetch tiles, a drag ends at its last instant, play runs, the
 // second layer draws, the attribution shows, from file:// the page says how to serve it, and the
@@ -64,7 +66,7 @@ try {
   const lat = Math.atan(Math.sinh(Math.PI * (1 - 2 * ty / 2 ** ZOOM))) * 180 / Math.PI;
   // LIGHTABLE_PAGE_QUERY (e.g. update=settiles&encode=png) adds to the page's query: to compare its ways.
   const extra = process.env.LIGHTABLE_PAGE_QUERY ? `&${process.env.LIGHTABLE_PAGE_QUERY}` : '';
-  const url = `${base}app/web/map.html?tiles=${encodeURIComponent(tilesUrl)}&date=${DATE}${extra}` +
+  const url = `${base}app/web/map.html?tiles=${encodeURIComponent(tilesUrl)}&date=${DATE}&look=relief${extra}` +
               `#${ZOOM - 1}/${lat.toFixed(6)}/${lon.toFixed(6)}`;
 
   context = await launchHeadlessChromium(join(scratch, 'chromium'));
@@ -96,14 +98,16 @@ try {
   for (const dx of [-1, 0]) for (const dy of [-1, 0]) candidates.push([ZOOM, tx + dx, ty + dy]);
   let chosen = null;
   const p99s = [];
-  for (const when of instants) {
+  for (const [look, when] of [...instants.map((w) => ['relief', w]), ...instants.map((w) => ['colors', w])]) {
+    if (when === instants[0]) await page.evaluate((l) => window.setLook(l), look);
     const stats = await page.evaluate((iso) => window.setInstant(iso), when);
-    if (shots) {
+    if (shots && look === 'colors') {
       mkdirSync(shots, { recursive: true });
       await page.screenshot({ path: join(shots, `lightable-${when.slice(11, 16).replace(':', '')}Z.png`) });
     }
-    const relief = join(scratch, `relief-${when.slice(11, 16).replace(':', '')}`);
-    run(['tiles', dem, '--zoom', `${ZOOM}`, '--style', 'relief', '--time', when, '--out', relief]);
+    const style = look === 'colors' ? 'color' : 'relief', colours = look === 'colors' ? 3 : 1;
+    const relief = join(scratch, `${style}-${when.slice(11, 16).replace(':', '')}`);
+    run(['tiles', dem, '--zoom', `${ZOOM}`, '--style', style, '--time', when, '--out', relief]);
     let got = null;
     for (const c of chosen ? [chosen] : candidates) {
       const r = await page.evaluate(([z, x, y]) => window.relitTile(z, x, y), c);
@@ -122,15 +126,16 @@ try {
     for (let k = 0; k < ref.width * ref.height; ++k) {
       const a = got.rgba[4 * k + 3] > 0, b = ref.data[ref.channels * k + ref.channels - 1] > 0;
       if (a !== b) { ++alpha; continue; }
-      if (a) diffs.push(Math.abs(got.rgba[4 * k] - ref.data[ref.channels * k]));
+      if (a) for (let c = 0; c < colours; ++c) diffs.push(Math.abs(got.rgba[4 * k + c] - ref.data[ref.channels * k + c]));
     }
     diffs.sort((p, q) => p - q);
     const q = (p) => diffs[Math.min(diffs.length - 1, Math.floor(p * diffs.length))];
-    p99s.push(q(0.99));
-    console.log(`${when}: tile ${chosen.join('/')}, ${diffs.length} pixels, |page - relief| codes p50 ${q(0.5)} ` +
+    p99s.push(`${look} ${q(0.99)}`);
+    if (got.look !== look) throw new Error(`tile ${chosen.join('/')} is drawn in ${got.look}, not ${look}`);
+    console.log(`${when} ${look}: tile ${chosen.join('/')}, ${diffs.length} values, |page - ${style}| codes p50 ${q(0.5)} ` +
                 `p90 ${q(0.9)} p99 ${q(0.99)} max ${diffs[diffs.length - 1]}; coverage differs at ${alpha}; ` +
                 `${stats.tilesRelit} tiles relit in ${stats.lastRelightMs} ms`);
-    if (alpha) throw new Error(`${when}: coverage differs from relief at ${alpha} pixels`);
+    if (alpha) throw new Error(`${when}: coverage differs from ${style} at ${alpha} pixels`);
     if (q(0.99) > P99_BOUND) throw new Error(`${when}: p99 ${q(0.99)} codes > ${P99_BOUND}`);
   }
 
@@ -222,13 +227,18 @@ try {
   const genTile = await page.evaluate(([z, x, y]) => window.relitTile(z, x, y), chosen);
   let genSame = 0;
   if (genTile) {
-    const ref = await decodePng(readFileSync(join(scratch, 'relief-1130', `${chosen.join('/')}.png`)));
-    for (let k = 0; k < ref.width * ref.height; ++k) genSame += Math.abs(genTile.rgba[4 * k] - ref.data[ref.channels * k]) <= P99_BOUND;
+    // Its default look: the land's colours.
+    const ref = await decodePng(readFileSync(join(scratch, 'color-1130', `${chosen.join('/')}.png`)));
+    for (let k = 0; k < ref.width * ref.height; ++k) {
+      let same = true;
+      for (let c = 0; c < 3; ++c) same &&= Math.abs(genTile.rgba[4 * k + c] - ref.data[ref.channels * k + c]) <= P99_BOUND;
+      genSame += same;
+    }
   }
   console.log(`the page written beside the tiles: ${generated.tilesRelit} tiles relit at 11:30 (MapLibre from its CDN URLs: ` +
-              `${cdn} files), tile ${chosen.join('/')} within ${P99_BOUND} codes of relief at ${genSame} of 65536 pixels`);
+              `${cdn} files), tile ${chosen.join('/')} within ${P99_BOUND} codes of color at ${genSame} of 65536 pixels`);
   if (generated.problem) throw new Error(`the written page says: ${generated.problem}`);
-  if (cdn < 2 || genSame < 0.99 * 65536) throw new Error('the page written beside the tiles does not show them relit as relief');
+  if (cdn < 2 || genSame < 0.99 * 65536) throw new Error('the page written beside the tiles does not show them relit as color');
   // From file://, the page must say how to serve it.
   await page.goto(pathToFileURL(join(repo, 'app/web/map.html')).href);
   const fileNotice = await page.evaluate(() => window.relitStats?.problem || '');

@@ -1,6 +1,8 @@
-// Relit lightable tiles against `terrashade tiles --style relief --time T` of the same tiles
-// (docs/web-map.md, "Agreement"): for a morning, a noon and a low evening sun over the Grenoble
-// crop, and under an overcast sky, every tile of a zoom is relit in Node and compared code by code with the relief tile.
+// Relit lightable tiles against `terrashade tiles --style relief --time T` and `--style color
+// --time T` of the same tiles (docs/web-map.md, "Agreement"): for a morning, a noon and a low
+// evening sun over the Grenoble crop, and under an overcast sky, every tile of a zoom is relit in
+// Node, in grey and in the land's colours, and compared code by code (every channel) with the
+// tile terrashade makes.
 //   node tests/web/relight_agreement_test.mjs TERRASHADE DEM TMPDIR [ZOOM]
 // Prints the differences' percentiles per instant and fails if they exceed the bounds below.
 import {execFileSync} from 'node:child_process';
@@ -37,31 +39,36 @@ try {
   const tiles = [];
   for (const x of fs.readdirSync(path.join(lightable, `${zoom}`)))
     for (const y of fs.readdirSync(path.join(lightable, `${zoom}`, x))) tiles.push(`${zoom}/${x}/${y}`);
-  for (const [when, sky] of instants) {
-    const relief = path.join(work, `relief-${sky}-${when.replace(/:/g, '')}`);
-    run(['tiles', dem, '--zoom', `${zoom}`, '--style', 'relief', '--time', when, '--sky', sky, '--out', relief]);
+  const decoded = new Map();
+  for (const t of tiles) decoded.set(t, readLightableTile(await decodePng(fs.readFileSync(path.join(lightable, t)))));
+  // Relief's grey, then `color`'s land colours (every channel) from the same data tiles.
+  for (const [when, sky, style] of instants.flatMap(([w, s]) => [[w, s, 'relief'], [w, s, 'color']])) {
+    const ref_dir = path.join(work, `${style}-${sky}-${when.replace(/:/g, '')}`);
+    run(['tiles', dem, '--zoom', `${zoom}`, '--style', style, '--time', when, '--sky', sky, '--out', ref_dir]);
     const sun = sunPosition(new Date(when), site);
     const light = lightFor(meta, sun, sky);
+    const options = {contrast: meta.relief_contrast, colors: style === 'color' ? meta.colors : null};
     const diffs = [];
     let alpha = 0;
     for (const t of tiles) {
-      const tile = readLightableTile(await decodePng(fs.readFileSync(path.join(lightable, t))));
-      const lit = relightTile(tile, light, new Uint8Array(tile.size * tile.size * 4), {contrast: meta.relief_contrast});
-      const ref = await decodePng(fs.readFileSync(path.join(relief, t)));
+      const tile = decoded.get(t);
+      const lit = relightTile(tile, light, new Uint8Array(tile.size * tile.size * 4), options);
+      const ref = await decodePng(fs.readFileSync(path.join(ref_dir, t)));
+      const ch = ref.channels, colours = style === 'color' ? 3 : 1;
       for (let k = 0; k < tile.size * tile.size; ++k) {
-        const a = lit[4 * k + 3] > 0, b = ref.data[2 * k + 1] > 0;
+        const a = lit[4 * k + 3] > 0, b = ref.data[ch * k + ch - 1] > 0;
         if (a !== b) { ++alpha; continue; }
-        if (a) diffs.push(Math.abs(lit[4 * k] - ref.data[2 * k]));
+        if (a) for (let c = 0; c < colours; ++c) diffs.push(Math.abs(lit[4 * k + c] - ref.data[ch * k + c]));
       }
     }
     diffs.sort((p, q) => p - q);
     const q = (p) => diffs[Math.min(diffs.length - 1, Math.floor(p * diffs.length))];
     const mean = diffs.reduce((s, v) => s + v, 0) / diffs.length;
     const r = {p50: q(0.5), p90: q(0.9), p99: q(0.99), max: diffs[diffs.length - 1], mean: +mean.toFixed(3)};
-    console.log(`${when} ${sky}: sun ${sun.azimuthDeg.toFixed(1)}/${sun.elevationDeg.toFixed(1)} deg, ${diffs.length} pixels of ` +
-                `${tiles.length} tiles, |relit - relief| codes: ${JSON.stringify(r)}, coverage differs at ${alpha}`);
+    console.log(`${when} ${sky} ${style}: sun ${sun.azimuthDeg.toFixed(1)}/${sun.elevationDeg.toFixed(1)} deg, ${diffs.length} ` +
+                `values of ${tiles.length} tiles, |relit - ${style}| codes: ${JSON.stringify(r)}, coverage differs at ${alpha}`);
     if (alpha || r.p50 > bounds.p50 || r.p90 > bounds.p90 || r.p99 > bounds.p99 || r.mean > bounds.mean) {
-      console.error(`FAIL ${when}: beyond ${JSON.stringify(bounds)} or coverage differs`);
+      console.error(`FAIL ${when} ${style}: beyond ${JSON.stringify(bounds)} or coverage differs`);
       failed = true;
     }
   }

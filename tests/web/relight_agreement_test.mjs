@@ -21,8 +21,9 @@ const zoom = Number(zoomText);
 const instants = [['2024-06-21T05:30Z', 'clear'], ['2024-06-21T11:30Z', 'clear'], ['2024-06-21T18:30Z', 'clear'],
                   ['2024-06-21T09:00Z', 'overcast']];
 // Bounds in sRGB codes, at the measured values with the default light directions (128) and
-// components (6) at zoom 10: p99 3, 1, 2; the goal is 2. What remains is relief's sun
-// sweep against the reader's horizons interpolated between azimuths at shadow rims
+// components (6) at zoom 10: p99 3, 1, 2; the goal is 2. What remains is shadow rims:
+// relief's sun at one azimuth has its own rim error (its far field interpolated between sweep
+// lines placed by the azimuth), which horizons stored at other azimuths cannot share
 // (docs/web-map.md, "Agreement"). LIGHT_ARGS="--light-directions 64 ..." passes options to the
 // lightable run (studies).
 const bounds = {p50: 0, p90: 1, p99: 3, mean: 0.3};

@@ -4,6 +4,7 @@
 // georeferenced (insolation quick-looks), or as a side-car NAME_legend.png beside one whose
 // pixels must stay the data (the svf quick-look).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,8 @@ struct Legend {
     std::string title;  // what the picture shows, e.g. "sky view factor"
     std::string unit;   // after the upper value; may be empty
     float lo = 0, hi = 1;  // the values at the ramp's ends (the picture clamps beyond them)
-    Ramp ramp = grey_ramp;
+    // x in [0, 1] -> sRGB: a quantity's ramp, or a palette's colours over [lo, hi].
+    std::function<void(float x, std::uint8_t* rgb)> ramp = grey_ramp;
 };
 
 // Rows the strip takes.

@@ -1,6 +1,7 @@
 #include "app/tile_set_viewer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,18 @@ std::optional<Legend> tile_set_legend(const TilesArgs& a, const tiles::TileJob& 
         return Legend{insolation_title(a, q), solar::quantity_unit(q), s.insolation->lo, s.insolation->hi, inferno_ramp};
     }
     if (s.style->name() == "svf") return Legend{"sky view factor", "", tiles::kSvfBlack, 1.0f, grey_ramp};
+    if (s.style->name() == "color") {
+        // The palette's colours by height (fitted to the job's heights), over its stops' range.
+        const render::Palette& p = s.colors.palette;
+        const float lo = float(p.stops().front().value), hi = float(p.stops().back().value);
+        const std::string name = fs::path(p.name()).filename().string();
+        std::string title = "land colour by height (" + (name.empty() ? std::string("palette") : name) + ")";
+        if (s.colors.snow_line_m) title += ", snow above " + std::to_string(int(std::lround(*s.colors.snow_line_m))) + " m";
+        return Legend{title, "m", lo, hi, [p, lo, hi](float x, std::uint8_t* rgb) {
+                          const glm::vec3 c = p.srgb_at(lo + double(x) * (hi - lo));
+                          for (int k = 0; k < 3; ++k) rgb[k] = std::uint8_t(std::lround(std::clamp(c[k], 0.0f, 255.0f)));
+                      }};
+    }
     return std::nullopt;
 }
 

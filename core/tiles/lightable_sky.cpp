@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 
 #include "core/render/shading_state.hpp"
+#include "core/tiles/tile_set_info.hpp"
 
 namespace ts::tiles {
 namespace {
@@ -82,7 +84,9 @@ std::string lightable_json(const TileShading& s, const LightableSite& site, cons
     for (const render::PaletteStop& p : s.colors.palette.stops())
         stops += (stops.empty() ? "[" : ",[") + number(p.value) + "," + number(p.srgb.x) + "," + number(p.srgb.y) + "," +
                  number(p.srgb.z) + "]";
-    const std::string colors = "{\"name\":\"" + s.colors.palette.name() + "\",\"stops\":[" + stops +
+    // A palette read from a file is named by the file's name (no folders), quoted as JSON.
+    const std::string palette_name = std::filesystem::path(s.colors.palette.name()).filename().string();
+    const std::string colors = "{\"name\":" + json_string(palette_name) + ",\"stops\":[" + stops +
                                "],\"snow_line_m\":" + (s.colors.snow_line_m ? number(*s.colors.snow_line_m) : "null") +
                                ",\"exposure\":" + number(kColorExposure) + "}";
     return "{\"format\":\"terrashade-lightable\",\"version\":2,\"site\":{\"longitude_deg\":" + number(site.longitude_deg) +

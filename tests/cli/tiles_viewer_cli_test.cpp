@@ -3,6 +3,7 @@
 // file's metadata, shards merged into the single run's viewer byte for byte, and a folder's
 // other files (a user's own index.html) kept. The page itself in a browser:
 // docs/tiles/check_viewer.mjs (ctest test_tiles_generated_viewer).
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -120,6 +121,35 @@ TEST(TilesViewer, ShadedStylesHaveNoLegendSvfHasItsStretch) {
     ASSERT_EQ(run(tiles(kSmallCrop + " --zoom 10 --style svf --directions 8", d / "s")).exit_code, 0);
     EXPECT_TRUE(tilejson(d / "s").contains("legend"));
     EXPECT_TRUE(fs::exists(d / "s" / "legend.png"));
+}
+
+TEST(TilesViewer, ColorTilesHaveTheirPalettesLegend) {
+    const fs::path d = temp_dir("viewer_color");
+    ASSERT_EQ(run(tiles(kSmallCrop + " --zoom 10 --style color --directions 8 --snow-line 2000", d / "c")).exit_code, 0);
+    const auto tj = tilejson(d / "c");
+    ASSERT_TRUE(tj.contains("legend"));
+    EXPECT_NE(tj.at("description").get<std::string>().find("land colour by height (hypsometric), snow above 2000 m (m)"),
+              std::string::npos)
+        << tj.at("description");
+    // The strip's bar shows the palette: its low end the first stop's tint (sRGB 175 206 162),
+    // its high end the last's (199 197 193).
+    int w = 0, h = 0;
+    const auto rgb = ts::cli_test::read_rgb(d / "c" / "legend.png", w, h);
+    ASSERT_GT(w, 100);
+    auto colour_in_bar = [&](double at) {
+        int best = 0;
+        std::array<int, 3> found{};
+        for (int y = 0; y < h; ++y) {
+            const std::size_t i = (std::size_t(y) * std::size_t(w) + std::size_t(at * (w - 1))) * 3;
+            const int g = rgb[i + 1];
+            if (g > best && rgb[i] != rgb[i + 1]) best = g, found = {rgb[i], rgb[i + 1], rgb[i + 2]};
+        }
+        return found;
+    };
+    const auto low = colour_in_bar(0.03), high = colour_in_bar(0.97);
+    EXPECT_NEAR(low[1], 206, 6);
+    EXPECT_GT(low[1], low[0]);   // green lowlands
+    EXPECT_GT(high[0], high[2]);  // warm grey summits
 }
 
 TEST(TilesViewer, MbtilesMetadataSaysWhatTileJsonSays) {

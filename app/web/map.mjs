@@ -138,7 +138,7 @@ async function start() {
   const sunAt = (date) => sunPosition(date, site);
   const opts = {contrast: meta.relief_contrast, flatGrey: meta.flat_grey ?? 0.5};
   const tj = tilejson || {};
-  if (tj.name) $('title').textContent = `${tj.name}: relief by time of day`;
+  if (tj.name) $('title').textContent = `${tj.name} by time of day`;
   document.title = `terrashade: ${tj.name || 'lightable tiles'} by time of day`;
 
   // The tile work (relight_worker.mjs): in `workers` module workers, each keeping the tiles whose

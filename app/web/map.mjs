@@ -241,9 +241,10 @@ async function start() {
     $('colors-ramp').style.background =
       `linear-gradient(to right, ${stops.map(([v, r, g, b]) => `rgb(${r}, ${g}, ${b}) ${at(v)}%`).join(', ')})`;
     $('colors-labels').innerHTML = '';
-    for (const v of [lo, (lo + hi) / 2, hi]) {
+    // One stop (e.g. `grey`): one colour at every height.
+    for (const text of hi > lo ? [lo, (lo + hi) / 2, hi].map((v) => `${Math.round(v)} m`) : ['every height']) {
       const span = document.createElement('span');
-      span.textContent = `${Math.round(v)} m`;
+      span.textContent = text;
       $('colors-labels').appendChild(span);
     }
     $('colors-title').textContent = `land colour by height (${meta.colors.name || 'palette'})` +

@@ -20,11 +20,15 @@ export function readLightableTile(img) {
     throw new Error('not a terrashade lightable tile (no TSL1 header)');
   const u16 = (i) => d[i] | (d[i + 1] << 8);
   const u32 = (i) => (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)) >>> 0;
+  const version = d[4];
+  if (version !== 1 && version !== 2) throw new Error(`lightable tile version ${version}: this reader knows 1 and 2`);
   const K = d[5], D = u16(6), P = u16(8), S = u16(10), headerRows = u16(12);
   const separable = d[16] === 1, step = d[17];
   const levelW = u32(18), levelH = u32(22), x0 = u32(26), y0 = u32(30), tw = u16(34), th = u16(36);
-  const dirs = Array.from({length: P}, (_, j) => u16(38 + 2 * j));
-  const start = (38 + 2 * P + 3) & ~3;
+  // Version 2: horizon planes other than every keyInterval-th are differences from a prediction.
+  const keyInterval = version >= 2 ? u16(38) : 0, dirsAt = version >= 2 ? 40 : 38;
+  const dirs = Array.from({length: P}, (_, j) => u16(dirsAt + 2 * j));
+  const start = (dirsAt + 2 * P + 3) & ~3;
   const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
   const floats = new Float32Array(2 * P + 9 + 9 * K + 2 * K + nodes);
   const view = new DataView(d.buffer, d.byteOffset + start, 4 * floats.length);
@@ -50,6 +54,18 @@ export function readLightableTile(img) {
     for (let r = 0; r < th; ++r) {
       const row = k < 4 + K ? S + k * th + r : S + (4 + K) * th + r * P + (k - 4 - K);
       out.set(d.subarray(rowOf(row), rowOf(row) + tw), r * tw);
+    }
+    const j = k - 4 - K;
+    if (j > 0 && keyInterval > 0 && j % keyInterval !== 0 && dirs[j] === dirs[j - 1] + 1) {
+      // A difference from the code nearest the previous plane's horizon (the writer's
+      // predicted_horizon_codes, the same double operations in the same order).
+      const prev = texelPlane(k - 1), predict = new Uint8Array(256);
+      const pl = hLo[j - 1], pr = hHi[j - 1] - pl, l = hLo[j], rr = hHi[j] - l;
+      for (let q = 0; q < 256; ++q) {
+        const h = pl + q * pr / 255;
+        predict[q] = Math.floor(Math.min(255, Math.max(0, (h - l) / rr * 255)) + 0.5);
+      }
+      for (let t = 0; t < n; ++t) out[t] += predict[prev[t]];
     }
     return out;
   };

@@ -57,6 +57,33 @@ std::uint8_t quantise(double v, double lo, double hi) {
     return std::uint8_t(std::lround(std::clamp(t, 0.0, 1.0) * 255.0));
 }
 
+// Horizon planes are stored as differences from their prediction by the previous stored plane
+// except every kHorizonKeyInterval-th one and one whose direction does not follow the
+// previous plane's: a reader decodes a plane from at most this many. On the Grenoble crop's
+// zooms 8-13 (93 planes), a chain through all planes made the tiles 7.7% smaller than no
+// prediction, 32 5.4%, 8 ~1%; decoding a plane costs the reader one table look-up per texel
+// per plane of its chain (16 zoom-9 tiles' last plane: ~80 ms in Node at 32, ~440 ms unbounded).
+constexpr int kHorizonKeyInterval = 32;
+
+bool predicted_plane(const std::vector<SunBand>& bands, std::size_t j) {
+    return j % std::size_t(kHorizonKeyInterval) != 0 && bands[j].direction == bands[j - 1].direction + 1;
+}
+
+// The code of plane (lo, hi) nearest each code of the previous plane (prev_lo, prev_hi): the
+// ranges as the header stores them (float32), in double, with no multiply feeding an add (no
+// fused multiply-add may change a rounding), so the reader's JavaScript gets the same codes.
+std::array<std::uint8_t, 256> predicted_horizon_codes(double prev_lo, double prev_hi, double lo, double hi) {
+    const double pl = double(float(prev_lo)), pr = double(float(prev_hi)) - pl;
+    const double l = double(float(lo)), r = double(float(hi)) - l;
+    std::array<std::uint8_t, 256> out{};
+    for (int q = 0; q < 256; ++q) {
+        const double h = pl + double(q) * pr / 255.0;
+        const double t = (h - l) / r * 255.0;
+        out[std::size_t(q)] = std::uint8_t(std::floor(std::clamp(t, 0.0, 255.0) + 0.5));
+    }
+    return out;
+}
+
 void put_float(std::vector<std::uint8_t>& out, double v) {
     const float f = float(v);
     std::uint8_t b[4];
@@ -176,7 +203,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
 
     const int size = px.size;
     const int width = std::max(size, tx.width);
-    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 1, std::uint8_t(k_count)};
+    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 2, std::uint8_t(k_count)};
     put_u16(header, e.directions);
     put_u16(header, int(planes));
     put_u16(header, size);
@@ -187,6 +214,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     put_u32(header, std::uint32_t(tx.level_width)), put_u32(header, std::uint32_t(tx.level_height));
     put_u32(header, std::uint32_t(tx.x0)), put_u32(header, std::uint32_t(tx.y0));
     put_u16(header, tx.width), put_u16(header, tx.height);
+    put_u16(header, kHorizonKeyInterval);
     for (const SunBand& b : e.bands) put_u16(header, b.direction);
     while (header.size() % 4) header.push_back(0);
     for (std::size_t j = 0; j < planes; ++j) put_float(header, h_lo[j]), put_float(header, h_hi[j]);
@@ -234,6 +262,17 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
             texel(4 + k, t) = quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
         for (std::size_t j = 0; j < planes; ++j)
             texel(4 + k_count + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j]);
+    }
+    // Each horizon plane but the key ones keeps its difference from its prediction by the
+    // previous stored direction's (predicted_horizon_codes), last plane first so each
+    // prediction reads the plane before it unchanged.
+    for (std::size_t j = planes; j-- > 1;) {
+        if (!predicted_plane(e.bands, j)) continue;
+        const std::array<std::uint8_t, 256> predict = predicted_horizon_codes(h_lo[j - 1], h_hi[j - 1], h_lo[j], h_hi[j]);
+        for (std::size_t t = 0; t < n; ++t) {
+            std::uint8_t& q = texel(4 + k_count + int(j), t);
+            q = std::uint8_t(q - predict[texel(4 + k_count + int(j) - 1, t)]);
+        }
     }
     raster::PngEncoding encoding;
     encoding.deflater = raster::Deflater::libdeflate;

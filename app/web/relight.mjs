@@ -26,7 +26,9 @@ export function readLightableTile(img) {
   const separable = d[16] === 1, step = d[17];
   const levelW = u32(18), levelH = u32(22), x0 = u32(26), y0 = u32(30), tw = u16(34), th = u16(36);
   // Version 2: horizon planes other than every keyInterval-th are differences from a prediction.
-  const keyInterval = version >= 2 ? u16(38) : 0, dirsAt = version >= 2 ? 40 : 38;
+  // Horizon codes run 0..levels over each plane's range (version 1: 255).
+  const keyInterval = version >= 2 ? u16(38) : 0, levels = version >= 2 ? u16(40) : 255;
+  const dirsAt = version >= 2 ? 42 : 38;
   const dirs = Array.from({length: P}, (_, j) => u16(dirsAt + 2 * j));
   const start = (dirsAt + 2 * P + 3) & ~3;
   const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
@@ -36,6 +38,8 @@ export function readLightableTile(img) {
   // Each stored direction's horizon range (radians), by plane.
   const hLo = new Float32Array(P), hHi = new Float32Array(P);
   for (let j = 0; j < P; ++j) hLo[j] = floats[2 * j], hHi[j] = floats[2 * j + 1];
+  // What code 255 would stand for (sunVisibility reads h = hLo + q (hHi - hLo) / 255).
+  const hAt255 = Float64Array.from(hLo, (lo, j) => lo + (hHi[j] - lo) * 255 / levels);
   const f0 = 2 * P;
   const mean = floats.subarray(f0, f0 + 9), basis = floats.subarray(f0 + 9, f0 + 9 + 9 * K);
   const wLo = floats.subarray(f0 + 9 + 9 * K, f0 + 9 + 10 * K), wHi = floats.subarray(f0 + 9 + 10 * K, f0 + 9 + 11 * K);
@@ -61,9 +65,9 @@ export function readLightableTile(img) {
       // predicted_horizon_codes, the same double operations in the same order).
       const prev = texelPlane(k - 1), predict = new Uint8Array(256);
       const pl = hLo[j - 1], pr = hHi[j - 1] - pl, l = hLo[j], rr = hHi[j] - l;
-      for (let q = 0; q < 256; ++q) {
-        const h = pl + q * pr / 255;
-        predict[q] = Math.floor(Math.min(255, Math.max(0, (h - l) / rr * 255)) + 0.5);
+      for (let q = 0; q <= levels; ++q) {
+        const h = pl + q * pr / levels;
+        predict[q] = Math.floor(Math.min(levels, Math.max(0, (h - l) / rr * levels)) + 0.5);
       }
       for (let t = 0; t < n; ++t) out[t] += predict[prev[t]];
     }
@@ -73,7 +77,7 @@ export function readLightableTile(img) {
   const stored = new Int32Array(D).fill(-1);
   dirs.forEach((dir, j) => (stored[dir] = j));
   const planeOf = (dir) => (stored[dir] >= 0 ? 4 + K + stored[dir] : -1);
-  return {size: S, n, K, D, dirs, hLo, hHi, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
+  return {size: S, n, K, D, dirs, hLo, hHi: hAt255, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
 }

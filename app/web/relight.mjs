@@ -77,7 +77,8 @@ export function readLightableTile(img) {
   const stored = new Int32Array(D).fill(-1);
   dirs.forEach((dir, j) => (stored[dir] = j));
   const planeOf = (dir) => (stored[dir] >= 0 ? 4 + K + stored[dir] : -1);
-  return {size: S, n, K, D, dirs, hLo, hHi: hAt255, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
+  // hHi: what code 255 stands for (sunVisibility's scale); hTop: the range's top, code hLevels.
+  return {size: S, n, K, D, dirs, hLo, hHi: hAt255, hTop: hHi, hLevels: levels, mean, basis, wLo, wHi, planeOf, plane: texelPlane,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
 }

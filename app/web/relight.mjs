@@ -26,8 +26,12 @@ export function readLightableTile(img) {
   const K = d[5], D = u16(6), P = u16(8), S = u16(10), headerRows = u16(12);
   const separable = d[16] === 1, step = d[17];
   const levelW = u32(18), levelH = u32(22), x0 = u32(26), y0 = u32(30), tw = u16(34), th = u16(36);
-  const dirs = Array.from({length: P}, (_, j) => u16(38 + 2 * j));
-  const start = (38 + 2 * P + 3) & ~3;
+  // Horizon planes other than every keyInterval-th are differences from a prediction; their
+  // codes run 0..levels over each plane's range.
+  const keyInterval = u16(38), levels = u16(40);
+  const dirsAt = 42;
+  const dirs = Array.from({length: P}, (_, j) => u16(dirsAt + 2 * j));
+  const start = (dirsAt + 2 * P + 3) & ~3;
   const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
   const floats = new Float32Array(2 * P + 6 + 9 + 9 * K + 2 * K + nodes);
   const view = new DataView(d.buffer, d.byteOffset + start, 4 * floats.length);
@@ -35,6 +39,8 @@ export function readLightableTile(img) {
   // Each stored direction's horizon range (radians), by plane.
   const hLo = new Float32Array(P), hHi = new Float32Array(P);
   for (let j = 0; j < P; ++j) hLo[j] = floats[2 * j], hHi[j] = floats[2 * j + 1];
+  // What code 255 would stand for (sunVisibility reads h = hLo + q (hHi - hLo) / 255).
+  const hAt255 = Float64Array.from(hLo, (lo, j) => lo + (hHi[j] - lo) * 255 / levels);
   const albedoLo = floats.slice(2 * P, 2 * P + 3), albedoHi = floats.slice(2 * P + 3, 2 * P + 6);
   const f0 = 2 * P + 6;
   const mean = floats.subarray(f0, f0 + 9), basis = floats.subarray(f0 + 9, f0 + 9 + 9 * K);
@@ -56,14 +62,27 @@ export function readLightableTile(img) {
       const row = k < firstHorizon ? S + k * th + r : S + firstHorizon * th + r * P + (k - firstHorizon);
       out.set(d.subarray(rowOf(row), rowOf(row) + tw), r * tw);
     }
+    const j = k - firstHorizon;
+    if (j > 0 && keyInterval > 0 && j % keyInterval !== 0 && dirs[j] === dirs[j - 1] + 1) {
+      // A difference from the code nearest the previous plane's horizon (the writer's
+      // predicted_horizon_codes, the same double operations in the same order).
+      const prev = texelPlane(k - 1), predict = new Uint8Array(256);
+      const pl = hLo[j - 1], pr = hHi[j - 1] - pl, l = hLo[j], rr = hHi[j] - l;
+      for (let q = 0; q <= levels; ++q) {
+        const h = pl + q * pr / levels;
+        predict[q] = Math.floor(Math.min(levels, Math.max(0, (h - l) / rr * levels)) + 0.5);
+      }
+      for (let t = 0; t < n; ++t) out[t] += predict[prev[t]];
+    }
     return out;
   };
   // direction -> its index among the stored ones (-1: the sun never shines from there)
   const stored = new Int32Array(D).fill(-1);
   dirs.forEach((dir, j) => (stored[dir] = j));
   const planeOf = (dir) => (stored[dir] >= 0 ? firstHorizon + stored[dir] : -1);
-  return {size: S, n, K, D, dirs, hLo, hHi, mean, basis, wLo, wHi, planeOf, plane: texelPlane, firstHorizon,
-          albedoLo, albedoHi,
+  // hHi: what code 255 stands for (sunVisibility's scale); hTop: the range's top, code hLevels.
+  return {size: S, n, K, D, dirs, hLo, hHi: hAt255, hTop: hHi, hLevels: levels, mean, basis, wLo, wHi, planeOf,
+          plane: texelPlane, firstHorizon, albedoLo, albedoHi,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
 }

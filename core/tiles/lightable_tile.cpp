@@ -52,9 +52,43 @@ void jacobi_eigen(Matrix9& a, Matrix9& v) {
     }
 }
 
-std::uint8_t quantise(double v, double lo, double hi) {
+std::uint8_t quantise(double v, double lo, double hi, int levels = 255) {
     const double t = hi > lo ? (v - lo) / (hi - lo) : 0.0;
-    return std::uint8_t(std::lround(std::clamp(t, 0.0, 1.0) * 255.0));
+    return std::uint8_t(std::lround(std::clamp(t, 0.0, 1.0) * levels));
+}
+
+// The horizons' codes: 0..kHorizonLevels over each plane's range (7 bits). On the Grenoble crop
+// against 255 levels: zooms 8-13 13% smaller, agreement with relief unchanged at zooms 9-11
+// (p99 3/1/2/1 codes, mean +0.005); 95 levels 18% smaller with p99 still 3/1/2/1 at zoom 10 but
+// the noon maximum 10 -> 22 codes; 63 levels p99 4 at 05:30 (beyond the test's 3).
+constexpr int kHorizonLevels = 127;
+
+// Horizon planes are stored as differences from their prediction by the previous stored plane
+// except every kHorizonKeyInterval-th one and one whose direction does not follow the
+// previous plane's: a reader decodes a plane from at most this many. On the Grenoble crop's
+// zooms 8-13 (93 planes, 8-bit codes), a chain through all planes made the tiles 7.7% smaller than no
+// prediction, 32 5.4%, 8 ~1%; decoding a plane costs the reader one table look-up per texel
+// per plane of its chain (16 zoom-9 tiles' last plane: ~80 ms in Node at 32, ~440 ms unbounded).
+constexpr int kHorizonKeyInterval = 32;
+
+bool predicted_plane(const std::vector<SunBand>& bands, std::size_t j) {
+    return j % std::size_t(kHorizonKeyInterval) != 0 && bands[j].direction == bands[j - 1].direction + 1;
+}
+
+// The code of plane (lo, hi) nearest each code of the previous plane (prev_lo, prev_hi): the
+// ranges as the header stores them (float32), in double, with no multiply feeding an add (no
+// fused multiply-add may change a rounding), so the reader's JavaScript gets the same codes.
+std::array<std::uint8_t, 256> predicted_horizon_codes(double prev_lo, double prev_hi, double lo, double hi, int levels) {
+    const double pl = double(float(prev_lo)), pr = double(float(prev_hi)) - pl;
+    const double l = double(float(lo)), r = double(float(hi)) - l;
+    const double top = levels;
+    std::array<std::uint8_t, 256> out{};
+    for (int q = 0; q <= levels; ++q) {
+        const double h = pl + double(q) * pr / top;
+        const double t = (h - l) / r * top;
+        out[std::size_t(q)] = std::uint8_t(std::floor(std::clamp(t, 0.0, top) + 0.5));
+    }
+    return out;
 }
 
 void put_float(std::vector<std::uint8_t>& out, double v) {
@@ -187,6 +221,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
 
     const int size = px.size;
     const int width = std::max(size, tx.width);
+    const int levels = kHorizonLevels;
     std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 2, std::uint8_t(k_count)};
     put_u16(header, e.directions);
     put_u16(header, int(planes));
@@ -198,6 +233,8 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     put_u32(header, std::uint32_t(tx.level_width)), put_u32(header, std::uint32_t(tx.level_height));
     put_u32(header, std::uint32_t(tx.x0)), put_u32(header, std::uint32_t(tx.y0));
     put_u16(header, tx.width), put_u16(header, tx.height);
+    put_u16(header, kHorizonKeyInterval);
+    put_u16(header, levels);
     for (const SunBand& b : e.bands) put_u16(header, b.direction);
     while (header.size() % 4) header.push_back(0);
     for (std::size_t j = 0; j < planes; ++j) put_float(header, h_lo[j]), put_float(header, h_hi[j]);
@@ -250,7 +287,18 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
             texel(kFirstTransferPlane + k, t) =
                 quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
         for (std::size_t j = 0; j < planes; ++j)
-            texel(first_horizon + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j]);
+            texel(first_horizon + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j], levels);
+    }
+    // Each horizon plane but the key ones keeps its difference from its prediction by the
+    // previous stored direction's (predicted_horizon_codes), last plane first so each
+    // prediction reads the plane before it unchanged.
+    for (std::size_t j = planes; j-- > 1;) {
+        if (!predicted_plane(e.bands, j)) continue;
+        const std::array<std::uint8_t, 256> predict = predicted_horizon_codes(h_lo[j - 1], h_hi[j - 1], h_lo[j], h_hi[j], levels);
+        for (std::size_t t = 0; t < n; ++t) {
+            std::uint8_t& q = texel(first_horizon + int(j), t);
+            q = std::uint8_t(q - predict[texel(first_horizon + int(j) - 1, t)]);
+        }
     }
     raster::PngEncoding encoding;
     encoding.deflater = raster::Deflater::libdeflate;

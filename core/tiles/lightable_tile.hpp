@@ -20,14 +20,22 @@
 //       cover, as `color` colours the texel), a_c = lo_c + q / 255 (hi_c - lo_c)
 //     K planes: the window's principal components of the diffuse transfer T_d (9 SH coefficients,
 //       bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k + q / 255 (hi_k - lo_k)
-//     P planes: horizon elevations at the stored azimuths, h = lo_p + q / 255 (hi_p - lo_p)
-//       radians, clamped to the sun's band in that direction (sun_bands; a horizon below it
+//     P planes: horizon elevations at the stored azimuths, h = lo_p + q / L (hi_p - lo_p)
+//       radians (q = 0..L, L the header's horizon levels), clamped to the sun's band in that direction (sun_bands; a horizon below it
 //       lets every sun there through, one above it hides every sun there), so most of a plane is
-//       one value; azimuths the sun never reaches at the tile set's latitude are left out
+//       one value; azimuths the sun never reaches at the tile set's latitude are left out.
+//       Stored as differences (mod 256, every texel) from a prediction by the plane before:
+//       plane j keeps q_j - pred_j(q_{j-1}), pred_j(q) = floor(clamp((lo_{j-1} + q (hi_{j-1} -
+//       lo_{j-1}) / L - lo_j) / (hi_j - lo_j) * L, 0, L) + 0.5) in double from the header's
+//       float32 ranges, evaluated in that order, except plane 0, every key-interval-th plane and a plane whose
+//       direction is not the previous plane's + 1 (those keep q_j); neighbouring azimuths'
+//       horizons differ little, so most differences are 0. Rows interleave (row r of plane j is
+//       row r * P + j of the block).
 // Header (little-endian): "TSL1", u8 version 2, u8 K, u16 D (light directions: azimuth of
 // direction d = 360 d / D degrees clockwise from north), u16 P, u16 size, u16 header rows, u16 W,
 // u8 separable, u8 grid step, u32 level width, u32 level height, u32 window x0, u32 window y0,
-// u16 window width, u16 window height, P u16 (the stored directions, ascending), zero padding
+// u16 window width, u16 window height, u16 horizon key interval (0: no plane is predicted),
+// u16 horizon levels L, P u16 (the stored directions, ascending), zero padding
 // to 4 bytes, then float32: P pairs (horizon lo, hi of each plane: the tile's range within the
 // sun's band in that direction, clamped there); albedo lo[3], hi[3]; mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
 // pixels sample the level, in level texel-centre coordinates minus the window's origin:

@@ -153,6 +153,20 @@ Palette Palette::fitted(double lowest_m, double highest_m) const {
     return p;
 }
 
+Palette Palette::with_sea_tints(double deepest_m) const {
+    Palette p = *this;
+    std::erase_if(p.stops_, [](const PaletteStop& s) { return !s.percent && s.value < 0.0; });
+    // Light blue at the shore, deepening over the first third of the depth (shelves and slopes,
+    // where the sea floor's relief is), then to deep blue on the abyssal plains.
+    const double deep = std::min(deepest_m, -1.0);
+    const PaletteStop sea[] = {{deep, false, {112, 150, 196}}, {0.3 * deep, false, {160, 196, 222}}, {0.0, false, {190, 218, 232}}};
+    p.stops_.insert(p.stops_.begin(), std::begin(sea), std::end(sea));
+    // Stable: the sea's 0 m stop stays before the land's, so 0 m itself is land.
+    std::stable_sort(p.stops_.begin(), p.stops_.end(),
+                     [](const PaletteStop& a, const PaletteStop& b) { return a.value < b.value; });
+    return p;
+}
+
 glm::vec3 Palette::srgb_at(double h) const {
     if (stops_.empty() || std::isnan(h)) return glm::vec3(0.0f);
     if (h <= stops_.front().value) return stops_.front().srgb;

@@ -37,6 +37,10 @@ public:
     // The same palette with percent stops placed on [lowest, highest] metres (the whole job's
     // range, so that crops, tiles and blocks of one DEM get one colour per height).
     Palette fitted(double lowest_m, double highest_m) const;
+    // The same (fitted) palette with the bathymetric tints of the cartographic tradition below
+    // 0 m, light blue at the shore to deep blue at `deepest_m` (docs/colors.md); stops below 0 m
+    // it had are replaced.
+    Palette with_sea_tints(double deepest_m) const;
     bool has_percent_stops() const;
 
     // The sRGB colour (0..255) at a height; stops with percent are read as if fitted to [0, 100].

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/dem/statistics.hpp"
 #include "core/util/angles.hpp"
@@ -17,25 +18,35 @@ constexpr double kSnowBlendM = 75.0;
 
 ColorDesign fit_colors(const ColorDesign& design, double lowest_m, double highest_m) {
     ColorDesign d = design;
-    d.palette = design.palette.fitted(lowest_m, highest_m);
+    d.fitted = true;
+    d.sea_floor = lowest_m < kSeaFloorBelowM;
+    // Only the built-in hypsometric tints split at sea level: a user's N% keeps gdaldem's meaning
+    // (of the whole range).
+    if (d.sea_floor && design.palette.name() == kDefaultPalette && design.palette.has_percent_stops())
+        d.palette = design.palette.fitted(0.0, std::max(highest_m, 1.0)).with_sea_tints(lowest_m);
+    else
+        d.palette = design.palette.fitted(lowest_m, highest_m);
     return d;
 }
 
 ColorDesign fit_colors(const ColorDesign& design, const dem::Dem& dem) {
-    if (!design.palette.has_percent_stops()) return design;
+    if (design.fitted) return design;
     const dem::HeightStats stats = dem::height_stats(dem);
     if (stats.valid_count == 0) return fit_colors(design, 0.0, 0.0);
     return fit_colors(design, stats.min, stats.max);
 }
 
 MaterialRaster palette_materials(const terrain::HeightGrid& g, const NormalField& n, const ColorDesign& design,
-                                 const std::vector<std::uint8_t>& worldcover, const MaterialRule& rule) {
+                                 const std::vector<std::uint8_t>& worldcover, const MaterialRule& given_rule) {
     const std::size_t count = std::size_t(g.width) * std::size_t(g.height);
     MaterialRaster m;
     m.albedo_r.resize(count), m.albedo_g.resize(count), m.albedo_b.resize(count);
     m.ks.assign(count, 0.0f), m.alpha.assign(count, 1.0f);
     m.water.assign(count, 0);
     m.surface.assign(count, Surface::bare);
+    // A DEM with a sea floor has no sea surface to find (ColorDesign::sea_floor).
+    MaterialRule rule = given_rule;
+    if (design.sea_floor) rule.sea_level_m = -std::numeric_limits<double>::infinity();
     const MaterialParams water = surface_params(Surface::water);
     const MaterialParams snow = surface_params(Surface::snow_ice);
     for (int r = 0; r < g.height; ++r)

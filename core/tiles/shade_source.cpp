@@ -7,6 +7,7 @@
 #include "core/solar/insolation_map.hpp"
 #include "core/quality/visibility_quality.hpp"
 #include "core/terrain/dem_height_grid.hpp"
+#include "core/terrain/isotropic_rows.hpp"
 #include "core/tiles/block_shading.hpp"
 #include "core/tiles/dem_level.hpp"
 #include "core/visibility/far_field_horizons.hpp"
@@ -28,6 +29,8 @@ std::vector<Rect> level_blocks(int width, int height, int block) {
 ShadeSource make_shade_source(const dem::Dem& dem, const TileShading& s, int level, double vertical_scale,
                               ProgressBar* progress) {
     dem::Dem lvl = dem_level(dem, level, s.threads);
+    // No streaks along the meridians near the poles: rows of narrow texels averaged to square ones.
+    terrain::make_rows_isotropic(terrain::metric_view(lvl), lvl.z);
     ShadeSource out;
     out.level = level;
     out.width = lvl.width, out.height = lvl.height;

@@ -141,5 +141,37 @@ TEST(PaletteMaterials, PercentStopsFollowTheWholeDemNotAWindow) {
     EXPECT_EQ(ma.albedo_g[a.grid.index(0, 1)], mb.albedo_g[b.grid.index(0, 0)]);
 }
 
+TEST(PaletteMaterials, ADemWithTheSeaFloorGetsSeaTintsAndNoSeaSurface) {
+    // ETOPO-like: 6000 m below to 3000 m above sea level.
+    const ColorDesign d = fit_colors(ColorDesign{}, -6000, 3000);
+    EXPECT_TRUE(d.sea_floor);
+    const Palette& p = d.palette;
+    const glm::vec3 shore = p.srgb_at(-1), deep = p.srgb_at(-6000), land = p.srgb_at(0), low_land = p.srgb_at(10);
+    EXPECT_GT(shore.z, shore.x + 30);  // blue below sea level
+    EXPECT_GT(deep.z, deep.x + 60);
+    EXPECT_LT(luminance(linear_of(deep)), luminance(linear_of(shore)));  // darker with depth
+    EXPECT_EQ(land, glm::vec3(175, 206, 162));  // the land's first tint at 0 m, not the sea's
+    EXPECT_GT(low_land.y, low_land.z);          // green lowlands
+    EXPECT_NEAR(p.srgb_at(3000).x, 199, 0.5);   // the land tints span [0, highest]
+    // A second fit keeps the first (a window of the DEM does not refit it).
+    EXPECT_EQ(fit_colors(d, -10, 10).palette.describe(), p.describe());
+    // The sea floor is terrain: no texel below sea level is water unless it is a void.
+    Grid g(3, 3, -3000, -100);
+    g.voids[g.grid.index(2, 2)] = 1;
+    g.grid.void_mask = g.voids;
+    const MaterialRaster m = palette_materials(g.grid, g.normals, d);
+    EXPECT_EQ(m.water[g.grid.index(0, 0)], 0);
+    EXPECT_EQ(m.water[g.grid.index(1, 1)], 0);
+    EXPECT_EQ(m.water[g.grid.index(2, 2)], 1);
+    // A DEM whose lowest land is a depression (the Dead Sea's shore) is not one with a sea floor.
+    EXPECT_FALSE(fit_colors(ColorDesign{}, -430, 1000).sea_floor);
+    // A user's percent stops keep gdaldem's meaning: of the whole range.
+    ColorDesign user;
+    user.palette = Palette::parse("0% 0 0 0\n100% 255 255 255\n", "user.txt");
+    const ColorDesign fitted = fit_colors(user, -6000, 3000);
+    EXPECT_TRUE(fitted.sea_floor);
+    EXPECT_NEAR(fitted.palette.srgb_at(-1500).x, 127.5, 0.5);
+}
+
 }  // namespace
 }  // namespace ts::render

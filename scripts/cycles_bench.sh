@@ -30,4 +30,14 @@ for albedo in 0.3 0.8; do
     done
   done
 done
+# The flat check: a level 24 x 24 plane, where terrashade's visibility is trivially open and
+# Cycles' units can be checked by hand (sun albedo E sin h / pi, sky albedo E_h / pi).
+gdal_create -q -outsize 24 24 -bands 1 -ot Float32 -burn 1000 -a_ullr 0 0 2160 -2160 \
+  -a_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' "$work/flat.tif"
+for albedo in 0.3 0.8; do
+  for sky in clear overcast; do
+    "$root/scripts/cycles_reference.sh" "$build" "$work/flat.tif" "$work/flat" "$sky" "$albedo" 0 "$samples" 135 20 |
+      sed 's/^/flat_/' | tee -a "$csv"
+  done
+done
 echo "wrote $csv"

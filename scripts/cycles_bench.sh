@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# terrashade against Blender Cycles on a held-out DEM (docs/accuracy.md, "Against Blender Cycles"):
+# the Anatolia SRTM3 tile reprojected to a local transverse Mercator at 90 m (scale factor 1 at
+# the centre, so metres on the grid are metres on the ground), a 160 x 160 crop with 1989 m of
+# relief; sun 20 degrees up in the south-east under terrashade's clear sky, and its overcast
+# sky; Cycles with 0 bounces (direct light, what terrashade computes) and 4 (the reference);
+# albedo 0.3 and 0.8. Writes docs/charts/cycles_bench.csv (about 5 minutes on 2 cores).
+# Usage: scripts/cycles_bench.sh [BUILD_DIR] [SAMPLES]
+#   BUILD_DIR default build/release; needs its terrashade and sky_equirect_dump
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build=${1:-$root/build/release}
+samples=${2:-256}
+D="$root/../shared/data/dem"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+csv="$root/docs/charts/cycles_bench.csv"
+
+# Square metric texels for Cycles' mesh; terrashade reads the same file.
+gdalwarp -q -t_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' \
+  -tr 90 90 -r cubic -ot Float32 -dstnodata -32768 "$D/srtm3_N39E040_1000px.tif" "$work/anatolia_tm90.tif"
+gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
+
+echo "case,sky,sun_elevation,albedo,bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit" >"$csv"
+for albedo in 0.3 0.8; do
+  for sky in clear overcast; do
+    for bounces in 0 4; do
+      "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" "$bounces" "$samples" \
+        135 20 | tee -a "$csv"
+    done
+  done
+done
+# The flat check: a level 24 x 24 plane, where terrashade's visibility is trivially open and
+# Cycles' units can be checked by hand (sun albedo E sin h / pi, sky albedo E_h / pi).
+gdal_create -q -outsize 24 24 -bands 1 -ot Float32 -burn 1000 -a_ullr 0 0 2160 -2160 \
+  -a_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' "$work/flat.tif"
+for albedo in 0.3 0.8; do
+  for sky in clear overcast; do
+    "$root/scripts/cycles_reference.sh" "$build" "$work/flat.tif" "$work/flat" "$sky" "$albedo" 0 "$samples" 135 20 |
+      sed 's/^/flat_/' | tee -a "$csv"
+  done
+done
+echo "wrote $csv"

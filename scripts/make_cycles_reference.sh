@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The stored Blender Cycles references of tests/cli/cycles_reference_cli_test.cpp
+# (docs/accuracy.md, "Against Blender Cycles"): a 64 x 64 crop of the Anatolia SRTM3 tile in a
+# local transverse Mercator at 90 m (1714 m of relief) and Cycles' luminance on it, grey Lambert
+# albedo 0.3, 4 bounces, 1024 samples, under terrashade's clear sky with the sun 20 degrees up
+# at azimuth 135 and under its overcast sky (each sky's ground albedo 0.3). About 1 minute.
+# Usage: scripts/make_cycles_reference.sh [BUILD_DIR]   (needs blender, oiiotool, python3-gdal)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build=${1:-$root/build/release}
+D="$root/../shared/data/dem"
+dest="$root/tests/render/reference"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$dest"
+
+gdalwarp -q -t_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' \
+  -tr 90 90 -r cubic -ot Float32 -dstnodata -32768 "$D/srtm3_N39E040_1000px.tif" "$work/anatolia_tm90.tif"
+gdal_translate -q -srcwin 40 552 64 64 -co COMPRESS=DEFLATE -co PREDICTOR=3 "$work/anatolia_tm90.tif" \
+  "$dest/anatolia_tm90_64.tif"
+
+for sky in clear overcast; do
+  "$build/tests/light/sky_equirect_dump" "$sky:albedo=0.3" 135 20 1024 "$work/sky_$sky" >/dev/null
+  blender -b --factory-startup -P "$root/scripts/cycles_reference.py" -- "$dest/anatolia_tm90_64.tif" \
+    "$work/cycles_$sky.tif" --sky map --sky-map "$work/sky_$sky" --albedo 0.3 --bounces 4 --samples 1024 \
+    | grep cycles_seconds
+  # Rec. 709 luminance, one float32 channel.
+  oiiotool "$work/cycles_$sky.tif" --chsum:weight=0.2126,0.7152,0.0722 -d float --compression zip \
+    -o "$dest/cycles_${sky}_e20_a0.3_b4.exr"
+done
+ls -l "$dest"

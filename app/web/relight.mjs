@@ -39,8 +39,6 @@ export function readLightableTile(img) {
   // Each stored direction's horizon range (radians), by plane.
   const hLo = new Float32Array(P), hHi = new Float32Array(P);
   for (let j = 0; j < P; ++j) hLo[j] = floats[2 * j], hHi[j] = floats[2 * j + 1];
-  // What code 255 would stand for (sunVisibility reads h = hLo + q (hHi - hLo) / 255).
-  const hAt255 = Float64Array.from(hLo, (lo, j) => lo + (hHi[j] - lo) * 255 / levels);
   const albedoLo = floats.slice(2 * P, 2 * P + 3), albedoHi = floats.slice(2 * P + 3, 2 * P + 6);
   const f0 = 2 * P + 6;
   const mean = floats.subarray(f0, f0 + 9), basis = floats.subarray(f0 + 9, f0 + 9 + 9 * K);
@@ -80,8 +78,7 @@ export function readLightableTile(img) {
   const stored = new Int32Array(D).fill(-1);
   dirs.forEach((dir, j) => (stored[dir] = j));
   const planeOf = (dir) => (stored[dir] >= 0 ? firstHorizon + stored[dir] : -1);
-  // hHi: what code 255 stands for (sunVisibility's scale); hTop: the range's top, code hLevels.
-  return {size: S, n, K, D, dirs, hLo, hHi: hAt255, hTop: hHi, hLevels: levels, mean, basis, wLo, wHi, planeOf,
+  return {size: S, n, K, D, dirs, hLo, hHi, hLevels: levels, mean, basis, wLo, wHi, planeOf,
           plane: texelPlane, firstHorizon, albedoLo, albedoHi,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
@@ -199,7 +196,7 @@ export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
     const p = tile.planeOf(d);
     if (p < 0) return null;
     const j = p - tile.firstHorizon;
-    return {q: tile.plane(p), lo: tile.hLo[j], scale: (tile.hHi[j] - tile.hLo[j]) / 255};
+    return {q: tile.plane(p), lo: tile.hLo[j], scale: (tile.hHi[j] - tile.hLo[j]) / tile.hLevels};
   };
   const a = side(d0), b = side(d1);
   for (let k = 0; k < n; ++k) {
@@ -209,19 +206,26 @@ export function sunVisibility(tile, light, out = new Float32Array(tile.n)) {
   return out;
 }
 
-// Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
-export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
-  const {n, K, mean, basis, wLo, wHi, valid} = tile;
-  // The sky's light per principal component: <mean, L> + sum_k w_k <basis_k, L>.
+// The sky `sky` (9 SH coefficients) through a texel's transfer, T = mean + sum_k w_k basis_k
+// with w_k = lo_k + q_k (hi_k - lo_k) / 255: <T, sky> = base + sum_k wk[k] q_k.
+function skyThroughTransfer(tile, sky) {
+  const {K, mean, basis, wLo, wHi} = tile;
   let base = 0;
-  for (let i = 0; i < 9; ++i) base += mean[i] * light.skyLum[i];
+  for (let i = 0; i < 9; ++i) base += mean[i] * sky[i];
   const wk = new Float64Array(K);
   for (let k = 0; k < K; ++k) {
     let b = 0;
-    for (let i = 0; i < 9; ++i) b += basis[9 * k + i] * light.skyLum[i];
+    for (let i = 0; i < 9; ++i) b += basis[9 * k + i] * sky[i];
     wk[k] = b * (wHi[k] - wLo[k]) / 255;
     base += b * wLo[k];
   }
+  return {base, wk};
+}
+
+// Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
+export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
+  const {n, K, valid} = tile;
+  const {base, wk} = skyThroughTransfer(tile, light.skyLum);
   const planes = [];
   for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
@@ -248,24 +252,19 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
 // and the sun, times exposure / lum(L_flat) as `color` exposes it (kColorExposure, from
 // lightable.json). Every texel is Lambert: water's mirror and snow's sheen are not stored.
 export function texelColor(tile, light, exposure) {
-  const {n, K, mean, basis, wLo, wHi, valid, albedoLo, albedoHi} = tile;
+  const {n, K, valid, albedoLo, albedoHi} = tile;
   const planes = [];
   for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
   const normal = vis ? texelNormals(tile) : null;
   const [sx, sy, sz] = light.s;
   const scale = exposure / light.flat;
-  // Per channel: the sky's light through the mean transfer and per unit of each component.
+  // Per channel, interleaved (wk[3 k + c]) for the loop below.
   const base = new Float64Array(3), wk = new Float64Array(3 * K);
   for (let c = 0; c < 3; ++c) {
-    const sky = light.skyRgb[c];
-    for (let i = 0; i < 9; ++i) base[c] += mean[i] * sky[i];
-    for (let k = 0; k < K; ++k) {
-      let b = 0;
-      for (let i = 0; i < 9; ++i) b += basis[9 * k + i] * sky[i];
-      wk[3 * k + c] = b * (wHi[k] - wLo[k]) / 255;
-      base[c] += b * wLo[k];
-    }
+    const through = skyThroughTransfer(tile, light.skyRgb[c]);
+    base[c] = through.base;
+    for (let k = 0; k < K; ++k) wk[3 * k + c] = through.wk[k];
   }
   const aR = tile.plane(4), aG = tile.plane(5), aB = tile.plane(6);
   const aLo = albedoLo, aStep = [0, 1, 2].map((c) => (albedoHi[c] - albedoLo[c]) / 255);
@@ -291,8 +290,8 @@ export function texelColor(tile, light, exposure) {
 
 // The filmic curve and sRGB encoding of an exposed channel value (the twin of srgb8_code,
 // core/render/tone_map.hpp: ts_filmic and ts_srgb_oetf of core/raster/display_shared.h), in
-// float as the C++: the smallest value of each code found once by bisection, so a pixel costs a
-// binary search instead of a pow.
+// float as the C++: the smallest value of each code found once by bisection, then tabulated, so
+// a pixel costs a table look-up instead of a pow.
 const f32 = Math.fround;
 function srgb8Code(x) {
   x = Math.max(f32(x), 0);
@@ -402,21 +401,36 @@ function pixelTaps(tile) {
 // A separable tile's taps per pixel column and per pixel row (window indices and weights).
 function axisTaps(tile) {
   if (tile.axisTaps) return tile.axisTaps;
-  const {size, tw} = tile;
-  const make = (coordOf, origin, levelSize, stride) => {
+  const {size} = tile;
+  const make = (coordOf, origin, levelSize) => {
     const index = new Int32Array(4 * size), weight = new Float64Array(4 * size);
     const t = {i: new Int32Array(4), w: new Float64Array(4)};
     for (let p = 0; p < size; ++p) {
       taps(coordOf(p), origin, levelSize, t);
-      for (let k = 0; k < 4; ++k) index[4 * p + k] = t.i[k] * stride, weight[4 * p + k] = t.w[k];
+      for (let k = 0; k < 4; ++k) index[4 * p + k] = t.i[k], weight[4 * p + k] = t.w[k];
     }
     return {index, weight};
   };
   tile.axisTaps = {
-    cols: make((i) => tile.coords[i], tile.x0, tile.levelW, 1),
-    rows: make((j) => tile.coords[size + j], tile.y0, tile.levelH, tw),
+    cols: make((i) => tile.coords[i], tile.x0, tile.levelW),
+    rows: make((j) => tile.coords[size + j], tile.y0, tile.levelH),
   };
   return tile.axisTaps;
+}
+
+// The first of a separable tile's two Catmull-Rom passes (Catmull-Rom is a product of its axes):
+// along each window row, for every pixel column, into `across` (th x size).
+function resampleAcross(tile, texels, across) {
+  const {size, tw, th} = tile;
+  const {index: ci, weight: cw} = axisTaps(tile).cols;
+  for (let r = 0; r < th; ++r) {
+    const base = r * tw, o = r * size;
+    for (let i = 0, t = 0; i < size; ++i, t += 4) {
+      across[o + i] = cw[t] * texels[base + ci[t]] + cw[t + 1] * texels[base + ci[t + 1]] +
+                      cw[t + 2] * texels[base + ci[t + 2]] + cw[t + 3] * texels[base + ci[t + 3]];
+    }
+  }
+  return across;
 }
 
 // Resamples a per-texel value of the window (e.g. texelGrey) to the tile's pixels by Catmull-Rom,
@@ -424,24 +438,13 @@ function axisTaps(tile) {
 export function resampleToPixels(tile, texels, out = new Float32Array(tile.size * tile.size)) {
   const {size, coverage} = tile;
   if (tile.separable) {
-    // In two passes, as Catmull-Rom is a product of its axes: along each window row for every
-    // pixel column, then down those for every pixel row (~4x fewer operations than 16 taps).
-    const {cols, rows} = axisTaps(tile);
-    const {tw, th} = tile;
-    const across = tile.across ??= new Float64Array(th * size);
-    for (let r = 0; r < th; ++r) {
-      const base = r * tw, o = r * size;
-      for (let i = 0; i < size; ++i) {
-        const t = 4 * i, ci = cols.index, cw = cols.weight;
-        across[o + i] = cw[t] * texels[base + ci[t]] + cw[t + 1] * texels[base + ci[t + 1]] +
-                        cw[t + 2] * texels[base + ci[t + 2]] + cw[t + 3] * texels[base + ci[t + 3]];
-      }
-    }
-    const ri = rows.index, rw = rows.weight;
+    // In two passes (~4x fewer operations than 16 taps): resampleAcross, then down its columns
+    // for every pixel row.
+    const across = resampleAcross(tile, texels, tile.across ??= new Float64Array(tile.th * size));
+    const {index: ri, weight: rw} = axisTaps(tile).rows;
     for (let j = 0; j < size; ++j) {
       const t = 4 * j;
-      // rows.index holds r * tw: the row's start in `across` is r * size.
-      const a0 = (ri[t] / tw) * size, a1 = (ri[t + 1] / tw) * size, a2 = (ri[t + 2] / tw) * size, a3 = (ri[t + 3] / tw) * size;
+      const a0 = ri[t] * size, a1 = ri[t + 1] * size, a2 = ri[t + 2] * size, a3 = ri[t + 3] * size;
       const w0 = rw[t], w1 = rw[t + 1], w2 = rw[t + 2], w3 = rw[t + 3];
       for (let i = 0, k = j * size; i < size; ++i, ++k) {
         out[k] = coverage[k] ? w0 * across[a0 + i] + w1 * across[a1 + i] + w2 * across[a2 + i] + w3 * across[a3 + i] : NaN;
@@ -478,7 +481,7 @@ export function relightTile(tile, light, out, options = {}) {
 function relightColors(tile, light, out, exposure) {
   const texels = texelColor(tile, light, exposure);
   const {size, coverage} = tile;
-  if (!FILMIC_TABLE || !tile.separable) {
+  if (!tile.separable) {
     const [r, g, b] = texels.map((t) => resampleToPixels(tile, t));
     for (let k = 0, o = 0; k < r.length; ++k, o += 4) {
       if (Number.isNaN(r[k] + g[k] + b[k])) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
@@ -487,33 +490,15 @@ function relightColors(tile, light, out, exposure) {
     }
     return out;
   }
-  // As resampleToPixels' two passes, the three channels at once, each pixel encoded as it is
-  // made with filmicCode's table inlined (the hot loop).
-  const {cols, rows} = axisTaps(tile);
-  const {tw, th} = tile;
-  const across = tile.acrossRgb ??= [0, 1, 2].map(() => new Float64Array(th * size));
-  const ci = cols.index, cw = cols.weight;
-  for (let c = 0; c < 3; ++c) {
-    const t = texels[c], a = across[c];
-    for (let r = 0; r < th; ++r) {
-      const base = r * tw, o = r * size;
-      for (let i = 0, q = 0; i < size; ++i, q += 4) {
-        a[o + i] = cw[q] * t[base + ci[q]] + cw[q + 1] * t[base + ci[q + 1]] +
-                   cw[q + 2] * t[base + ci[q + 2]] + cw[q + 3] * t[base + ci[q + 3]];
-      }
-    }
-  }
-  const {code, step} = FILMIC_TABLE, scale = FILMIC_BINS / FILMIC_TOP, last = FILMIC_BINS - 1;
-  const enc = (x) => {
-    if (!(x > 0)) return 0;
-    if (x >= FILMIC_TOP) return 255;
-    const bin = Math.min(last, Math.floor(x * scale));
-    return code[bin] + (x >= step[bin] ? 1 : 0);
-  };
-  const [ar, ag, ab] = across, ri = rows.index, rw = rows.weight;
+  // resampleToPixels' two passes, the second for the three channels at once, each pixel encoded
+  // as it is made.
+  const across = tile.acrossRgb ??= [0, 1, 2].map(() => new Float64Array(tile.th * size));
+  for (let c = 0; c < 3; ++c) resampleAcross(tile, texels[c], across[c]);
+  const [ar, ag, ab] = across;
+  const {index: ri, weight: rw} = axisTaps(tile).rows;
   for (let j = 0; j < size; ++j) {
     const t = 4 * j;
-    const a0 = (ri[t] / tw) * size, a1 = (ri[t + 1] / tw) * size, a2 = (ri[t + 2] / tw) * size, a3 = (ri[t + 3] / tw) * size;
+    const a0 = ri[t] * size, a1 = ri[t + 1] * size, a2 = ri[t + 2] * size, a3 = ri[t + 3] * size;
     const w0 = rw[t], w1 = rw[t + 1], w2 = rw[t + 2], w3 = rw[t + 3];
     for (let i = 0, k = j * size, o = 4 * k; i < size; ++i, ++k, o += 4) {
       if (!coverage[k]) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
@@ -521,7 +506,7 @@ function relightColors(tile, light, out, exposure) {
       const y = w0 * ag[a0 + i] + w1 * ag[a1 + i] + w2 * ag[a2 + i] + w3 * ag[a3 + i];
       const z = w0 * ab[a0 + i] + w1 * ab[a1 + i] + w2 * ab[a2 + i] + w3 * ab[a3 + i];
       if (x !== x || y !== y || z !== z) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
-      out[o] = enc(x), out[o + 1] = enc(y), out[o + 2] = enc(z), out[o + 3] = 255;
+      out[o] = filmicCode(x), out[o + 1] = filmicCode(y), out[o + 2] = filmicCode(z), out[o + 3] = 255;
     }
   }
   return out;

@@ -11,14 +11,12 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build=${1:-$root/build/release}
 samples=${2:-256}
-D="$root/../shared/data/dem"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 csv="$root/docs/charts/cycles_bench.csv"
 
 # Square metric texels for Cycles' mesh; terrashade reads the same file.
-gdalwarp -q -t_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' \
-  -tr 90 90 -r cubic -ot Float32 -dstnodata -32768 "$D/srtm3_N39E040_1000px.tif" "$work/anatolia_tm90.tif"
+"$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
 gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
 
 echo "case,sky,sun_elevation,albedo,bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit" >"$csv"

@@ -11,8 +11,7 @@ build=${1:-$root/build/release}
 samples=${2:-256}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-gdalwarp -q -t_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' \
-  -tr 90 90 -r cubic -ot Float32 -dstnodata -32768 "$root/../shared/data/dem/srtm3_N39E040_1000px.tif" "$work/tm90.tif"
+"$root/scripts/cycles_held_out_dem.sh" "$work/tm90.tif"
 gdal_translate -q -srcwin 20 480 160 160 "$work/tm90.tif" "$work/crop.tif"
 for sky in clear overcast; do
   "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" 0.3 4 "$samples" 135 20

@@ -8,14 +8,12 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build=${1:-$root/build/release}
-D="$root/../shared/data/dem"
 dest="$root/tests/render/reference"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$dest"
 
-gdalwarp -q -t_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' \
-  -tr 90 90 -r cubic -ot Float32 -dstnodata -32768 "$D/srtm3_N39E040_1000px.tif" "$work/anatolia_tm90.tif"
+"$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
 gdal_translate -q -srcwin 40 552 64 64 -co COMPRESS=DEFLATE -co PREDICTOR=3 "$work/anatolia_tm90.tif" \
   "$dest/anatolia_tm90_64.tif"
 

@@ -23,6 +23,7 @@
 #include "core/solar/insolation_period.hpp"
 #include "core/solar/sun_path.hpp"
 #include "core/util/angles.hpp"
+#include "core/visibility/terrain_gather.hpp"
 
 namespace ts {
 class ProgressBar;
@@ -121,13 +122,8 @@ private:
     std::size_t samples_ = 0;
 };
 
-// The cosine-weighted sky above elevation h in one azimuth, per radian of azimuth: the integral
-// over e from h to pi/2 of (n.w) cos(e), a = n.x cos(phi) + n.y sin(phi). Its callers get sin 2h
-// and cos^2 h their own way (libm, a tangent, a series), for the precision and speed they need.
-template <class T>
-inline T sky_above(T h, T sin_2h, T cos2_h, T a, T nz) {
-    return a * (T(kPi) / 4 - h / 2 - sin_2h / 4) + nz * cos2_h / 2;
-}
+// The cosine-weighted sky above elevation h in one azimuth (core/visibility/terrain_gather.hpp).
+using visibility::sky_above;
 
 // The tilted sky view factor of a receiver with unit normal n under horizons h(phi) given at
 // `bins` evenly spaced azimuths (bin j at phi = 2 pi j / bins, each holding over its bin):

@@ -28,22 +28,13 @@
 #include "core/terrain/height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/visibility/horizon_set.hpp"
+#include "core/visibility/terrain_gather.hpp"
 
 namespace ts::solar {
 
 // Defaults from the error against a fine gather (64 directions, radius 250, growth 1.1) and
-// the cost on a whole SRTM tile (docs/insolation.md, "Reflected").
-struct TerrainReflectionSettings {
-    // Azimuths of the gather; 0: no gather (the first pass's isotropic ground). When it does
-    // not divide the horizons' D, the largest divisor of D below it.
-    int directions = 16;
-    // How far the march looks, texels. Kept well under the 256-texel halo of a tile block's
-    // window, so that its core texels see the same terrain in a block as in the whole level.
-    double radius_texels = 64;
-    // Each step is this many times the last (the first is one texel).
-    double growth = 1.2;
-    bool enabled() const { return directions > 0; }
-};
+// the cost on a whole SRTM tile (docs/insolation.md, "Reflected"): 16 directions, 64 texels, 1.2.
+using TerrainReflectionSettings = visibility::TerrainGatherSettings;
 
 // Throws ts::InputError on directions outside [0, 1024], a radius outside [1, 1024] texels or a
 // growth outside [1.01, 4].

@@ -32,6 +32,7 @@ std::string_view flag_of(Quantity q, std::string_view command) {
         case Quantity::level_bias: return "--level-bias";
         case Quantity::light_directions: return "--light-directions";
         case Quantity::light_components: return "--light-components";
+        case Quantity::palette: return "--colors";
         case Quantity::resume: return "--resume";
         case Quantity::shard: return "--shard";
         case Quantity::crop: return "--crop";

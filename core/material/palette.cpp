@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/raster/srgb.hpp"
+#include "core/util/quantity_error.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::render {
@@ -64,13 +65,24 @@ std::string number(double v) {
 
 }  // namespace
 
-std::string palette_names() { return "hypsometric, grey"; }
+std::string palette_names() { return "hypsometric, grey, grey:ALBEDO"; }
 
 std::optional<Palette> Palette::named(std::string_view name) {
     std::optional<Palette> p;
     if (name == "hypsometric") p = parse(kHypsometric, "hypsometric");
     if (name == "grey" || name == "gray") p = parse(kGrey, "grey");
     if (p) p->name_ = std::string(name == "gray" ? "grey" : name);
+    // grey:A, one grey of linear albedo A in [0, 1] (0.8 for snow, as a path tracer's scene has it):
+    // white stops scaled by A rather than kPaletteAlbedoScale.
+    for (std::string_view prefix : {"grey:", "gray:"}) {
+        if (name.substr(0, prefix.size()) != prefix) continue;
+        double a = 0;
+        if (!parse_double(std::string(name.substr(prefix.size())), a) || a < 0 || a > 1)
+            throw QuantityError(Quantity::palette, std::string(name), "grey:A takes a linear albedo A in [0, 1]");
+        p = parse("0% 255 255 255\n", "grey");
+        p->albedo_scale_ = float(a);
+        p->name_ = "grey:" + number(a);
+    }
     return p;
 }
 
@@ -181,11 +193,11 @@ glm::vec3 Palette::srgb_at(double h) const {
 
 glm::vec3 Palette::albedo_at(double h) const {
     const glm::vec3 c = srgb_at(h) / 255.0f;
-    return glm::vec3(raster::srgb_eotf(c.x), raster::srgb_eotf(c.y), raster::srgb_eotf(c.z)) * kPaletteAlbedoScale;
+    return glm::vec3(raster::srgb_eotf(c.x), raster::srgb_eotf(c.y), raster::srgb_eotf(c.z)) * albedo_scale_;
 }
 
 std::string Palette::describe() const {
-    std::string s;
+    std::string s = albedo_scale_ == kPaletteAlbedoScale ? "" : "albedo " + number(albedo_scale_);
     for (const PaletteStop& stop : stops_) {
         if (!s.empty()) s += ";";
         s += number(stop.value) + (stop.percent ? "%" : "") + " " + number(stop.srgb.x) + " " + number(stop.srgb.y) +

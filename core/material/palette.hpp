@@ -24,9 +24,16 @@ struct PaletteStop {
     glm::vec3 srgb{0.0f};  // 0..255
 };
 
+// A palette's colour is what open flat ground looks like at a normal exposure; its albedo is that
+// colour's linear value times this, so the pale tints cartographers use (sRGB ~160..215, linear
+// ~0.35..0.68) become the albedos of vegetated and bare land (~0.12..0.24), and the default
+// palette's white (sRGB 255) would be 0.35, bright dry ground, never snow (snow is --snow-line).
+inline constexpr float kPaletteAlbedoScale = 0.35f;
+
 class Palette {
 public:
-    // The built-in palettes by name ("hypsometric", "grey"), or nullopt.
+    // The built-in palettes by name ("hypsometric", "grey", "grey:A" of linear albedo A), or
+    // nullopt; throws ts::InputError for grey:A with A not in [0, 1].
     static std::optional<Palette> named(std::string_view name);
     // Parses gdaldem color-relief text; `source` names it in errors ("FILE: line 3: ...").
     // Throws ts::InputError for a malformed line or no stop at all.
@@ -45,7 +52,8 @@ public:
 
     // The sRGB colour (0..255) at a height; stops with percent are read as if fitted to [0, 100].
     glm::vec3 srgb_at(double height_m) const;
-    // The linear albedo of land at a height: the colour's linear value times kPaletteAlbedoScale.
+    // The linear albedo of land at a height: the colour's linear value times kPaletteAlbedoScale
+    // (grey:A: times A).
     glm::vec3 albedo_at(double height_m) const;
 
     const std::vector<PaletteStop>& stops() const { return stops_; }
@@ -56,13 +64,8 @@ public:
 private:
     std::string name_;
     std::vector<PaletteStop> stops_;  // sorted by value
+    float albedo_scale_ = kPaletteAlbedoScale;
 };
-
-// A palette's colour is what open flat ground looks like at a normal exposure; its albedo is that
-// colour's linear value times this, so the pale tints cartographers use (sRGB ~160..215, linear
-// ~0.35..0.68) become the albedos of vegetated and bare land (~0.12..0.24), and the default
-// palette's white (sRGB 255) would be 0.35, bright dry ground, never snow (snow is --snow-line).
-inline constexpr float kPaletteAlbedoScale = 0.35f;
 
 // The default palette's name, and the names `named` knows, as "hypsometric, grey".
 inline constexpr std::string_view kDefaultPalette = "hypsometric";

@@ -30,6 +30,7 @@ std::string_view quantity_words(Quantity q) {
         case Quantity::level_bias: return "level bias";
         case Quantity::light_directions: return "light directions";
         case Quantity::light_components: return "light components";
+        case Quantity::palette: return "land colours";
         case Quantity::resume: return "resuming";
         case Quantity::shard: return "shard";
         case Quantity::crop: return "crop";

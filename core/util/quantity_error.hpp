@@ -53,6 +53,7 @@ enum class Quantity {
     time_step,         // minutes between sun positions
     period_split,      // year, month or day
     date_range,        // the last day (before the first)
+    palette,           // the land colours (a built-in palette or a colour table)
 };
 
 // The quantity in words ("number of directions").

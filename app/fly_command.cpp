@@ -20,6 +20,7 @@
 #include "app/io_plan.hpp"
 #include "app/job_memory.hpp"
 #include "app/options/colors_option.hpp"
+#include "app/options/bounce_option.hpp"
 #include "app/options/directions_option.hpp"
 #include "app/options/max_error_option.hpp"
 #include "app/options/mesh_forward_option.hpp"
@@ -93,6 +94,7 @@ struct FlyArgs {
     std::string out;
     std::string record = "fly_recording.csv";
     int directions = 16;
+    render::BounceSettings bounce;
     double pixel_error = 2.0;
     double lod_quantile = 0.99;
     int patch_quads = 16;
@@ -313,6 +315,7 @@ void run_fly(const FlyArgs& a) {
 
     settings.sky = a.sky;
     settings.directions = a.directions;
+    settings.bounce = a.bounce;
     settings.lod.pixel_error = a.pixel_error;
     settings.lod.patch_quads = a.patch_quads;
     settings.lod.error_quantile = a.lod_quantile;
@@ -453,6 +456,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
     cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
     add_directions_option(*cmd, args->directions, &args->directions_given);  // once per DEM
+    add_bounce_options(*cmd, args->bounce);
     cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
         ->capture_default_str()
         ->each([a = args.get()](const std::string&) { a->pixel_error_given = true; });

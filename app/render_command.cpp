@@ -108,9 +108,11 @@ void run_render(const RenderCommandArgs& a) {
                 time ? (" at " + light::format_utc_time(*time)).c_str() : "");
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
-    std::printf("visibility %.3f s + transfer %.3f s (%d directions), frame %.3f s, on %s\n",
+    std::printf("visibility %.3f s + transfer %.3f s (%d directions; bounced light %.3f s of it, %d bounce%s), "
+                "frame %.3f s, on %s\n",
                 scene->state().visibility_seconds(), scene->state().transfer_seconds(), directions,
-                frame_s, device.name().c_str());
+                scene->state().bounce_seconds(), scene->state().options().bounce.bounces,
+                scene->state().options().bounce.bounces == 1 ? "" : "s", frame_s, device.name().c_str());
     if (!raster::written_as(a.out, raster::ImageWriter::exr))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
     if (const render::ReliefContrastApplied rc = scene->last_relief_contrast(); rc.k != 1.0) {

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "app/mesh_max_error.hpp"
+#include "app/options/bounce_option.hpp"
 #include "app/options/directions_option.hpp"
 #include "app/options/max_error_option.hpp"
 #include "app/options/sky_option.hpp"
@@ -87,6 +88,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str()
         ->check(CLI::IsMember({"sweep", "exact"}))
         ->each([&a](const std::string&) { a.quality_flags_given.push_back("--sun-shadows"); });
+    add_bounce_options(cmd, a.bounce);
     add_max_error_option(cmd, a.max_error);
     add_threads_option(cmd, a.threads);
     add_mesh_options(cmd, a.meshes);
@@ -156,6 +158,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.band_correction = !a.no_band_correction;
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
+    o.renderer.bounce = a.bounce;
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     parse_mesh_specs(a.meshes);  // everything about --mesh that needs no DEM, checked now
     o.blocker_options = blocker_options(a.meshes);

@@ -42,6 +42,7 @@ struct RenderArgs {
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
+    render::BounceSettings bounce;        // --bounces, --bounce-directions, --bounce-radius
     int threads = 0;
     MeshArgs meshes;  // --mesh, --at, ... (app/mesh_options.hpp)
     // --max-error E: choose --directions and --sun-shadows for a relative radiance error E

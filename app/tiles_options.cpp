@@ -1,5 +1,6 @@
 #include "app/tiles_options.hpp"
 
+#include "app/options/bounce_option.hpp"
 #include "app/options/directions_option.hpp"
 #include "app/options/max_error_option.hpp"
 #include "app/options/sky_option.hpp"
@@ -97,6 +98,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         "--ramp", a.ramp,
         "insolation: the colour ramp's ends LO,HI in the quantity's unit (default: from open flat ground's value; "
         "docs/tiles.md)"));
+    add_bounce_options(cmd, a.bounce);  // relief, color, lightable
     add_threads_option(cmd, a.threads);
     add_verbose_flag(cmd, a.verbose);
 }
@@ -219,6 +221,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
             throw InputError("--max-error bounds the radiance of --style relief or color, not " + a.style);
     }
     s.directions = a.directions;
+    s.bounce = a.bounce;
+    render::check_bounce_settings(s.bounce);
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);

@@ -25,6 +25,7 @@ struct TilesArgs {
     double z_factor = 1.0;
     std::string exaggeration = "auto";
     int directions = 16;
+    render::BounceSettings bounce;  // --bounces, --bounce-directions, --bounce-radius
     int block_texels = 2048;
     int block_halo = 256;
     std::string far_field = "balanced";

@@ -287,8 +287,9 @@ void run_bench_relight(const BenchRelightArgs& a) {
                 options.view == render::ViewKind::map ? "map" : "perspective", image.width, image.height, a.frames,
                 thread_count(a.render.threads));
     std::printf("one-time: visibility (exact horizons, %d directions, log-SH) %.3f s + transfer vectors %.3f s "
-                "(%zu specular, %zu water texels)\n",
+                "(bounced light %.3f s of it, %d bounces; %zu specular, %zu water texels)\n",
                 a.render.directions, scene.state().visibility_seconds(), scene.state().transfer_seconds(),
+                scene.state().bounce_seconds(), scene.state().options().bounce.bounces,
                 scene.state().specular_index().size(), scene.state().water_index().size());
     std::printf("per frame: sky SH + sky table %.2f ms, sun visibility sweep %.2f ms, shading %.2f ms, "
                 "total %.2f ms\n",

@@ -99,6 +99,7 @@ DetailTile::DetailTile(DetailTileKey key, const DetailTileLayout& layout, const 
     // fits once): every tile colours a height alike (a window's own range would not).
     so.colors = render::fit_colors(options.colors, overview.points);
     so.renderer.directions = options.directions;
+    so.renderer.bounce = options.bounce;
     so.renderer.threads = options.threads;
     const visibility::ReceiverWindow window{window_col0_, window_row0_, w.width, w.height};
     const visibility::ReceiverWindow core{col0_, row0_, samples_x_, samples_y_};

@@ -19,6 +19,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/render/bounce_transfer.hpp"
 #include "core/dem/dem.hpp"
 #include "core/dem/dem_source.hpp"
 #include "core/fly/terrain_overview.hpp"
@@ -55,6 +56,7 @@ DetailTileKey tile_of_node(const DetailTileLayout& layout, int level, int ix, in
 struct DetailShadingOptions {
     int halo = 64;           // level-0 texels read around a tile for its shading
     int directions = 16;     // horizon azimuths
+    render::BounceSettings bounce;  // light bounced off the terrain
     std::string sky = "clear";
     render::ColorDesign colors;  // percent stops fitted to the overview's heights, so tiles agree
     int threads = 0;

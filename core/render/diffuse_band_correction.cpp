@@ -7,8 +7,9 @@
 
 namespace ts::render {
 
-void correct_diffuse_bands(const std::array<float, 4>& lobe, sh::ExpMethod method, float* t, std::size_t n) {
-    std::array<float, 16> v0{};
+void correct_diffuse_bands(const std::array<float, 4>& lobe, sh::ExpMethod method, float* t, std::size_t n,
+                           const std::array<float, 16>& open_log_visibility) {
+    std::array<float, 16> v0 = open_log_visibility;
     const std::array<float, 3> z = {0, 0, 1};
     TransferInputs in;
     in.texels = 1;

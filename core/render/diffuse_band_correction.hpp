@@ -12,7 +12,10 @@
 namespace ts::render {
 
 // `lobe` the diffuse log-ZH the transfer was made with, `method` its exponentiation;
-// `transfer` is [16][n] band-sequential.
-void correct_diffuse_bands(const std::array<float, 4>& lobe, sh::ExpMethod method, float* transfer, std::size_t n);
+// `transfer` is [16][n] band-sequential. `open_log_visibility`: the log-SH visibility an open
+// receiver has (nothing blocking: all zero; a terrain texel: level_log_visibility, its own
+// plane as horizon, whose log floor below it is not zero), about +z.
+void correct_diffuse_bands(const std::array<float, 4>& lobe, sh::ExpMethod method, float* transfer, std::size_t n,
+                           const std::array<float, 16>& open_log_visibility = {});
 
 }  // namespace ts::render

@@ -13,6 +13,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/render/bounce_transfer.hpp"
 #include "core/util/parallel_for.hpp"
 
 namespace ts::render {
@@ -36,6 +37,7 @@ using Half = _Float16;
 #endif
 
 constexpr int kLanes = 8;
+constexpr float kPiF = 3.14159265358979f;
 
 // Normals of the compact (fp16) layout: signed 16-bit fixed point, n * 32767. In [-1, 1] that
 // is within 1.5e-5 per component (fp16 would be 2.4e-4 near 1, which is where the sun term's
@@ -50,9 +52,16 @@ using Short8 = std::int16_t __attribute__((vector_size(16)));
 template <class S, int K>
 struct alignas(16) Block {
     using Normal = std::conditional_t<std::is_same_v<S, float>, float, NormalQ>;
+    static constexpr bool kBounce = false;
     S t[K][kLanes];
     S albedo[3][kLanes];
     Normal normal[3][kLanes];
+};
+// With bounced light: the bounce transfer's bands 0..1 too (its sun part, per frame).
+template <class S, int K>
+struct alignas(16) BounceBlock : Block<S, K> {
+    static constexpr bool kBounce = true;
+    S b[kBounceSunCoefficients][kLanes];
 };
 
 // How 8 stored values become 8 floats (through a reference: returning a 32-byte vector by
@@ -85,15 +94,17 @@ struct LoadHalfF16c {
 struct FrameConstants {
     float r[16], g[16], b[16];
     float s[3], e[3];
+    float y[16], e_sun[3];  // the sun's direction in SH, Y_i(s), and E_sun (the bounce's sun part)
 };
 
-template <class Load, class S, int K>
-[[gnu::always_inline]] inline void shade_blocks(const Block<S, K>* blocks, std::size_t b0, std::size_t b1,
+template <class Load, class BlockT>
+[[gnu::always_inline]] inline void shade_blocks(const BlockT* blocks, std::size_t b0, std::size_t b1,
                                                 std::size_t texels, const float* vis, const FrameConstants& c,
                                                 glm::vec3* out) {
     const Float8 zero{};
     for (std::size_t b = b0; b < b1; ++b) {
-        const Block<S, K>& blk = blocks[b];
+        constexpr int K = sizeof(blocks->t) / sizeof(blocks->t[0]);
+        const BlockT& blk = blocks[b];
         Float8 r = zero, g = zero, bl = zero;
         Float8 x, y, z;
         for (int i = 0; i < K; ++i) {
@@ -101,6 +112,16 @@ template <class Load, class S, int K>
             r += x * c.r[i];
             g += x * c.g[i];
             bl += x * c.b[i];
+        }
+        if constexpr (BlockT::kBounce) {
+            Float8 u = zero;
+            for (int i = 0; i < kBounceSunCoefficients; ++i) {
+                Load::load(x, blk.b[i]);
+                u += x * c.y[i];
+            }
+            r += u * c.e_sun[0];
+            g += u * c.e_sun[1];
+            bl += u * c.e_sun[2];
         }
         LoadSingle::load(x, blk.normal[0]);
         LoadSingle::load(y, blk.normal[1]);
@@ -127,65 +148,69 @@ template <class Load, class S, int K>
 
 // One function per layout and instruction set (target_clones and C++ overloads or templates
 // do not mix well in GCC 12, hence the names).
-TS_DIFFUSE_CLONES void shade_single9(const Block<float, 9>* p, std::size_t b0, std::size_t b1, std::size_t n,
-                                     const float* vis, const FrameConstants& c, glm::vec3* out) {
-    shade_blocks<LoadSingle>(p, b0, b1, n, vis, c, out);
-}
-TS_DIFFUSE_CLONES void shade_single16(const Block<float, 16>* p, std::size_t b0, std::size_t b1, std::size_t n,
-                                      const float* vis, const FrameConstants& c, glm::vec3* out) {
-    shade_blocks<LoadSingle>(p, b0, b1, n, vis, c, out);
-}
+#define TS_SINGLE_KERNEL(NAME, BLOCK)                                                                          \
+    TS_DIFFUSE_CLONES void NAME(const BLOCK* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis, \
+                                const FrameConstants& c, glm::vec3* out) {                                   \
+        shade_blocks<LoadSingle>(p, b0, b1, n, vis, c, out);                                                 \
+    }                                                                                                        \
+    void kernel(const BLOCK* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,              \
+                const FrameConstants& c, glm::vec3* out) {                                                   \
+        NAME(p, b0, b1, n, vis, c, out);                                                                     \
+    }
+using Single9 = Block<float, 9>;
+using Single16 = Block<float, 16>;
+using Single9B = BounceBlock<float, 9>;
+using Single16B = BounceBlock<float, 16>;
+TS_SINGLE_KERNEL(shade_single9, Single9)
+TS_SINGLE_KERNEL(shade_single16, Single16)
+TS_SINGLE_KERNEL(shade_single9b, Single9B)
+TS_SINGLE_KERNEL(shade_single16b, Single16B)
 #ifdef TS_DIFFUSE_HALF
-[[gnu::target("avx2,fma,f16c")]] void shade_half9_f16c(const Block<Half, 9>* p, std::size_t b0, std::size_t b1,
-                                                        std::size_t n, const float* vis, const FrameConstants& c,
-                                                        glm::vec3* out) {
-    shade_blocks<LoadHalfF16c>(p, b0, b1, n, vis, c, out);
-}
-[[gnu::target("avx2,fma,f16c")]] void shade_half16_f16c(const Block<Half, 16>* p, std::size_t b0, std::size_t b1,
-                                                         std::size_t n, const float* vis, const FrameConstants& c,
-                                                         glm::vec3* out) {
-    shade_blocks<LoadHalfF16c>(p, b0, b1, n, vis, c, out);
-}
-void shade_half9_scalar(const Block<Half, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-                        const FrameConstants& c, glm::vec3* out) {
-    shade_blocks<LoadHalfScalar>(p, b0, b1, n, vis, c, out);
-}
-void shade_half16_scalar(const Block<Half, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-                         const FrameConstants& c, glm::vec3* out) {
-    shade_blocks<LoadHalfScalar>(p, b0, b1, n, vis, c, out);
-}
 bool has_f16c() {
     return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
 }
-void kernel(const Block<Half, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-            const FrameConstants& c, glm::vec3* out) {
-    (has_f16c() ? shade_half9_f16c : shade_half9_scalar)(p, b0, b1, n, vis, c, out);
-}
-void kernel(const Block<Half, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-            const FrameConstants& c, glm::vec3* out) {
-    (has_f16c() ? shade_half16_f16c : shade_half16_scalar)(p, b0, b1, n, vis, c, out);
-}
+#define TS_HALF_KERNEL(NAME, BLOCK)                                                                            \
+    [[gnu::target("avx2,fma,f16c")]] void NAME##_f16c(const BLOCK* p, std::size_t b0, std::size_t b1,           \
+                                                      std::size_t n, const float* vis, const FrameConstants& c,  \
+                                                      glm::vec3* out) {                                        \
+        shade_blocks<LoadHalfF16c>(p, b0, b1, n, vis, c, out);                                               \
+    }                                                                                                        \
+    void NAME##_scalar(const BLOCK* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,         \
+                       const FrameConstants& c, glm::vec3* out) {                                            \
+        shade_blocks<LoadHalfScalar>(p, b0, b1, n, vis, c, out);                                             \
+    }                                                                                                        \
+    void kernel(const BLOCK* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,              \
+                const FrameConstants& c, glm::vec3* out) {                                                   \
+        (has_f16c() ? NAME##_f16c : NAME##_scalar)(p, b0, b1, n, vis, c, out);                                 \
+    }
+using Half9 = Block<Half, 9>;
+using Half16 = Block<Half, 16>;
+using Half9B = BounceBlock<Half, 9>;
+using Half16B = BounceBlock<Half, 16>;
+TS_HALF_KERNEL(shade_half9, Half9)
+TS_HALF_KERNEL(shade_half16, Half16)
+TS_HALF_KERNEL(shade_half9b, Half9B)
+TS_HALF_KERNEL(shade_half16b, Half16B)
 #endif
-void kernel(const Block<float, 9>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-            const FrameConstants& c, glm::vec3* out) {
-    shade_single9(p, b0, b1, n, vis, c, out);
-}
-void kernel(const Block<float, 16>* p, std::size_t b0, std::size_t b1, std::size_t n, const float* vis,
-            const FrameConstants& c, glm::vec3* out) {
-    shade_single16(p, b0, b1, n, vis, c, out);
-}
 
-template <class S, int K>
-std::vector<Block<S, K>> pack(const DiffuseShading::Inputs& in) {
+template <class BlockT>
+std::vector<BlockT> pack(const DiffuseShading::Inputs& in) {
+    using S = std::decay_t<decltype(BlockT{}.t[0][0])>;
+    constexpr int K = sizeof(BlockT::t) / sizeof(BlockT::t[0]);
     const std::size_t n = in.texels;
-    std::vector<Block<S, K>> blocks((n + kLanes - 1) / kLanes);  // value-initialised: padding lanes are 0
+    std::vector<BlockT> blocks((n + kLanes - 1) / kLanes);  // value-initialised: padding lanes are 0
     for (std::size_t t = 0; t < n; ++t) {
-        Block<S, K>& blk = blocks[t / kLanes];
+        BlockT& blk = blocks[t / kLanes];
         const std::size_t l = t % kLanes;
         for (int i = 0; i < K; ++i) blk.t[i][l] = S(in.transfer[std::size_t(i) * n + t]);
+        if constexpr (BlockT::kBounce)
+            for (int i = 0; i < kBounceSunCoefficients; ++i) {
+                const float b = in.bounce[std::size_t(i) * n + t];
+                blk.b[i][l] = S(b == b ? b : 0.0f);
+            }
         for (int c = 0; c < 3; ++c) {
             blk.albedo[c][l] = S(in.albedo[c][t]);
-            if constexpr (std::is_same_v<typename Block<S, K>::Normal, float>) blk.normal[c][l] = in.normal[c][t];
+            if constexpr (std::is_same_v<typename BlockT::Normal, float>) blk.normal[c][l] = in.normal[c][t];
             else blk.normal[c][l] = NormalQ(std::lround(std::clamp(in.normal[c][t], -1.0f, 1.0f) * kNormalScale));
         }
     }
@@ -198,9 +223,11 @@ struct DiffuseShading::Storage {
     std::size_t texels = 0;
     std::variant<
 #ifdef TS_DIFFUSE_HALF
-        std::vector<Block<Half, 9>>, std::vector<Block<Half, 16>>,
+        std::vector<Block<Half, 9>>, std::vector<Block<Half, 16>>, std::vector<BounceBlock<Half, 9>>,
+        std::vector<BounceBlock<Half, 16>>,
 #endif
-        std::vector<Block<float, 9>>, std::vector<Block<float, 16>>>
+        std::vector<Block<float, 9>>, std::vector<Block<float, 16>>, std::vector<BounceBlock<float, 9>>,
+        std::vector<BounceBlock<float, 16>>>
         blocks;
 };
 
@@ -211,17 +238,27 @@ DiffuseShading::DiffuseShading(const Inputs& in) : storage_(std::make_unique<Sto
                           !in.albedo[1] || !in.albedo[2]))
         throw std::invalid_argument("DiffuseShading: null input array");
     storage_->texels = in.texels;
-    const bool nine = in.coefficients == 9;
+    const bool nine = in.coefficients == 9, bounce = in.bounce != nullptr;
 #ifdef TS_DIFFUSE_HALF
     if (in.precision == Precision::half) {
-        if (nine) storage_->blocks = pack<Half, 9>(in);
-        else storage_->blocks = pack<Half, 16>(in);
+        if (bounce) {
+            if (nine) storage_->blocks = pack<BounceBlock<Half, 9>>(in);
+            else storage_->blocks = pack<BounceBlock<Half, 16>>(in);
+        } else {
+            if (nine) storage_->blocks = pack<Block<Half, 9>>(in);
+            else storage_->blocks = pack<Block<Half, 16>>(in);
+        }
         return;
     }
 #endif
     // Without a compiler fp16 type, Precision::half falls back to fp32 (same results, more bytes).
-    if (nine) storage_->blocks = pack<float, 9>(in);
-    else storage_->blocks = pack<float, 16>(in);
+    if (bounce) {
+        if (nine) storage_->blocks = pack<BounceBlock<float, 9>>(in);
+        else storage_->blocks = pack<BounceBlock<float, 16>>(in);
+    } else {
+        if (nine) storage_->blocks = pack<Block<float, 9>>(in);
+        else storage_->blocks = pack<Block<float, 16>>(in);
+    }
 }
 
 DiffuseShading::~DiffuseShading() = default;
@@ -257,6 +294,12 @@ std::size_t DiffuseShading::bytes() const {
 
 void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis,
                            const glm::vec3& sun_dir, const glm::vec3& e_diffuse, glm::vec3* out, int threads) const {
+    shade(light_sh, sun_vis, sun_dir, e_diffuse, std::array<float, 16>{}, out, threads);
+}
+
+void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis,
+                           const glm::vec3& sun_dir, const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh,
+                           glm::vec3* out, int threads) const {
     const std::size_t texels = storage_->texels;
     if (texels == 0) return;
     if (!sun_vis || !out) throw std::invalid_argument("DiffuseShading::shade: null input or output array");
@@ -266,7 +309,8 @@ void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const floa
         c.g[i] = light_sh[std::size_t(i)].g;
         c.b[i] = light_sh[std::size_t(i)].b;
     }
-    for (int k = 0; k < 3; ++k) c.s[k] = sun_dir[k], c.e[k] = e_diffuse[k];
+    for (int k = 0; k < 3; ++k) c.s[k] = sun_dir[k], c.e[k] = e_diffuse[k], c.e_sun[k] = e_diffuse[k] * kPiF;
+    for (int i = 0; i < 16; ++i) c.y[i] = sun_sh[std::size_t(i)];
     std::visit(
         [&](const auto& blocks) {
             const std::size_t count = blocks.size();

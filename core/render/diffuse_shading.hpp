@@ -2,8 +2,11 @@
 // FrameRenderer's per-frame diffuse loop (sky transfer + sun + albedo) in one pass over a
 // compact copy of its inputs, made once:
 //
-//   out_t = albedo_t * (<T_t, L> + vis_t * max(0, n_t . s) * E_sun / pi)     (vis NaN -> 0)
+//   out_t = albedo_t * (<T_t, L> + vis_t * max(0, n_t . s) * E_sun / pi
+//                      + <B_t, Y(s)> E_sun)                                  (vis NaN -> 0)
 //
+// B_t the bounced light's transfer (bounce_transfer.hpp), when there is one: its sun part, over
+// bands 0..1 (kBounceSunCoefficients: 8 more bytes per texel in fp16).
 // Per block of 8 texels, one contiguous record: the K transfer coefficients that matter
 // (K = 9 when the band correction has zeroed band 3, else 16), the albedo and the normal.
 // Precision::half: T and albedo fp16, the normal 16-bit fixed point (n . s within 3e-5: the sun
@@ -34,6 +37,7 @@ public:
         int coefficients = 16;            // 9 (band 3 is zero: only bands 0..2 kept) or 16
         const float* normal[3] = {};      // unit normals, planes x, y, z
         const float* albedo[3] = {};      // linear albedo, planes r, g, b
+        const float* bounce = nullptr;    // [>= 4][texels] bounce transfer B (bands 0..1 read), or none (NaN -> 0)
         Precision precision = Precision::half;
     };
     explicit DiffuseShading(const Inputs& in);
@@ -52,6 +56,10 @@ public:
     // E_sun / pi (0 when the sun is down). NaN transfer gives NaN.
     void shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis, const glm::vec3& sun_dir,
                const glm::vec3& e_diffuse, glm::vec3* out, int threads) const;
+    // With the bounce's sun part: `sun_sh` is Y_i(s), the SH basis at the sun's direction
+    // (ignored without a bounce transfer).
+    void shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis, const glm::vec3& sun_dir,
+               const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh, glm::vec3* out, int threads) const;
 
 private:
     struct Storage;

@@ -7,6 +7,7 @@
 
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
+#include "core/sh/sh_basis.hpp"
 #include "core/util/parallel_for.hpp"
 #include "core/util/stopwatch.hpp"
 
@@ -60,13 +61,20 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));
     const glm::vec3 e_diffuse = sun_up ? e_sun * kInvPi : glm::vec3(0.0f);
+    // The bounce's sun part: the SH basis at the sun (bounce_transfer.hpp).
+    std::array<float, 16> sun_sh{};
+    const std::vector<float>& bounce = state_.bounce_transfer();
+    if (!bounce.empty() && sun_up) {
+        const sh::ShVec y = sh::eval(glm::dvec3(s));
+        for (int i = 0; i < 16; ++i) sun_sh[std::size_t(i)] = float(y[std::size_t(i)]);
+    }
     const DiffuseShading* fused = state_.fused_diffuse();
     // A mesh blocker only removes light: its texels' sky terms are bounded by the terrain's.
     const BlockerSkyClamp* clamp = state_.blocker_sky_clamp();
     // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
     // the backend's <T_d, L> then a second SoA loop otherwise.
     if (fused) {
-        fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, out.data(), threads);
+        fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, sun_sh, out.data(), threads);
         if (clamp) clamp->apply(sky_sh, out.data(), threads);
     } else {
         state_.diffuse_field()->shade(sky_sh, diffuse_rgb_.data());
@@ -85,10 +93,17 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
             const float* vis = sun_vis_.data();
             const glm::vec3* d = diffuse_rgb_.data();
             glm::vec3* o = out.data();
+            const std::size_t k_count = std::size_t(kBounceSunCoefficients);
+            const std::size_t texels_all = state_.texels();
             for (std::size_t t = b; t < e; ++t) {
                 const float cos_s = std::max(0.0f, nx[t] * s.x + ny[t] * s.y + nz[t] * s.z);
                 const float v = vis[t];
-                const float sun_w = (v == v ? v : 0.0f) * cos_s;  // NaN (void) -> no sun
+                float sun_w = (v == v ? v : 0.0f) * cos_s;  // NaN (void) -> no sun
+                if (!bounce.empty()) {  // the bounce's sun part, in units of E_sun / pi
+                    float u = 0;
+                    for (std::size_t i = 0; i < k_count; ++i) u += bounce[i * texels_all + t] * sun_sh[i];
+                    if (u == u) sun_w += u * std::numbers::pi_v<float>;
+                }
                 o[t].x = ar[t] * (d[t].x + sun_w * e_diffuse.x);
                 o[t].y = ag[t] * (d[t].y + sun_w * e_diffuse.y);
                 o[t].z = ab[t] * (d[t].z + sun_w * e_diffuse.z);

@@ -5,7 +5,8 @@
 // cancels in ratios with the frame's sky term). What a blocker standing in a receiver's open sky
 // takes a share of: an aircraft covering a fraction c of the hemisphere above a valley floor
 // that sees V of it takes c / V of the floor's sky light, not c (ts_open_sky_share,
-// core/blockers/sphere_occlusion_shared.h).
+// core/blockers/sphere_occlusion_shared.h). The bounced light the transfer also carries
+// (bounce_transfer.hpp) is taken out: it is not sky.
 #include <vector>
 
 #include "core/render/frame_renderer.hpp"

@@ -17,6 +17,7 @@
 #include "core/visibility/blocker_log_sh.hpp"
 #include "core/visibility/blocker_sun_shadow.hpp"
 #include "core/visibility/earth_curvature.hpp"
+#include "core/visibility/horizon_sh.hpp"
 #include "core/visibility/sun_sweep.hpp"
 #include "core/visibility/visibility_backend.hpp"
 #include "core/util/stopwatch.hpp"
@@ -78,7 +79,21 @@ void ShadingState::diffuse_transfer(const float* log_sh, std::size_t n, const st
     in.threads = options_.threads;
     if (options_.backend) options_.backend->transfer_vectors(in, out);
     else transfer_vectors(in, out);
-    if (options_.band_correction) correct_diffuse_bands(lobe, in.method, out, n);
+    // A terrain texel is open when nothing rises above its own plane: its horizons there, not
+    // no visibility at all, are what must give the exact projected cosine.
+    if (options_.band_correction)
+        correct_diffuse_bands(lobe, in.method, out, n,
+                              visibility::level_log_visibility(options_.directions, options_.visibility_log_eps));
+}
+
+void ShadingState::add_bounce(std::size_t n, const std::uint32_t* index, float* t) const {
+    if (bounce_.empty()) return;
+    const std::size_t k_count = std::size_t(bounce_coefficients());
+    for (std::size_t i = 0; i < k_count; ++i)
+        for (std::size_t k = 0; k < n; ++k) {
+            const float b = bounce_[i * texels_ + (index ? index[k] : k)];
+            if (b == b) t[i * n + k] += b;
+        }
 }
 
 glm::vec3 ShadingState::sky_weight(std::size_t t) const {
@@ -132,6 +147,7 @@ void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
     // The rectangle's transfer is the terrain's, the blocked one where the blockers changed it.
     std::vector<float> t_rect(16 * n);
     diffuse_transfer(terrain.data(), n, index.data(), t_rect.data());
+    add_bounce(n, index.data(), t_rect.data());
     std::vector<std::uint32_t> changed, at;
     for (std::size_t k = 0; k < n; ++k)
         if (differs(blocked.data(), terrain.data(), n, k)) changed.push_back(index[k]), at.push_back(std::uint32_t(k));
@@ -139,6 +155,7 @@ void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
     std::vector<float> log_b(16 * m), t_blocked(16 * m), t_terrain(16 * m);
     gather(blocked.data(), n, at, log_b.data());
     diffuse_transfer(log_b.data(), m, changed.data(), t_blocked.data());
+    add_bounce(m, changed.data(), t_blocked.data());
     gather(t_rect.data(), n, at, t_terrain.data());
     for (int i = 0; i < 16; ++i)
         for (std::size_t j = 0; j < m; ++j) t_rect[std::size_t(i) * n + at[j]] = t_blocked[std::size_t(i) * m + j];
@@ -184,17 +201,56 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     {
         std::vector<float> t_diffuse(16 * texels);
         s.diffuse_transfer(log_sh, texels, nullptr, t_diffuse.data());
+        // With blockers: the texels they changed, with their terrain-only transfer.
+        std::vector<std::uint32_t> changed;
+        std::vector<float> t_terrain;
         if (with_blockers && !vis.terrain_log_sh.empty()) {
             s.terrain_log_sh_.assign(vis.terrain_log_sh.begin(), vis.terrain_log_sh.end());
-            // The texels the blockers changed, with their terrain-only transfer.
             const float* terrain = s.terrain_log_sh_.data();
-            std::vector<std::uint32_t> changed;
             for (std::size_t t = 0; t < texels; ++t)
                 if (differs(log_sh, terrain, texels, t)) changed.push_back(std::uint32_t(t));
-            const std::size_t m = changed.size();
-            std::vector<float> log_t(16 * m), t_blocked(16 * m), t_terrain(16 * m);
+            std::vector<float> log_t(16 * changed.size());
+            t_terrain.resize(16 * changed.size());
             gather(terrain, texels, changed, log_t.data());
-            s.diffuse_transfer(log_t.data(), m, changed.data(), t_terrain.data());
+            s.diffuse_transfer(log_t.data(), changed.size(), changed.data(), t_terrain.data());
+        }
+        {
+            // Bounced light from the terrain's own transfer: a mesh blocks the sky above the
+            // terrain, not (in this model) the light the terrain under it reflects, and a moved
+            // mesh then leaves T_b as it is (move_mesh).
+            const Stopwatch tb;
+            std::vector<float> terrain_only;
+            if (!changed.empty()) {
+                terrain_only = t_diffuse;
+                for (int i = 0; i < 16; ++i)
+                    for (std::size_t k = 0; k < changed.size(); ++k)
+                        terrain_only[std::size_t(i) * texels + changed[k]] = t_terrain[std::size_t(i) * changed.size() + k];
+            }
+            // What the terrain reflects, grey: the albedo's luminance (water: its body's).
+            std::vector<float> grey(texels);
+            const MaterialRaster& m = s.materials_;
+            for (std::size_t t = 0; t < texels; ++t)
+                grey[t] = m.water[t] ? kWaterAlbedo
+                                     : 0.2126f * m.albedo_r[t] + 0.7152f * m.albedo_g[t] + 0.0722f * m.albedo_b[t];
+            BounceInputs bi;
+            bi.grid = &grid;
+            bi.horizons = &vis.horizons;
+            bi.normals = &s.normals_;
+            bi.albedo = grey;
+            bi.transfer = changed.empty() ? t_diffuse.data() : terrain_only.data();
+            bi.coefficients = s.bounce_coefficients();
+            bi.curvature = visibility::curvature_factor(options.curvature);
+            bi.threads = options.threads;
+            s.bounce_ = bounce_transfer(bi, options.bounce);
+            const bool any = std::any_of(s.bounce_.begin(), s.bounce_.end(), [](float b) { return b != 0 && b == b; });
+            if (!any) s.bounce_.clear();
+            s.add_bounce(texels, nullptr, t_diffuse.data());
+            s.bounce_s_ = tb.seconds();
+        }
+        if (!changed.empty()) {
+            const std::size_t m = changed.size();
+            std::vector<float> t_blocked(16 * m);
+            s.add_bounce(m, changed.data(), t_terrain.data());
             gather(t_diffuse.data(), texels, changed, t_blocked.data());
             s.bound_changed({0, 0, grid.width, grid.height}, changed, t_blocked.data(), t_terrain.data());
         }
@@ -214,6 +270,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             di.normal[0] = s.normals_.x.data(), di.normal[1] = s.normals_.y.data(), di.normal[2] = s.normals_.z.data();
             for (int c = 0; c < 3; ++c) di.albedo[c] = albedo[c].data();
             di.precision = options.shading_precision;
+            di.bounce = s.bounce_.empty() ? nullptr : s.bounce_.data();
             s.diffuse_ = std::make_unique<DiffuseShading>(di);
         }
         if (options.keep_diffuse_transfer) s.kept_transfer_ = std::move(t_diffuse);

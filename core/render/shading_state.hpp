@@ -26,6 +26,7 @@
 
 #include "core/blockers/placed_spheres.hpp"
 #include "core/render/blocker_sky_clamp.hpp"
+#include "core/render/bounce_transfer.hpp"
 #include "core/render/diffuse_shading.hpp"
 #include "core/material/material.hpp"
 #include "core/terrain/terrain_normals.hpp"
@@ -96,6 +97,9 @@ struct RendererOptions {
     // field beyond its window, core/tiles/shade_source.cpp): lowers each frame's sun visibility
     // after the grid's own shadows. Empty: the grid is all the terrain there is.
     std::function<void(const SunState&, std::vector<float>&)> outer_sun_shadow;
+    // Light bounced off the terrain (bounce_transfer.hpp): its sky part joins T_d, its sun part
+    // is added per frame. 0 bounces: direct light only (the terrain's far flat ground remains).
+    BounceSettings bounce;
     // Keep a float copy of the diffuse transfer T_d [16][texels] (kept_diffuse_transfer): what a
     // lightable tile stores so that a browser relights it (core/tiles/lightable_style.cpp).
     bool keep_diffuse_transfer = false;
@@ -122,6 +126,7 @@ public:
     // One-time cost split: horizons + log-SH, and the diffuse transfer.
     double visibility_seconds() const { return visibility_s_; }
     double transfer_seconds() const { return transfer_s_; }
+    double bounce_seconds() const { return bounce_s_; }  // part of transfer_seconds()
     // Where the horizons were computed ("cpu" or the Vulkan device's name), and every stage of
     // the visibility with where it ran.
     const std::string& visibility_path() const { return visibility_path_; }
@@ -141,6 +146,10 @@ public:
     const std::vector<std::uint32_t>& water_index() const { return water_index_; }
     const std::vector<float>& water_horizons() const { return water_horizons_; }
     int directions() const { return options_.directions; }
+    // The bounced light's transfer T_b [K][texels] (bounce_transfer.hpp; K = bounce_coefficients()),
+    // already added to T_d for the sky; the frames add its sun part. Empty when it is zero everywhere.
+    const std::vector<float>& bounce_transfer() const { return bounce_; }
+    int bounce_coefficients() const { return options_.band_correction ? 9 : 16; }
     // T_d [16][texels] when RendererOptions::keep_diffuse_transfer, else empty.
     const std::vector<float>& kept_diffuse_transfer() const { return kept_transfer_; }
 
@@ -168,6 +177,8 @@ private:
     // The band-corrected diffuse transfer of n texels (grid indices `index`; null: texel k is k)
     // from their log-SH [16][n], into `out` [16][n], through the backend when there is one.
     void diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index, float* out) const;
+    // Adds the bounced light's transfer to n texels' T [16][n] (grid indices `index`; null: texel k is k).
+    void add_bounce(std::size_t n, const std::uint32_t* index, float* transfer) const;
     // Recomputes the blockers' part of the texels of `rect` (move_mesh).
     void update_blocked_rect(const visibility::TexelRect& rect);
     // Hands the sky bound the changed texels of a rectangle (grid indices, ascending) with their
@@ -185,7 +196,8 @@ private:
     std::size_t texels_ = 0;
     MaterialRaster materials_;
     NormalField normals_;
-    double visibility_s_ = 0, transfer_s_ = 0;
+    double visibility_s_ = 0, transfer_s_ = 0, bounce_s_ = 0;
+    std::vector<float> bounce_;
     std::string visibility_path_ = "cpu";
     std::vector<visibility::VisibilityStage> visibility_stages_;
     std::unique_ptr<DiffuseShading> diffuse_;

@@ -21,6 +21,11 @@ render::RendererOptions renderer_options(const TileShading& s, ProgressBar* prog
     render::RendererOptions o;
     o.outer_sun_shadow = std::move(outer_sun);
     o.directions = s.directions;
+    o.bounce = s.bounce;
+    // The bounce's gather looks no farther than a block's halo (less the bilinear cell and a
+    // texel), so that a block's core gathers the same terrain as the whole level does.
+    o.bounce.gather.radius_texels =
+        std::min(o.bounce.gather.radius_texels, std::max(1.0, double(s.block_halo_texels - 2)));
     o.threads = s.threads;
     o.progress = progress;
     o.visibility = backend;

@@ -44,6 +44,8 @@ struct BlockShading {
 
 // One grey Lambert material everywhere: relief shows form, not land cover.
 render::MaterialRaster grey_materials(std::size_t n, float albedo);
+// The grey relief's albedo (`--colors grey`'s, 0.18): what its bounced light reflects.
+inline constexpr float kReliefAlbedo = 0.18f;
 
 // The materials of the window from its grid (heights as shaded) and its true heights.
 using BlockMaterials =

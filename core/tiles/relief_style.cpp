@@ -17,12 +17,15 @@ public:
     bool takes_max_error() const override { return true; }
     bool takes_relief_contrast() const override { return true; }
     std::vector<float> shade_block(const BlockShading& b) const override {
+        // Relief is relative to open flat ground, so the albedo only sets how much light bounces:
+        // `--colors grey`'s, as a path tracer's uniform grey terrain.
         const auto radiance = render_block(
-            b, [](const terrain::HeightGrid& g, const terrain::HeightGrid&) { return grey_materials(g.z.size(), 1.0f); },
+            b,
+            [](const terrain::HeightGrid& g, const terrain::HeightGrid&) { return grey_materials(g.z.size(), kReliefAlbedo); },
             false);
         std::vector<float> values(radiance.size());
         for (std::size_t k = 0; k < values.size(); ++k)
-            values[k] = relief_grey(render::luminance(radiance[k]) / b.flat, b.shading.relief_contrast);
+            values[k] = relief_grey(render::luminance(radiance[k]) / (b.flat * kReliefAlbedo), b.shading.relief_contrast);
         return values;
     }
 };

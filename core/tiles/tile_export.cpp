@@ -92,6 +92,11 @@ std::string describe_job(const TileJob& job) {
     const std::string light = s.style->data_tile() ? ",\"light\":\"" + std::to_string(s.light_directions) + "_" +
                                                          std::to_string(s.light_components) + "\""
                                                    : "";
+    const bool lit = s.style->takes_relief_contrast() || s.style->colours_land() || s.style->data_tile();
+    const std::string bounce = lit ? ",\"bounce\":\"" + std::to_string(s.bounce.bounces) + "_" +
+                                         std::to_string(s.bounce.gather.directions) + "_" +
+                                         number(s.bounce.gather.radius_texels) + "\""
+                                   : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -101,7 +106,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + insolation + light + "}\n";
+           by_zoom + max_error + dem + colors + insolation + light + bounce + "}\n";
 }
 
 LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) {

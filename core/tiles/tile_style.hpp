@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/light/sky.hpp"
+#include "core/render/bounce_transfer.hpp"
 #include "core/material/palette_materials.hpp"
 
 namespace ts::tiles {
@@ -120,6 +121,7 @@ struct TileShading {
     light::SkyOptions sky;     // relief, color
     render::ColorDesign colors;  // color: the land colours, fitted to the whole DEM's heights
     int directions = 16;       // horizon azimuths of the visibility (relief, svf, color, insolation: 64)
+    render::BounceSettings bounce;  // light bounced off the terrain (relief, color, lightable)
     // --max-error (relief, color; > 0): a level shaded in blocks takes each block's directions
     // from the block's own roughness (quality::choose_radiance), so flat blocks get fewer; a
     // level in one block keeps `directions` (the zoom's choice). 0: every block `directions`.

@@ -23,6 +23,18 @@ std::vector<float> log_sh_raster(const HorizonSet& set, float log_eps, int threa
     return out;
 }
 
+std::array<float, 16> level_log_visibility(int directions, float log_eps) {
+    HorizonSet level;
+    level.width = level.height = 1;
+    level.directions = directions;
+    level.angle.resize(std::size_t(directions));
+    for (int d = 0; d < directions; ++d) level.angle[std::size_t(d)] = 0.0f;
+    const std::vector<float> v = log_sh_raster(level, log_eps, 1);
+    std::array<float, 16> out{};
+    for (int i = 0; i < kCoeffs; ++i) out[std::size_t(i)] = v[std::size_t(i)];
+    return out;
+}
+
 std::vector<float> exp_sh_raster(std::span<const float> log_sh, std::size_t texels, sh::ExpMethod method,
                                  int threads) {
     std::vector<float> out(log_sh.size());

@@ -31,6 +31,7 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
     options.sky = light::parse_sky_options(s.sky);
     options.colors = render::fit_colors(s.colors, dem);
     options.renderer.directions = s.directions;
+    options.renderer.bounce = s.bounce;
     ProgressBar bar("visibility", std::uint64_t(dem.width) * std::uint64_t(dem.height) * std::uint64_t(s.directions),
                     "rays");
     options.renderer.progress = &bar;
@@ -96,6 +97,7 @@ Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings
                                                                whole_fly_bytes(std::int64_t(overview_->points.z.size())) + far_->bytes());
     co.shading.halo = settings_.detail_halo;
     co.shading.directions = settings_.directions;
+    co.shading.bounce = settings_.bounce;
     co.shading.sky = settings_.sky;
     co.shading.colors = settings_.colors;  // the cache fits it on the overview, as make_scene does
     cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);

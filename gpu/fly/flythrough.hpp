@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/render/bounce_transfer.hpp"
 #include "core/blockers/sphere_blocker.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/dem/dem.hpp"
@@ -47,6 +48,7 @@ struct FlySettings {
     std::string sky = "clear";
     ts::render::ColorDesign colors;  // --colors, --snow-line (percent stops fitted to the DEM flown)
     int directions = 16;
+    ts::render::BounceSettings bounce;  // light bounced off the terrain (--bounces)
     fly::CdlodOptions lod;
     double haze_km = 250.0;
     double fov_deg = 60.0;

@@ -390,6 +390,10 @@ SkyShadowAtFloor sky_shadow_at_floor(Context& context, double wall_deg, const me
     // Grey ground: the drop is read from the green channel alone (exposed_of_code), exact for a
     // grey; the hypsometric palette's green lowland put the ratio at 1.718.
     settings.colors.palette = *render::Palette::named("grey");
+    // Sky light alone: the shadow takes its share of all the light besides the sun, so bounced
+    // light from the walls (5% of the floor's here, which an aircraft overhead hardly blocks)
+    // would put the ratio 0.09 higher.
+    settings.bounce.bounces = 0;
     Flythrough flight(dem, settings, context);
     flight.set_time(light::parse_utc_time("2024-12-21T12:00:00Z"));
     flight.set_aircraft(cessna, 1.0, -90.0, spheres);

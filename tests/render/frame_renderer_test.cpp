@@ -112,7 +112,9 @@ TEST(FrameRenderer, AWallShadowsTheTexelsBehindIt) {
     t.grid = terrain::HeightGrid::uniform(t.w, t.h, t.z, 30, 30);
     MaterialRaster m = t.grey(0.5f);
     std::fill(m.water.begin(), m.water.end(), 0);  // height 0 would be sea: keep it land
-    Renderer r(t.grid, std::move(m), terrain_normals(t.grid), {}, small_options());
+    RendererOptions direct = small_options();
+    direct.bounce.bounces = 0;  // direct light: nothing at all in the shadow
+    Renderer r(t.grid, m, terrain_normals(t.grid), {}, direct);
     const SunState sun{180.0, 30.0};
     const UniformSky sky(0.0f, sun_direction(sun), 100.0f);
     std::vector<glm::vec3> out;
@@ -126,6 +128,13 @@ TEST(FrameRenderer, AWallShadowsTheTexelsBehindIt) {
     EXPECT_NEAR(vis(5), 1.0f, 1e-3f);   // 5 texels (150 m) north: lit again
     EXPECT_NEAR(out[std::size_t(8 * t.w + 10)].x, 0.0f, 1e-6f);
     EXPECT_GT(out[std::size_t(5 * t.w + 10)].x, 1.0f);
+    // With the default bounce the shadow gets some of the light the sunlit wall reflects.
+    Renderer bounced(t.grid, m, terrain_normals(t.grid), {}, small_options());
+    std::vector<glm::vec3> with_bounce;
+    bounced->render(sky, sun, with_bounce);
+    const float shadow = with_bounce[std::size_t(8 * t.w + 10)].x, lit = with_bounce[std::size_t(5 * t.w + 10)].x;
+    EXPECT_GT(shadow, 0.0f);
+    EXPECT_LT(shadow, 0.15f * lit);
 }
 
 TEST(FrameRenderer, SunBelowHorizonGivesSkyOnly) {

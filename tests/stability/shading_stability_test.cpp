@@ -92,7 +92,8 @@ double relative_rmse(const std::vector<glm::vec3>& frame, const std::vector<std:
 TEST(StabilityShading, GrazingSunBelowTwoDegreesIsFiniteAndCloseToTheReference) {
     // Sun at 1.9, 1.0 and 0.4 degrees: long shadows over most of the ridges. Expected: no NaN,
     // no negative radiance, sun fractions within 0.05 (mean) of the raymarched ones, and the
-    // luminance within a bounded relative RMSE of the reference (measured 5..8%; bound 15%).
+    // luminance within a bounded relative RMSE of the reference (measured 4.3-4.5%, the default
+    // bounce included, which the direct-light reference has not; bound 15%).
     const Terrain t = make_terrain(48, 48, 30.0, ridges);
     MapScene scene(t.grid);
     const auto texels = every_nth_texel(t.grid, 29);
@@ -105,6 +106,7 @@ TEST(StabilityShading, GrazingSunBelowTwoDegreesIsFiniteAndCloseToTheReference) 
         for (std::size_t k = 0; k < texels.size(); ++k)
             diff += std::abs(scene.renderer->sun_visibility()[texels[k]] - ref[k].sun_fraction);
         EXPECT_LT(diff / double(texels.size()), 0.05) << "sun elevation " << el;
+        std::printf("grazing sun %.1f deg: relative RMSE %.4f\n", el, relative_rmse(frame, texels, ref));
         EXPECT_LT(relative_rmse(frame, texels, ref), 0.15) << "sun elevation " << el;
     }
 }

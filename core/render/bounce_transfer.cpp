@@ -1,0 +1,143 @@
+#include "core/render/bounce_transfer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "core/util/error.hpp"
+#include "core/util/parallel_for.hpp"
+
+namespace ts::render {
+namespace {
+
+constexpr double kPiD = std::numbers::pi;
+
+// F(h) of terrain_gather.hpp with libm (per texel and azimuth once: exactness over speed).
+double above(double h, double a, double nz) {
+    const double c = std::cos(h);
+    return visibility::sky_above(h, std::sin(2 * h), c * c, a, nz);
+}
+
+}  // namespace
+
+void check_bounce_settings(const BounceSettings& s) {
+    if (s.bounces < 0 || s.bounces > 2)
+        throw InputError("bounces: " + std::to_string(s.bounces) + ": must be 0, 1 or 2");
+    visibility::check_gather_settings(s.gather, "bounced light");
+}
+
+std::array<float, 16> flat_transfer() {
+    // c_l = the clamped cosine / pi's zonal coefficients, as diffuse_band_correction.cpp scales to.
+    std::array<float, 16> t{};
+    t[0] = float(std::sqrt(kPiD) / 2 / kPiD);
+    t[2] = float(std::sqrt(kPiD / 3) / kPiD);
+    t[6] = float(std::sqrt(5 * kPiD) / 8 / kPiD);
+    return t;
+}
+
+double blocked_view(const visibility::HorizonSet& horizons, std::size_t texel, const glm::dvec3& n) {
+    const int d_count = horizons.directions;
+    const double nz = std::max(n.z, 1e-6);
+    double blocked = 0;
+    for (int d = 0; d < d_count; ++d) {
+        const double hd = horizons.plane(d)[texel];
+        if (std::isnan(hd)) continue;
+        const double phi = visibility::azimuth_rad(d, d_count);
+        const double a = n.x * std::cos(phi) + n.y * std::sin(phi);
+        const double hp = std::atan(-a / nz);  // the receiver's own plane
+        blocked += above(hp, a, nz) - above(std::max(hd, hp), a, nz);
+    }
+    return std::max(0.0, blocked * 2 * kPiD / d_count);
+}
+
+std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s) {
+    check_bounce_settings(s);
+    if (s.bounces == 0) return {};
+    const terrain::HeightGrid& grid = *in.grid;
+    const std::size_t texels = std::size_t(grid.width) * std::size_t(grid.height);
+    const int k_count = in.coefficients;
+    if (k_count < 1 || k_count > 16) throw std::invalid_argument("bounce_transfer: 1..16 coefficients");
+    if (!in.transfer || in.albedo.size() != texels || in.horizons->texels() != texels || in.normals->z.size() != texels)
+        throw std::invalid_argument("bounce_transfer: inputs must cover the grid");
+    const std::size_t K = std::size_t(k_count);
+    const std::array<float, 16> flat = flat_transfer();
+    std::vector<float> out(K * texels, std::numeric_limits<float>::quiet_NaN());
+    // Per receiver, the gather's scale (seen weight -> steradians / pi), kept for a second pass.
+    std::vector<float> seen_coef(texels, 0.0f);
+    auto valid = [&](std::size_t t) { return !std::isnan(grid.z[t]) && !std::isnan(in.horizons->angle[t]) &&
+                                             !std::isnan(in.transfer[t]); };
+
+    // Pass 1: the scaled gather of albedo_j T_j, and the far ground.
+    std::vector<float> values;
+    const bool gather = s.gather.enabled() && grid.width > 1 && grid.height > 1;
+    if (gather) {
+        values.assign(texels * K, std::numeric_limits<float>::quiet_NaN());
+        for (std::size_t t = 0; t < texels; ++t)
+            if (valid(t))
+                for (std::size_t i = 0; i < K; ++i) values[t * K + i] = in.albedo[t] * in.transfer[i * texels + t];
+    }
+    visibility::TerrainGatherInputs gi;
+    gi.grid = &grid;
+    gi.horizons = in.horizons;
+    gi.normals = in.normals;
+    gi.channels = k_count;
+    gi.values = values;
+    gi.curvature = in.curvature;
+    const long long work_per_row = (long long)grid.width * (gather ? std::min(s.gather.directions, 64) * 16 : 32);
+    parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
+        std::unique_ptr<visibility::TerrainGatherer> g;
+        if (gather) g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
+        for (int r = r0; r < r1; ++r) {
+            if (g) g->set_row(r);
+            for (int c = 0; c < grid.width; ++c) {
+                const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
+                if (!valid(t)) continue;
+                const glm::dvec3 n(in.normals->x[t], in.normals->y[t], in.normals->z[t]);
+                const double blocked = blocked_view(*in.horizons, t, n);
+                double far_sr = blocked, coef = 0;
+                if (g && blocked > 0) {
+                    g->gather(c, r);
+                    const double dphi = 2 * kPiD / g->sectors();
+                    const double total = (g->seen_weight() + g->far_weight()) * dphi;
+                    if (total > 0) {  // scaled to the exact blocked part (see the header)
+                        const double scale = blocked / total;
+                        coef = scale * dphi / kPiD;
+                        far_sr = scale * g->far_weight() * dphi;
+                    }
+                }
+                seen_coef[t] = float(coef);
+                const double far = far_sr / kPiD * in.albedo[t];
+                for (std::size_t i = 0; i < K; ++i)
+                    out[i * texels + t] = float((coef > 0 ? coef * g->seen()[i] : 0.0) + far * flat[i]);
+            }
+        }
+    });
+    if (s.bounces < 2 || !gather) return out;
+
+    // Pass 2: the same weights over albedo_j T_b,j (the light the first bounce leaves on the
+    // terrain); the flat ground beyond bounces nothing more (nothing blocks its view).
+    for (std::size_t t = 0; t < texels; ++t)
+        for (std::size_t i = 0; i < K; ++i)
+            values[t * K + i] = valid(t) ? in.albedo[t] * out[i * texels + t] : std::numeric_limits<float>::quiet_NaN();
+    std::vector<float> second(K * texels, 0.0f);
+    parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
+        visibility::TerrainGatherer g(gi, s.gather);
+        for (int r = r0; r < r1; ++r) {
+            g.set_row(r);
+            for (int c = 0; c < grid.width; ++c) {
+                const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
+                if (!(seen_coef[t] > 0)) continue;
+                g.gather(c, r);
+                for (std::size_t i = 0; i < K; ++i) second[i * texels + t] = float(seen_coef[t] * g.seen()[i]);
+            }
+        }
+    });
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] += second[j];
+    return out;
+}
+
+}  // namespace ts::render

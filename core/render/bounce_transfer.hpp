@@ -1,0 +1,69 @@
+#pragma once
+// Light that bounces off the terrain, as a transfer of its own (docs/rendering.md, "Bounced
+// light"). A texel's sky transfer T_d sees the sky above its horizons (and the sky model's
+// ground where its view passes over every blocker); below its horizons it sees terrain, whose
+// radiance under the frame's light is, for a Lambertian texel j,
+//   B_j = albedo_j <T_j, L>          (L: the sky plus the sun, both in SH)
+// which is linear in L. So the light a receiver t gets from the terrain it sees is a transfer
+// too, fixed by the terrain and made once:
+//   T_b,t = sum_j (w_tj / pi) albedo_j T_j  +  (w_far,t / pi) albedo_t T_flat
+// w_tj the cosine-weighted solid angle of the terrain j fills in t's view (the horizon gather,
+// core/visibility/terrain_gather.hpp), scaled so that the weights sum to the exact blocked part
+// of t's view from all D horizons; w_far what the gather does not reach (beyond its radius, off
+// the grid): open flat ground with t's albedo, T_flat the projected clamped cosine about the
+// vertical. A second bounce is the same gather of albedo_j T_b,j.
+//
+// The sky part then joins the sky transfer (T_d + T_b: no cost per frame); the sun part is
+// <T_b, E_sun Y(s)> per texel and frame over T_b's bands 0..1, smooth (the neighbours' SH-lit
+// sun), which is all the bounce needs. 0 bounces: no T_b (direct light only).
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/terrain/height_grid.hpp"
+#include "core/terrain/terrain_normals.hpp"
+#include "core/visibility/horizon_set.hpp"
+#include "core/visibility/terrain_gather.hpp"
+
+namespace ts::render {
+
+// The sun's part takes T_b's bands 0..1 (4 coefficients): the bounce is smooth, and against
+// Blender Cycles all 9 changed the error by under 0.1% of the radiance (docs/rendering.md).
+inline constexpr int kBounceSunCoefficients = 4;
+
+// Speed/accuracy knobs (`--bounces`, `--bounce-directions`, `--bounce-radius`; chart in
+// docs/rendering.md, "Bounced light").
+struct BounceSettings {
+    int bounces = 1;                           // 0, 1 or 2
+    visibility::TerrainGatherSettings gather;  // directions 16, radius 64 texels, growth 1.2
+};
+
+// Throws ts::InputError on bounces outside 0..2 or a bad gather.
+void check_bounce_settings(const BounceSettings& s);
+
+struct BounceInputs {
+    const terrain::HeightGrid* grid = nullptr;
+    const visibility::HorizonSet* horizons = nullptr;  // over the whole grid (D azimuths)
+    const NormalField* normals = nullptr;
+    std::span<const float> albedo;    // per texel, grey (what the terrain reflects)
+    const float* transfer = nullptr;  // T_d [16][texels], band-corrected (bands 0..2 carry light)
+    int coefficients = 9;             // the K leading coefficients of T_d that carry light
+    double curvature = 0;             // as the horizons have it (earth_curvature.hpp)
+    int threads = 0;
+};
+
+// The open flat texel's band-corrected diffuse transfer (the clamped cosine / pi about +z
+// projected to bands 0..2): what T_d is for a level texel with nothing above its horizon.
+std::array<float, 16> flat_transfer();
+
+// T_b [K][texels] (K = in.coefficients); NaN on void texels; empty with 0 bounces. Rows in parallel.
+std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s);
+
+// The blocked part of a receiver's view, in steradians, cosine-weighted (D azimuths, exact):
+// the terrain above its own plane. pi (1 - svf), svf the tilted sky view factor.
+double blocked_view(const visibility::HorizonSet& horizons, std::size_t texel, const glm::dvec3& normal);
+
+}  // namespace ts::render

@@ -1,0 +1,162 @@
+// The bounced light's transfer (core/render/bounce_transfer.hpp): its view weights against a
+// brute-force integral, its gather's scaling (terrain that all reflects alike gives exactly the
+// blocked part of the view times that), the bounce counts, and the band correction calibrated
+// on a level texel.
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/render/bounce_transfer.hpp"
+#include "core/render/shading_state.hpp"
+#include "core/visibility/compute_horizons.hpp"
+#include "tests/render/grey_materials.hpp"
+
+namespace ts::render {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The cosine-weighted solid angle below the horizons, in front of the receiver's plane, by brute force.
+double brute_force_blocked(const std::vector<float>& h, const glm::dvec3& n) {
+    double blocked = 0;
+    const int d_count = int(h.size()), steps = 4000;
+    const double de = kPi / steps;
+    for (int d = 0; d < d_count; ++d) {
+        const double phi = 2 * kPi * d / d_count;
+        for (int k = 0; k < steps; ++k) {
+            const double e = -kPi / 2 + (k + 0.5) * de;
+            const glm::dvec3 dir(std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi), std::sin(e));
+            const double c = n.x * dir.x + n.y * dir.y + n.z * dir.z;
+            if (c > 0 && e < h[std::size_t(d)]) blocked += c * std::cos(e) * de * 2 * kPi / d_count;
+        }
+    }
+    return blocked;
+}
+
+TEST(BounceTransfer, TheBlockedViewMatchesItsIntegral) {
+    const int d_count = 32;
+    visibility::HorizonSet set;
+    set.width = set.height = 1;
+    set.directions = d_count;
+    set.angle.resize(std::size_t(d_count));
+    // A level receiver under a uniform horizon: pi sin^2 h.
+    for (int d = 0; d < d_count; ++d) set.angle[std::size_t(d)] = 0.3f;
+    EXPECT_NEAR(blocked_view(set, 0, {0, 0, 1}), kPi * std::sin(0.3f) * std::sin(0.3f), 1e-6);
+    // A slope tilted 30 degrees to the east under varying horizons, some below the horizontal.
+    std::vector<float> h(static_cast<std::size_t>(d_count), 0.0f);
+    for (int d = 0; d < d_count; ++d)
+        h[std::size_t(d)] = set.angle[std::size_t(d)] = float(0.25 * std::sin(2 * kPi * d / d_count) - 0.1);
+    const glm::dvec3 n(std::sin(kPi / 6), 0, std::cos(kPi / 6));
+    EXPECT_NEAR(blocked_view(set, 0, n), brute_force_blocked(h, n), 2e-3 * kPi);
+    EXPECT_GT(blocked_view(set, 0, n), 0.05);
+}
+
+// A V-shaped valley, 48 x 48 texels of 30 m, slopes of 0.6.
+struct Valley {
+    std::vector<float> z;
+    terrain::HeightGrid grid;
+    visibility::HorizonSet horizons;
+    NormalField normals;
+    Valley() : z(48 * 48) {
+        for (int r = 0; r < 48; ++r)
+            for (int c = 0; c < 48; ++c) z[std::size_t(r * 48 + c)] = float(0.6 * 30 * std::abs(c - 23.5));
+        grid = terrain::HeightGrid::uniform(48, 48, z, 30, 30);
+        visibility::HorizonOptions o;
+        o.directions = 32;
+        o.curvature = false;
+        horizons = visibility::compute_horizons(grid, o);
+        normals = terrain_normals(grid);
+    }
+    // T_d the same everywhere: flat ground's.
+    std::vector<float> constant_transfer() const {
+        const std::array<float, 16> flat = flat_transfer();
+        std::vector<float> t(16 * z.size());
+        for (int i = 0; i < 16; ++i)
+            for (std::size_t k = 0; k < z.size(); ++k) t[std::size_t(i) * z.size() + k] = flat[std::size_t(i)];
+        return t;
+    }
+    BounceInputs inputs(const std::vector<float>& transfer, const std::vector<float>& albedo) const {
+        BounceInputs in;
+        in.grid = &grid;
+        in.horizons = &horizons;
+        in.normals = &normals;
+        in.albedo = albedo;
+        in.transfer = transfer.data();
+        in.coefficients = 9;
+        in.threads = 2;
+        return in;
+    }
+};
+
+TEST(BounceTransfer, TerrainThatReflectsAlikeGivesTheBlockedViewTimesItsLight) {
+    const Valley v;
+    const std::vector<float> t = v.constant_transfer();
+    const std::vector<float> albedo(v.z.size(), 0.5f);
+    const std::array<float, 16> flat = flat_transfer();
+    const std::size_t n = v.z.size();
+    const std::vector<float> b = bounce_transfer(v.inputs(t, albedo), BounceSettings{});
+    ASSERT_EQ(b.size(), 9 * n);
+    for (int r = 8; r < 40; r += 7)
+        for (int c = 4; c < 44; c += 3) {
+            const std::size_t k = std::size_t(r * 48 + c);
+            const double sr = blocked_view(v.horizons, k, {v.normals.x[k], v.normals.y[k], v.normals.z[k]});
+            for (int i = 0; i < 9; ++i)
+                EXPECT_NEAR(b[std::size_t(i) * n + k], sr / kPi * 0.5 * flat[std::size_t(i)], 1e-5)
+                    << "texel " << c << "," << r << " coefficient " << i;
+        }
+    // The valley floor sees the slopes (31 degrees up across the valley, open along it): a sixth of its view.
+    const std::size_t floor = 24 * 48 + 23;
+    EXPECT_GT(blocked_view(v.horizons, floor, {v.normals.x[floor], v.normals.y[floor], v.normals.z[floor]}),
+              0.15 * kPi);
+    BounceSettings none;
+    none.bounces = 0;
+    EXPECT_TRUE(bounce_transfer(v.inputs(t, albedo), none).empty());
+}
+
+TEST(BounceTransfer, ASecondBounceAddsAndBlackTerrainBouncesNothing) {
+    const Valley v;
+    const std::vector<float> t = v.constant_transfer();
+    const std::size_t n = v.z.size(), floor = 24 * 48 + 23;
+    BounceSettings one, two;
+    two.bounces = 2;
+    const std::vector<float> grey(n, 0.5f), black(n, 0.0f);
+    const std::vector<float> b1 = bounce_transfer(v.inputs(t, grey), one);
+    const std::vector<float> b2 = bounce_transfer(v.inputs(t, grey), two);
+    // The second bounce is the first's light reflected once more: about albedo x blocked / pi of it.
+    EXPECT_GT(b2[floor], b1[floor] * 1.02f);
+    EXPECT_LT(b2[floor], b1[floor] * 1.5f);
+    for (float x : bounce_transfer(v.inputs(t, black), two)) EXPECT_EQ(x, 0.0f);
+}
+
+TEST(BounceTransfer, RefusesBadSettings) {
+    BounceSettings s;
+    s.bounces = 3;
+    EXPECT_THROW(check_bounce_settings(s), InputError);
+    s.bounces = 1;
+    s.gather.radius_texels = 0;
+    EXPECT_THROW(check_bounce_settings(s), InputError);
+}
+
+// An open level texel's diffuse transfer is the projected clamped cosine exactly: the band
+// correction is calibrated on a level texel's own horizons (its log floor below them), not on
+// a receiver with nothing below it at all.
+TEST(BandCorrection, ALevelTexelsTransferIsTheProjectedCosine) {
+    std::vector<float> z(24 * 24, 800.0f);
+    const terrain::HeightGrid grid = terrain::HeightGrid::uniform(24, 24, z, 30, 30);
+    RendererOptions o;
+    o.directions = 16;
+    o.curvature = false;
+    o.threads = 2;
+    o.keep_diffuse_transfer = true;
+    auto state = compute_shading_state(grid, testing::grey_materials(grid, 0.3f), terrain_normals(grid), o);
+    const std::array<float, 16> flat = flat_transfer();
+    const std::vector<float>& t = state->kept_diffuse_transfer();
+    const std::size_t k = 12 * 24 + 12, n = z.size();
+    for (int i = 0; i < 9; ++i) EXPECT_NEAR(t[std::size_t(i) * n + k], flat[std::size_t(i)], 2e-4) << i;
+    EXPECT_TRUE(state->bounce_transfer().empty());  // nothing above a level texel's plane
+}
+
+}  // namespace
+}  // namespace ts::render

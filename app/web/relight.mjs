@@ -12,6 +12,8 @@
 const DEG = Math.PI / 180;
 // The first transfer plane among a tile's texel planes (after valid, normal and albedo).
 const FIRST_TRANSFER = 7;
+// The bounced light's sun part: T_b's bands 0..1 (kLightBounce in core/tiles/lightable_tile.hpp).
+const BOUNCE = 4;
 const LUM = [0.2126, 0.7152, 0.0722];
 
 // The tile's header, planes and sampling from its decoded PNG ({width, height, channels: 1, data};
@@ -20,7 +22,7 @@ export function readLightableTile(img) {
   const d = img.data, W = img.width;
   if (img.channels !== 1 || d[0] !== 84 || d[1] !== 83 || d[2] !== 76 || d[3] !== 49)
     throw new Error('not a terrashade lightable tile (no TSL1 header)');
-  if (d[4] !== 2) throw new Error(`lightable tile version ${d[4]}: this reader reads version 2 (make the tiles again)`);
+  if (d[4] !== 3) throw new Error(`lightable tile version ${d[4]}: this reader reads version 3 (make the tiles again)`);
   const u16 = (i) => d[i] | (d[i + 1] << 8);
   const u32 = (i) => (d[i] | (d[i + 1] << 8) | (d[i + 2] << 16) | (d[i + 3] << 24)) >>> 0;
   const K = d[5], D = u16(6), P = u16(8), S = u16(10), headerRows = u16(12);
@@ -33,7 +35,7 @@ export function readLightableTile(img) {
   const dirs = Array.from({length: P}, (_, j) => u16(dirsAt + 2 * j));
   const start = (dirsAt + 2 * P + 3) & ~3;
   const nodes = separable ? 2 * S : 2 * (S / step + 1) ** 2;
-  const floats = new Float32Array(2 * P + 6 + 9 + 9 * K + 2 * K + nodes);
+  const floats = new Float32Array(2 * P + 6 + 9 + 9 * K + 2 * K + 2 * BOUNCE + nodes);
   const view = new DataView(d.buffer, d.byteOffset + start, 4 * floats.length);
   for (let i = 0; i < floats.length; ++i) floats[i] = view.getFloat32(4 * i, true);
   // Each stored direction's horizon range (radians), by plane.
@@ -43,15 +45,17 @@ export function readLightableTile(img) {
   const f0 = 2 * P + 6;
   const mean = floats.subarray(f0, f0 + 9), basis = floats.subarray(f0 + 9, f0 + 9 + 9 * K);
   const wLo = floats.subarray(f0 + 9 + 9 * K, f0 + 9 + 10 * K), wHi = floats.subarray(f0 + 9 + 10 * K, f0 + 9 + 11 * K);
-  const coords = floats.subarray(f0 + 9 + 11 * K);
+  const bounceLo = floats.subarray(f0 + 9 + 11 * K, f0 + 9 + 11 * K + BOUNCE);
+  const bounceHi = floats.subarray(f0 + 9 + 11 * K + BOUNCE, f0 + 9 + 11 * K + 2 * BOUNCE);
+  const coords = floats.subarray(f0 + 9 + 11 * K + 2 * BOUNCE);
   // Plane rows: pixels' coverage (S rows), then the texel planes (th rows each), W bytes a row.
   const rowOf = (r) => (headerRows + r) * W;
   const coverage = new Uint8Array(S * S);
   for (let r = 0; r < S; ++r) coverage.set(d.subarray(rowOf(r), rowOf(r) + S), r * S);
   const n = tw * th;
-  // Texel planes: valid, normal (3), albedo (3), transfer (K), each th rows; then the horizon
-  // planes, interleaved by texel row (row r of stored direction j is row r * P + j of their block).
-  const firstHorizon = FIRST_TRANSFER + K;
+  // Texel planes: valid, normal (3), albedo (3), transfer (K), bounce (4), each th rows; then the
+  // horizon planes, interleaved by texel row (row r of stored direction j is row r * P + j of their block).
+  const firstBounce = FIRST_TRANSFER + K, firstHorizon = firstBounce + BOUNCE;
   const cache = [];
   const texelPlane = (k) => (cache[k] ??= copyPlane(k));  // copied out once, kept
   const copyPlane = (k) => {
@@ -79,7 +83,7 @@ export function readLightableTile(img) {
   dirs.forEach((dir, j) => (stored[dir] = j));
   const planeOf = (dir) => (stored[dir] >= 0 ? firstHorizon + stored[dir] : -1);
   return {size: S, n, K, D, dirs, hLo, hHi, hLevels: levels, mean, basis, wLo, wHi, planeOf,
-          plane: texelPlane, firstHorizon, albedoLo, albedoHi,
+          plane: texelPlane, firstHorizon, firstBounce, bounceLo, bounceHi, albedoLo, albedoHi,
           coverage, separable, step, coords, levelW, levelH, x0, y0, tw, th,
           valid: texelPlane(0), nHiX: texelPlane(1), nHiY: texelPlane(2), nLo: texelPlane(3)};
 }
@@ -222,6 +226,28 @@ function skyThroughTransfer(tile, sky) {
   return {base, wk};
 }
 
+// Per texel of the window: the bounced light's sun part <T_b, Y(s)> (times E_sun it is light,
+// as FrameRenderer adds it; core/render/bounce_transfer.hpp), or null when the sun is down.
+function bounceSun(tile, light) {
+  if (!(light.eDiffuse > 0)) return null;
+  const [sx, sy, sz] = light.s;
+  const y = [0.28209479177387814, 0.4886025119029199 * sy, 0.4886025119029199 * sz, 0.4886025119029199 * sx];
+  let base = 0;
+  const step = new Float64Array(BOUNCE), planes = [];
+  for (let i = 0; i < BOUNCE; ++i) {
+    base += tile.bounceLo[i] * y[i];
+    step[i] = (tile.bounceHi[i] - tile.bounceLo[i]) / 255 * y[i];
+    planes.push(tile.plane(tile.firstBounce + i));
+  }
+  const out = new Float32Array(tile.n);
+  for (let k = 0; k < tile.n; ++k) {
+    let u = base;
+    for (let i = 0; i < BOUNCE; ++i) u += step[i] * planes[i][k];
+    out[k] = u;
+  }
+  return out;
+}
+
 // Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
 export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
   const {n, K, valid} = tile;
@@ -230,6 +256,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
   for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
   const normal = vis ? texelNormals(tile) : null;
+  const bounce = bounceSun(tile, light);
   const [sx, sy, sz] = light.s;
   const inv = 1 / light.flat;
   const grey = new Float32Array(n);
@@ -240,6 +267,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
     if (vis) {
       const cos = normal.x[k] * sx + normal.y[k] * sy + normal.z[k] * sz;
       if (cos > 0) lum += vis[k] * cos * light.eDiffuse;
+      lum += bounce[k] * Math.PI * light.eDiffuse;
     }
     const ratio = Math.max(0, lum * inv);
     grey[k] = Math.min(1, Math.max(0, flatGrey * (contrast === 1 ? ratio : Math.pow(ratio, contrast))));
@@ -257,6 +285,7 @@ export function texelColor(tile, light, exposure) {
   for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
   const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
   const normal = vis ? texelNormals(tile) : null;
+  const bounce = bounceSun(tile, light);
   const [sx, sy, sz] = light.s;
   const scale = exposure / light.flat;
   // Per channel, interleaved (wk[3 k + c]) for the loop below.
@@ -280,6 +309,8 @@ export function texelColor(tile, light, exposure) {
     if (vis) {
       const cos = normal.x[k] * sx + normal.y[k] * sy + normal.z[k] * sz;
       if (cos > 0) { const d = vis[k] * cos; lr += d * eR, lg += d * eG, lb += d * eB; }
+      const u = bounce[k] * Math.PI;
+      lr += u * eR, lg += u * eG, lb += u * eB;
     }
     r[k] = Math.max(0, lr) * (aLo[0] + aR[k] * aStep[0]) * scale;
     g[k] = Math.max(0, lg) * (aLo[1] + aG[k] * aStep[1]) * scale;

@@ -34,10 +34,15 @@ public:
             values.assign(n * std::size_t(ch), 0.0f);
             const render::NormalField& nf = state.normals();
             const std::vector<float>& t = state.kept_diffuse_transfer();
+            const std::vector<float>& bounce = state.bounce_transfer();  // empty: none
             for (std::size_t k = 0; k < n; ++k) {
                 float* v = values.data() + k * std::size_t(ch);
                 v[kLightNormal] = nf.x[k], v[kLightNormal + 1] = nf.y[k], v[kLightNormal + 2] = nf.z[k];
                 for (int i = 0; i < kLightTransfer; ++i) v[kLightTransferAt + i] = t[std::size_t(i) * n + k];
+                for (int i = 0; i < kLightBounce; ++i) {
+                    const float b = bounce.empty() ? 0.0f : bounce[std::size_t(i) * n + k];
+                    v[kLightBounceAt + i] = b == b ? b : 0.0f;
+                }
             }
         };
         // The land's colours as `color` finds them: from the true heights (and slopes, for snow).

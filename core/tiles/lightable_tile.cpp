@@ -191,6 +191,17 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
             }
     for (std::size_t c = 0; c < 3; ++c)
         if (!(a_hi[c] >= a_lo[c])) a_lo[c] = a_hi[c] = 0.0;
+    // The bounce's sun part, per coefficient.
+    std::array<double, kLightBounce> b_lo{}, b_hi{};
+    b_lo.fill(1e9), b_hi.fill(-1e9);
+    for (std::size_t t = 0; t < n; ++t)
+        if (valid[t])
+            for (std::size_t i = 0; i < std::size_t(kLightBounce); ++i) {
+                const double b = at(t, kLightBounceAt + int(i));
+                b_lo[i] = std::min(b_lo[i], b), b_hi[i] = std::max(b_hi[i], b);
+            }
+    for (std::size_t i = 0; i < std::size_t(kLightBounce); ++i)
+        if (!(b_hi[i] >= b_lo[i])) b_lo[i] = b_hi[i] = 0.0;
 
     std::vector<float> w(n * std::size_t(k_count), 0.0f);
     std::vector<double> w_lo(std::size_t(k_count), 0.0), w_hi(std::size_t(k_count), 0.0);
@@ -222,7 +233,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     const int size = px.size;
     const int width = std::max(size, tx.width);
     const int levels = kHorizonLevels;
-    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 2, std::uint8_t(k_count)};
+    std::vector<std::uint8_t> header = {'T', 'S', 'L', '1', 3, std::uint8_t(k_count)};
     put_u16(header, e.directions);
     put_u16(header, int(planes));
     put_u16(header, size);
@@ -245,14 +256,17 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
         for (int i = 0; i < kLightTransfer; ++i) put_float(header, basis[i][order[std::size_t(k)]]);
     for (double v : w_lo) put_float(header, v);
     for (double v : w_hi) put_float(header, v);
+    for (double v : b_lo) put_float(header, v);
+    for (double v : b_hi) put_float(header, v);
     for (float v : px.x) put_float(header, v);
     for (float v : px.y) put_float(header, v);
     const int header_rows = int((header.size() + std::size_t(width) - 1) / std::size_t(width));
     header[12] = std::uint8_t(header_rows & 255), header[13] = std::uint8_t(header_rows >> 8);
 
-    // valid, normal (3), albedo (3), transfer (K), horizons (P)
+    // valid, normal (3), albedo (3), transfer (K), bounce (4), horizons (P)
     constexpr int kFirstTransferPlane = 7;
-    const int texel_planes = kFirstTransferPlane + k_count + int(planes);
+    const int first_bounce = kFirstTransferPlane + k_count;
+    const int texel_planes = first_bounce + kLightBounce + int(planes);
     const std::size_t rows = std::size_t(header_rows) + std::size_t(size) + std::size_t(texel_planes) * std::size_t(tx.height);
     std::vector<std::uint8_t> image(rows * std::size_t(width), 0);
     std::copy(header.begin(), header.end(), image.begin());
@@ -263,7 +277,7 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     // Texel t of plane k. The horizon planes interleave by texel row (row r of direction j is
     // image row r * P + j of their block), so PNG's Up filter predicts each horizon from the
     // same texel's in the previous direction: neighbouring azimuths differ little.
-    const int first_horizon = kFirstTransferPlane + k_count;
+    const int first_horizon = first_bounce + kLightBounce;
     auto texel = [&](int k, std::size_t t) -> std::uint8_t& {
         const std::size_t r = t / std::size_t(tx.width);
         const std::size_t row = std::size_t(header_rows) + std::size_t(size) +
@@ -286,6 +300,8 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
         for (int k = 0; k < k_count; ++k)
             texel(kFirstTransferPlane + k, t) =
                 quantise(w[t * std::size_t(k_count) + std::size_t(k)], w_lo[std::size_t(k)], w_hi[std::size_t(k)]);
+        for (std::size_t i = 0; i < std::size_t(kLightBounce); ++i)
+            texel(first_bounce + int(i), t) = quantise(at(t, kLightBounceAt + int(i)), b_lo[i], b_hi[i]);
         for (std::size_t j = 0; j < planes; ++j)
             texel(first_horizon + int(j), t) = quantise(at(t, kLightHorizonAt + e.bands[j].direction), h_lo[j], h_hi[j], levels);
     }

@@ -19,7 +19,10 @@
 //     3 planes: the land's albedo (linear R, G, B of the job's palette, snow line and land
 //       cover, as `color` colours the texel), a_c = lo_c + q / 255 (hi_c - lo_c)
 //     K planes: the window's principal components of the diffuse transfer T_d (9 SH coefficients,
-//       bands 0..2): T = mean + sum_k w_k basis_k, w_k = lo_k + q / 255 (hi_k - lo_k)
+//       bands 0..2, the bounced light's included): T = mean + sum_k w_k basis_k,
+//       w_k = lo_k + q / 255 (hi_k - lo_k)
+//     4 planes: the bounced light's transfer T_b, bands 0..1 (its sun part: E_sun <T_b, Y(s)>),
+//       b_i = lo_i + q / 255 (hi_i - lo_i)
 //     P planes: horizon elevations at the stored azimuths, h = lo_p + q / L (hi_p - lo_p)
 //       radians (q = 0..L, L the header's horizon levels), clamped to the sun's band in that direction (sun_bands; a horizon below it
 //       lets every sun there through, one above it hides every sun there), so most of a plane is
@@ -31,13 +34,14 @@
 //       direction is not the previous plane's + 1 (those keep q_j); neighbouring azimuths'
 //       horizons differ little, so most differences are 0. Rows interleave (row r of plane j is
 //       row r * P + j of the block).
-// Header (little-endian): "TSL1", u8 version 2, u8 K, u16 D (light directions: azimuth of
+// Header (little-endian): "TSL1", u8 version 3, u8 K, u16 D (light directions: azimuth of
 // direction d = 360 d / D degrees clockwise from north), u16 P, u16 size, u16 header rows, u16 W,
 // u8 separable, u8 grid step, u32 level width, u32 level height, u32 window x0, u32 window y0,
 // u16 window width, u16 window height, u16 horizon key interval (0: no plane is predicted),
 // u16 horizon levels L, P u16 (the stored directions, ascending), zero padding
 // to 4 bytes, then float32: P pairs (horizon lo, hi of each plane: the tile's range within the
-// sun's band in that direction, clamped there); albedo lo[3], hi[3]; mean[9]; basis[K][9]; w lo[K]; w hi[K]; then where
+// sun's band in that direction, clamped there); albedo lo[3], hi[3]; mean[9]; basis[K][9]; w lo[K]; w hi[K];
+// bounce lo[4], hi[4]; then where
 // pixels sample the level, in level texel-centre coordinates minus the window's origin:
 //   separable (geographic and Web Mercator DEMs): x of each column [size], y of each row [size],
 //     clamped to the level as relief clamps them
@@ -50,12 +54,15 @@
 
 namespace ts::tiles {
 
-// Per source texel and tile pixel, in this order: normal (3), albedo (3), transfer (9), horizons (D).
+// Per source texel and tile pixel, in this order: normal (3), albedo (3), transfer (9), the
+// bounced light's sun part (4: bands 0..1 of T_b), horizons (D).
 inline constexpr int kLightNormal = 0;
 inline constexpr int kLightAlbedoAt = 3;
 inline constexpr int kLightTransferAt = 6;
 inline constexpr int kLightTransfer = 9;
-inline constexpr int kLightHorizonAt = kLightTransferAt + kLightTransfer;
+inline constexpr int kLightBounceAt = kLightTransferAt + kLightTransfer;
+inline constexpr int kLightBounce = 4;
+inline constexpr int kLightHorizonAt = kLightBounceAt + kLightBounce;
 inline constexpr int lightable_channels(int directions) { return kLightHorizonAt + directions; }
 
 // Where the sun can be seen from one light direction: its lowest and highest elevation (radians)

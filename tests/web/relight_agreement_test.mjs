@@ -5,6 +5,8 @@
 // tile terrashade makes.
 //   node tests/web/relight_agreement_test.mjs TERRASHADE DEM TMPDIR [ZOOM]
 // Prints the differences' percentiles per instant and fails if they exceed the bounds below.
+// LIGHT_ARGS and REF_ARGS add options to the lightable and to the relief/color jobs (studies:
+// e.g. REF_ARGS="--bounces 0" shows what the bounce adds).
 import {execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -45,7 +47,7 @@ try {
   // Relief's grey, then `color`'s land colours (every channel) from the same data tiles.
   for (const [when, sky, style] of instants.flatMap(([w, s]) => [[w, s, 'relief'], [w, s, 'color']])) {
     const ref_dir = path.join(work, `${style}-${sky}-${when.replace(/:/g, '')}`);
-    run(['tiles', dem, '--zoom', `${zoom}`, '--style', style, '--time', when, '--sky', sky, '--out', ref_dir]);
+    run(['tiles', dem, '--zoom', `${zoom}`, '--style', style, '--time', when, '--sky', sky, ...(process.env.REF_ARGS ? process.env.REF_ARGS.split(' ') : []), '--out', ref_dir]);
     const sun = sunPosition(new Date(when), site);
     const light = lightFor(meta, sun, sky);
     const options = {contrast: meta.relief_contrast, colors: style === 'color' ? meta.colors : null};

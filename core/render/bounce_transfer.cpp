@@ -16,12 +16,6 @@ namespace {
 
 constexpr double kPiD = std::numbers::pi;
 
-// F(h) of terrain_gather.hpp with libm (per texel and azimuth once: exactness over speed).
-double above(double h, double a, double nz) {
-    const double c = std::cos(h);
-    return visibility::sky_above(h, std::sin(2 * h), c * c, a, nz);
-}
-
 }  // namespace
 
 void check_bounce_settings(const BounceSettings& s) {
@@ -41,17 +35,12 @@ std::array<float, 16> flat_transfer() {
 
 double blocked_view(const visibility::HorizonSet& horizons, std::size_t texel, const glm::dvec3& n) {
     const int d_count = horizons.directions;
-    const double nz = std::max(n.z, 1e-6);
-    double blocked = 0;
-    for (int d = 0; d < d_count; ++d) {
-        const double hd = horizons.plane(d)[texel];
-        if (std::isnan(hd)) continue;
-        const double phi = visibility::azimuth_rad(d, d_count);
-        const double a = n.x * std::cos(phi) + n.y * std::sin(phi);
-        const double hp = std::atan(-a / nz);  // the receiver's own plane
-        blocked += above(hp, a, nz) - above(std::max(hd, hp), a, nz);
-    }
-    return std::max(0.0, blocked * 2 * kPiD / d_count);
+    std::vector<double> c(static_cast<std::size_t>(d_count)), sn(static_cast<std::size_t>(d_count));
+    for (int d = 0; d < d_count; ++d)
+        c[std::size_t(d)] = std::cos(visibility::azimuth_rad(d, d_count)),
+        sn[std::size_t(d)] = std::sin(visibility::azimuth_rad(d, d_count));
+    return visibility::blocked_view(horizons.angle.data() + texel, horizons.texels(), d_count, c.data(), sn.data(),
+                                    n.x, n.y, n.z);
 }
 
 std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s) {
@@ -88,6 +77,11 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     gi.values = values;
     gi.curvature = in.curvature;
     const long long work_per_row = (long long)grid.width * (gather ? std::min(s.gather.directions, 64) * 16 : 32);
+    const int d_count = in.horizons->directions;
+    std::vector<double> cos_phi(static_cast<std::size_t>(d_count)), sin_phi(static_cast<std::size_t>(d_count));
+    for (int d = 0; d < d_count; ++d)
+        cos_phi[std::size_t(d)] = std::cos(visibility::azimuth_rad(d, d_count)),
+        sin_phi[std::size_t(d)] = std::sin(visibility::azimuth_rad(d, d_count));
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         std::unique_ptr<visibility::TerrainGatherer> g;
         if (gather) g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
@@ -96,23 +90,22 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
             for (int c = 0; c < grid.width; ++c) {
                 const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
                 if (!valid(t)) continue;
-                const glm::dvec3 n(in.normals->x[t], in.normals->y[t], in.normals->z[t]);
-                const double blocked = blocked_view(*in.horizons, t, n);
-                double far_sr = blocked, coef = 0;
-                if (g && blocked > 0) {
+                double far_sr = 0, coef = 0;
+                if (g) {
+                    // The seen and far weights add up to the blocked view at the gather's sectors.
                     g->gather(c, r);
                     const double dphi = 2 * kPiD / g->sectors();
-                    const double total = (g->seen_weight() + g->far_weight()) * dphi;
-                    if (total > 0) {  // scaled to the exact blocked part (see the header)
-                        const double scale = blocked / total;
-                        coef = scale * dphi / kPiD;
-                        far_sr = scale * g->far_weight() * dphi;
-                    }
+                    coef = dphi / kPiD;
+                    far_sr = g->far_weight() * dphi;
+                } else {
+                    far_sr = visibility::blocked_view(in.horizons->angle.data() + t, texels, d_count, cos_phi.data(),
+                                                      sin_phi.data(), in.normals->x[t], in.normals->y[t],
+                                                      in.normals->z[t]);
                 }
                 seen_coef[t] = float(coef);
                 const double far = far_sr / kPiD * in.albedo[t];
                 for (std::size_t i = 0; i < K; ++i)
-                    out[i * texels + t] = float((coef > 0 ? coef * g->seen()[i] : 0.0) + far * flat[i]);
+                    out[i * texels + t] = float((g ? coef * g->seen()[i] : 0.0) + far * flat[i]);
             }
         }
     });

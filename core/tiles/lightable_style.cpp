@@ -40,8 +40,8 @@ public:
                 v[kLightNormal] = nf.x[k], v[kLightNormal + 1] = nf.y[k], v[kLightNormal + 2] = nf.z[k];
                 for (int i = 0; i < kLightTransfer; ++i) v[kLightTransferAt + i] = t[std::size_t(i) * n + k];
                 for (int i = 0; i < kLightBounce; ++i) {
-                    const float b = bounce.empty() ? 0.0f : bounce[std::size_t(i) * n + k];
-                    v[kLightBounceAt + i] = b == b ? b : 0.0f;
+                    const float tb = bounce.empty() ? 0.0f : bounce[std::size_t(i) * n + k];
+                    v[kLightBounceAt + i] = tb == tb ? tb : 0.0f;
                 }
             }
         };

@@ -54,6 +54,21 @@ inline double weight_above_horizon(double h, double a, double nz) {
 
 }  // namespace
 
+double blocked_view(const float* horizons, std::size_t plane_stride, int directions, const double* cos_phi,
+                    const double* sin_phi, double nx, double ny, double nz) {
+    nz = std::max(nz, 1e-6);
+    double blocked = 0;
+    for (int d = 0; d < directions; ++d) {
+        const double hd = horizons[std::size_t(d) * plane_stride];
+        const double a = nx * cos_phi[d] + ny * sin_phi[d];
+        const double tan_p = -a / nz;  // the receiver's own plane
+        const double hp = fast_atan(tan_p);
+        if (!(hd > hp)) continue;  // nothing above the plane this way (or NaN)
+        blocked += weight_above(hp, tan_p, a, nz) - weight_above_horizon(hd, a, nz);
+    }
+    return std::max(0.0, blocked * 2 * kPi / directions);
+}
+
 void check_gather_settings(const TerrainGatherSettings& s, const char* what) {
     if (s.directions < 0 || s.directions > 1024)
         throw InputError(std::string(what) + ": " + std::to_string(s.directions) + " directions: must be in 0..1024");

@@ -31,6 +31,12 @@ inline T sky_above(T h, T sin_2h, T cos2_h, T a, T nz) {
     return a * (T(kPi) / 4 - h / 2 - sin_2h / 4) + nz * cos2_h / 2;
 }
 
+// The cosine-weighted solid angle of the terrain above a receiver's own plane, from its horizons
+// at `directions` azimuths (horizon_set.hpp's phi_d, their cosines and sines given), in
+// steradians: pi (1 - svf), svf the tilted sky view factor. NaN horizons count as open.
+double blocked_view(const float* horizons, std::size_t plane_stride, int directions, const double* cos_phi,
+                    const double* sin_phi, double nx, double ny, double nz);
+
 // How the march goes (defaults: docs/insolation.md, "Reflected", and docs/rendering.md, "Bounced light").
 struct TerrainGatherSettings {
     // Azimuths of the gather; 0: no gather. When it does not divide the horizons' D, the largest

@@ -3,8 +3,9 @@
 # the Anatolia SRTM3 tile reprojected to a local transverse Mercator at 90 m (scale factor 1 at
 # the centre, so metres on the grid are metres on the ground), a 160 x 160 crop with 1989 m of
 # relief; sun 20 degrees up in the south-east under terrashade's clear sky, and its overcast
-# sky; Cycles with 0 bounces (direct light, what terrashade computes) and 4 (the reference);
-# albedo 0.3 and 0.8. Writes docs/charts/cycles_bench.csv (about 5 minutes on 2 cores).
+# sky; Cycles with 0 bounces (direct light) against terrashade's --bounces 0, and 4 (the
+# reference) against terrashade's 0, 1 and 2; albedo 0.3 and 0.8. Writes
+# docs/charts/cycles_bench.csv (about 6 minutes on 2 cores).
 # Usage: scripts/cycles_bench.sh [BUILD_DIR] [SAMPLES]
 #   BUILD_DIR default build/release; needs its terrashade and sky_equirect_dump
 set -euo pipefail
@@ -19,11 +20,14 @@ csv="$root/docs/charts/cycles_bench.csv"
 "$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
 gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
 
-echo "case,sky,sun_elevation,albedo,bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit" >"$csv"
+echo "case,sky,sun_elevation,albedo,bounces,terrashade_bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit" >"$csv"
 for albedo in 0.3 0.8; do
   for sky in clear overcast; do
-    for bounces in 0 4; do
-      "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" "$bounces" "$samples" \
+    TERRASHADE_BOUNCES=0 "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 0 \
+      "$samples" 135 20 | tee -a "$csv"
+    for ts_bounces in 0 1 2; do  # the same Cycles render for all three (REUSE_CYCLES after the first)
+      REUSE_CYCLES=$([ $ts_bounces = 0 ] && echo 0 || echo 1) TERRASHADE_BOUNCES=$ts_bounces \
+        "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
         135 20 | tee -a "$csv"
     done
   done
@@ -34,7 +38,8 @@ gdal_create -q -outsize 24 24 -bands 1 -ot Float32 -burn 1000 -a_ullr 0 0 2160 -
   -a_srs '+proj=tmerc +lat_0=39.5833333 +lon_0=40.4166667 +k=1 +datum=WGS84 +units=m' "$work/flat.tif"
 for albedo in 0.3 0.8; do
   for sky in clear overcast; do
-    "$root/scripts/cycles_reference.sh" "$build" "$work/flat.tif" "$work/flat" "$sky" "$albedo" 0 "$samples" 135 20 |
+    TERRASHADE_BOUNCES=0 "$root/scripts/cycles_reference.sh" "$build" "$work/flat.tif" "$work/flat" "$sky" "$albedo" 0 \
+      "$samples" 135 20 |
       sed 's/^/flat_/' | tee -a "$csv"
   done
 done

@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # One case of terrashade against Blender Cycles on the same crop, same sun, same sky, grey
 # Lambert terrain (docs/accuracy.md, "Against Blender Cycles"). Prints one CSV row:
-#   case,sky,sun_elevation,albedo,bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit
+#   case,sky,sun_elevation,albedo,bounces,terrashade_bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit
 # Usage: scripts/cycles_reference.sh BUILD_DIR CROP.tif OUT_DIR SKY ALBEDO BOUNCES SAMPLES [AZIMUTH ELEVATION]
 #   BUILD_DIR  a build with terrashade and tests/light/sky_equirect_dump (ninja terrashade sky_equirect_dump)
 #   CROP.tif   a DEM crop in a projected CRS with square texels (scripts/cycles_bench.sh makes one)
 #   SKY        clear | overcast (terrashade's models; their ground below the horizon gets ALBEDO)
 # Needs blender (scripts/setup_reference.sh), oiiotool (openimageio-tools) and python3-gdal.
 # Units match exactly: Cycles' world is terrashade's own sky radiance (kcd/m^2, dumped per
-# direction), its sun lamp terrashade's sun irradiance; terrashade's grey (albedo 0.18) is scaled
-# by ALBEDO / 0.18 (its radiance is linear in the albedo: no interreflection). No fitted factor.
+# direction), its sun lamp terrashade's sun irradiance; terrashade renders grey:ALBEDO. No fitted
+# factor. Environment: TERRASHADE_BOUNCES, terrashade's --bounces (default 1); TERRASHADE_ARGS,
+# more options for terrashade; REUSE_CYCLES=1 keeps a Cycles render already in OUT_DIR (the same
+# case: same tag).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 [ $# -ge 7 ] || { sed -n 2,13p "$0"; exit 2; }
@@ -21,20 +23,21 @@ spec="$sky:albedo=$albedo"
 
 "$build/tests/light/sky_equirect_dump" "$spec" "$azimuth" "$elevation" 1024 "$out/sky_$tag" >/dev/null
 
+cycles_s=0
+if [ "${REUSE_CYCLES:-0}" = 1 ] && [ -f "$out/cycles_$tag.tif" ]; then :; else
 log=$(blender -b --factory-startup -t "$threads" -P "$root/scripts/cycles_reference.py" -- "$crop" "$out/cycles_$tag.tif" \
   --sky map --sky-map "$out/sky_$tag" --albedo "$albedo" --bounces "$bounces" --samples "$samples" \
   --threads "$threads" 2>&1) || { echo "$log" >&2; exit 1; }
 cycles_s=$(echo "$log" | grep -o '"cycles_seconds": [0-9.]*' | awk '{print $2}')
+fi
 
 t0=$(date +%s.%N)
-"$build/app/terrashade" render "$crop" --colors grey --sky "$spec" --sun-azimuth "$azimuth" \
+"$build/app/terrashade" render "$crop" --colors "grey:$albedo" --bounces "${TERRASHADE_BOUNCES:-1}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
   --sun-elevation "$elevation" --no-curvature --cpu --threads "$threads" -o "$out/terrashade_$tag.exr" >/dev/null
 t1=$(date +%s.%N)
 terrashade_s=$(echo "$t1 - $t0" | bc)
 oiiotool "$out/terrashade_$tag.exr" -d float -o "$out/terrashade_$tag.tif"
 
-scale=$(echo "scale=12; $albedo / 0.18" | bc)
-json=$(/usr/bin/python3 "$root/scripts/cycles_compare.py" "$out/cycles_$tag.tif" "$out/terrashade_$tag.tif" \
-  --terrashade-scale "$scale")
+json=$(/usr/bin/python3 "$root/scripts/cycles_compare.py" "$out/cycles_$tag.tif" "$out/terrashade_$tag.tif")
 field() { echo "$json" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['$1'])"; }
-echo "$tag,$sky,$elevation,$albedo,$bounces,$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit)"
+echo "$tag,$sky,$elevation,$albedo,$bounces,${TERRASHADE_BOUNCES:-1},$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit)"

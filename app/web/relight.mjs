@@ -248,15 +248,20 @@ function bounceSun(tile, light) {
   return out;
 }
 
+// What texelGrey and texelColor read per texel: the transfer's component planes and, when the sun
+// is up, its visible fraction, the normals and the bounce's sun part (else null).
+function texelTerms(tile, light) {
+  const planes = [];
+  for (let k = 0; k < tile.K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
+  const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
+  return {planes, vis, normal: vis ? texelNormals(tile) : null, bounce: bounceSun(tile, light)};
+}
+
 // Per texel of the window: relief's display-linear grey under `light` (NaN where not valid).
 export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
   const {n, K, valid} = tile;
   const {base, wk} = skyThroughTransfer(tile, light.skyLum);
-  const planes = [];
-  for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
-  const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
-  const normal = vis ? texelNormals(tile) : null;
-  const bounce = bounceSun(tile, light);
+  const {planes, vis, normal, bounce} = texelTerms(tile, light);
   const [sx, sy, sz] = light.s;
   const inv = 1 / light.flat;
   const grey = new Float32Array(n);
@@ -281,11 +286,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
 // lightable.json). Every texel is Lambert: water's mirror and snow's sheen are not stored.
 export function texelColor(tile, light, exposure) {
   const {n, K, valid, albedoLo, albedoHi} = tile;
-  const planes = [];
-  for (let k = 0; k < K; ++k) planes.push(tile.plane(FIRST_TRANSFER + k));
-  const vis = light.eDiffuse > 0 ? sunVisibility(tile, light) : null;
-  const normal = vis ? texelNormals(tile) : null;
-  const bounce = bounceSun(tile, light);
+  const {planes, vis, normal, bounce} = texelTerms(tile, light);
   const [sx, sy, sz] = light.s;
   const scale = exposure / light.flat;
   // Per channel, interleaved (wk[3 k + c]) for the loop below.

@@ -16,6 +16,17 @@ namespace {
 
 constexpr double kPiD = std::numbers::pi;
 
+// cos and sin of the horizons' D azimuths (horizon_set.hpp's phi_d).
+struct AzimuthTable {
+    std::vector<double> cos_phi, sin_phi;
+    explicit AzimuthTable(int directions) {
+        for (int d = 0; d < directions; ++d) {
+            cos_phi.push_back(std::cos(visibility::azimuth_rad(d, directions)));
+            sin_phi.push_back(std::sin(visibility::azimuth_rad(d, directions)));
+        }
+    }
+};
+
 }  // namespace
 
 void check_bounce_settings(const BounceSettings& s) {
@@ -35,12 +46,9 @@ std::array<float, 16> flat_transfer() {
 
 double blocked_view(const visibility::HorizonSet& horizons, std::size_t texel, const glm::dvec3& n) {
     const int d_count = horizons.directions;
-    std::vector<double> c(static_cast<std::size_t>(d_count)), sn(static_cast<std::size_t>(d_count));
-    for (int d = 0; d < d_count; ++d)
-        c[std::size_t(d)] = std::cos(visibility::azimuth_rad(d, d_count)),
-        sn[std::size_t(d)] = std::sin(visibility::azimuth_rad(d, d_count));
-    return visibility::blocked_view(horizons.angle.data() + texel, horizons.texels(), d_count, c.data(), sn.data(),
-                                    n.x, n.y, n.z);
+    const AzimuthTable az(d_count);
+    return visibility::blocked_view(horizons.angle.data() + texel, horizons.texels(), d_count, az.cos_phi.data(),
+                                    az.sin_phi.data(), n.x, n.y, n.z);
 }
 
 std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s) {
@@ -55,8 +63,6 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     const std::size_t K = std::size_t(k_count);
     const std::array<float, 16> flat = flat_transfer();
     std::vector<float> out(K * texels, std::numeric_limits<float>::quiet_NaN());
-    // Per receiver, the gather's scale (seen weight -> steradians / pi), kept for a second pass.
-    std::vector<float> seen_coef(texels, 0.0f);
     auto valid = [&](std::size_t t) { return !std::isnan(grid.z[t]) && !std::isnan(in.horizons->angle[t]) &&
                                              !std::isnan(in.transfer[t]); };
 
@@ -78,10 +84,7 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     gi.curvature = in.curvature;
     const long long work_per_row = (long long)grid.width * (gather ? std::min(s.gather.directions, 64) * 16 : 32);
     const int d_count = in.horizons->directions;
-    std::vector<double> cos_phi(static_cast<std::size_t>(d_count)), sin_phi(static_cast<std::size_t>(d_count));
-    for (int d = 0; d < d_count; ++d)
-        cos_phi[std::size_t(d)] = std::cos(visibility::azimuth_rad(d, d_count)),
-        sin_phi[std::size_t(d)] = std::sin(visibility::azimuth_rad(d, d_count));
+    const AzimuthTable az(d_count);
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         std::unique_ptr<visibility::TerrainGatherer> g;
         if (gather) g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
@@ -92,17 +95,16 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                 if (!valid(t)) continue;
                 double far_sr = 0, coef = 0;
                 if (g) {
-                    // The seen and far weights add up to the blocked view at the gather's sectors.
+                    // The seen and far weights add up to the blocked view at the gather's sectors,
+                    // in units of a sector's width: times dphi / pi for T_b.
                     g->gather(c, r);
-                    const double dphi = 2 * kPiD / g->sectors();
-                    coef = dphi / kPiD;
-                    far_sr = g->far_weight() * dphi;
+                    coef = 2.0 / g->sectors();
+                    far_sr = g->far_weight() * coef * kPiD;
                 } else {
-                    far_sr = visibility::blocked_view(in.horizons->angle.data() + t, texels, d_count, cos_phi.data(),
-                                                      sin_phi.data(), in.normals->x[t], in.normals->y[t],
-                                                      in.normals->z[t]);
+                    far_sr = visibility::blocked_view(in.horizons->angle.data() + t, texels, d_count,
+                                                      az.cos_phi.data(), az.sin_phi.data(), in.normals->x[t],
+                                                      in.normals->y[t], in.normals->z[t]);
                 }
-                seen_coef[t] = float(coef);
                 const double far = far_sr / kPiD * in.albedo[t];
                 for (std::size_t i = 0; i < K; ++i)
                     out[i * texels + t] = float((g ? coef * g->seen()[i] : 0.0) + far * flat[i]);
@@ -119,13 +121,14 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     std::vector<float> second(K * texels, 0.0f);
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         visibility::TerrainGatherer g(gi, s.gather);
+        const double coef = 2.0 / g.sectors();
         for (int r = r0; r < r1; ++r) {
             g.set_row(r);
             for (int c = 0; c < grid.width; ++c) {
                 const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
-                if (!(seen_coef[t] > 0)) continue;
+                if (!valid(t)) continue;
                 g.gather(c, r);
-                for (std::size_t i = 0; i < K; ++i) second[i * texels + t] = float(seen_coef[t] * g.seen()[i]);
+                for (std::size_t i = 0; i < K; ++i) second[i * texels + t] = float(coef * g.seen()[i]);
             }
         }
     });

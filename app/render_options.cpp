@@ -81,6 +81,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
                  "Keep the diffuse transfer as exponentiated (default: scaled per SH band so open ground gets the exact projected cosine; docs/rendering.md)");
+    cmd.add_option("--terrain-transfer", a.terrain_transfer,
+                   "The terrain's sky transfer: exact (projected from its horizons) or log-sh (the log-SH "
+                   "visibility's exponential, whose floor lets ~10% of the blocked sky through; docs/rendering.md)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"exact", "log-sh"}));
     add_device_options(cmd, a.device);
     cmd.add_option("--sun-shadows", a.sun_shadows,
                    "Per-frame sun shadows: sweep (fast, shadow heights along the sweep lines) or exact (the "
@@ -156,6 +161,8 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.curvature = !a.no_curvature;
     o.renderer.exp_method = sh::parse_exp_method(a.exp_method);
     o.renderer.band_correction = !a.no_band_correction;
+    o.renderer.terrain_transfer = a.terrain_transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
+                                                                 : render::RendererOptions::TerrainTransfer::exact;
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.renderer.bounce = a.bounce;

@@ -41,6 +41,7 @@ struct RenderArgs {
     double haze_km = 250.0;
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
+    std::string terrain_transfer = "exact";  // exact | log-sh
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     render::BounceSettings bounce;        // --bounces, --bounce-directions, --bounce-radius
     int threads = 0;

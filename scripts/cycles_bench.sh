@@ -4,23 +4,27 @@
 # the centre, so metres on the grid are metres on the ground), a 160 x 160 crop with 1989 m of
 # relief; sun 20 degrees up in the south-east under terrashade's clear sky, and its overcast
 # sky; Cycles with 0 bounces (direct light) against terrashade's --bounces 0, and 4 (the
-# reference) against terrashade's 0, 1 and 2; albedo 0.3 and 0.8. Writes
-# docs/charts/cycles_bench.csv (about 6 minutes on 2 cores).
+# reference) against terrashade's 0, 1 and 2, and 1 with the log-SH terrain transfer
+# (--terrain-transfer log-sh); albedo 0.3 and 0.8. Writes docs/charts/cycles_bench.csv (about 6
+# minutes on 2 cores). CYCLES_WORK=DIR keeps the renders there (scripts/cycles_figure.sh can reuse
+# them with the same DIR).
 # Usage: scripts/cycles_bench.sh [BUILD_DIR] [SAMPLES]
 #   BUILD_DIR default build/release; needs its terrashade and sky_equirect_dump
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build=${1:-$root/build/release}
 samples=${2:-256}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [ -n "${CYCLES_WORK:-}" ]; then work=$CYCLES_WORK; mkdir -p "$work"; else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 csv="$root/docs/charts/cycles_bench.csv"
 
 # Square metric texels for Cycles' mesh; terrashade reads the same file.
 "$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
 gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
 
-echo "case,sky,sun_elevation,albedo,bounces,terrashade_bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit" >"$csv"
+echo "case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias" >"$csv"
 for albedo in 0.3 0.8; do
   for sky in clear overcast; do
     TERRASHADE_BOUNCES=0 "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 0 \
@@ -30,6 +34,9 @@ for albedo in 0.3 0.8; do
         "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
         135 20 | tee -a "$csv"
     done
+    REUSE_CYCLES=1 TERRASHADE_BOUNCES=1 TERRASHADE_TRANSFER=log-sh \
+      "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
+      135 20 | tee -a "$csv"
   done
 done
 # The flat check: a level 24 x 24 plane, where terrashade's visibility is trivially open and

@@ -7,16 +7,20 @@
 # darker, red brighter, +-10%). Both pictures of a row share one exposure (Cycles' mean at 0.45
 # before the sRGB curve).
 # Usage: scripts/cycles_figure.sh [BUILD_DIR] [SAMPLES]   (needs scripts/setup_reference.sh)
+#   CYCLES_WORK=DIR: reuse the Cycles renders scripts/cycles_bench.sh kept there
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build=${1:-$root/build/release}
 samples=${2:-256}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-"$root/scripts/cycles_held_out_dem.sh" "$work/tm90.tif"
-gdal_translate -q -srcwin 20 480 160 160 "$work/tm90.tif" "$work/crop.tif"
+if [ -n "${CYCLES_WORK:-}" ]; then work=$CYCLES_WORK; else  # scripts/cycles_bench.sh's renders
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  "$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
+  gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
+fi
 for case in clear:0.3 overcast:0.3 overcast:0.8; do
-  "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "${case%:*}" "${case#*:}" 4 "$samples" 135 20
+  REUSE_CYCLES=${REUSE_CYCLES:-$([ -n "${CYCLES_WORK:-}" ] && echo 1 || echo 0)} \
+    "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "${case%:*}" "${case#*:}" 4 "$samples" 135 20
 done
 /usr/bin/python3 - "$work/out" "$root/docs/gallery/cycles_vs_terrashade.png" <<'PY'
 import sys

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # One case of terrashade against Blender Cycles on the same crop, same sun, same sky, grey
 # Lambert terrain (docs/accuracy.md, "Against Blender Cycles"). Prints one CSV row:
-#   case,sky,sun_elevation,albedo,bounces,terrashade_bounces,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit
+#   case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias
+# (cast_shadow_*: the texels in the terrain's cast shadow from the sun, facing it, on their own;
+# scripts/cycles_compare.py)
 # Usage: scripts/cycles_reference.sh BUILD_DIR CROP.tif OUT_DIR SKY ALBEDO BOUNCES SAMPLES [AZIMUTH ELEVATION]
 #   BUILD_DIR  a build with terrashade and tests/light/sky_equirect_dump (ninja terrashade sky_equirect_dump)
 #   CROP.tif   a DEM crop in a projected CRS with square texels (scripts/cycles_bench.sh makes one)
@@ -9,7 +11,8 @@
 # Needs blender (scripts/setup_reference.sh), oiiotool (openimageio-tools) and python3-gdal.
 # Units match exactly: Cycles' world is terrashade's own sky radiance (kcd/m^2, dumped per
 # direction), its sun lamp terrashade's sun irradiance; terrashade renders grey:ALBEDO. No fitted
-# factor. Environment: TERRASHADE_BOUNCES, terrashade's --bounces (default 1); TERRASHADE_ARGS,
+# factor. Environment: TERRASHADE_BOUNCES, terrashade's --bounces (default 1); TERRASHADE_TRANSFER,
+# its --terrain-transfer (default exact); TERRASHADE_ARGS,
 # more options for terrashade; REUSE_CYCLES=1 keeps a Cycles render already in OUT_DIR (the same
 # case: same tag).
 set -euo pipefail
@@ -32,12 +35,14 @@ cycles_s=$(echo "$log" | grep -o '"cycles_seconds": [0-9.]*' | awk '{print $2}')
 fi
 
 t0=$(date +%s.%N)
-"$build/app/terrashade" render "$crop" --colors "grey:$albedo" --bounces "${TERRASHADE_BOUNCES:-1}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
+"$build/app/terrashade" render "$crop" --colors "grey:$albedo" --bounces "${TERRASHADE_BOUNCES:-1}" \
+  --terrain-transfer "${TERRASHADE_TRANSFER:-exact}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
   --sun-elevation "$elevation" --no-curvature --cpu --threads "$threads" -o "$out/terrashade_$tag.exr" >/dev/null
 t1=$(date +%s.%N)
 terrashade_s=$(echo "$t1 - $t0" | bc)
 oiiotool "$out/terrashade_$tag.exr" -d float -o "$out/terrashade_$tag.tif"
 
-json=$(/usr/bin/python3 "$root/scripts/cycles_compare.py" "$out/cycles_$tag.tif" "$out/terrashade_$tag.tif")
-field() { echo "$json" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin)['$1'])"; }
-echo "$tag,$sky,$elevation,$albedo,$bounces,${TERRASHADE_BOUNCES:-1},$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit)"
+json=$(/usr/bin/python3 "$root/scripts/cycles_compare.py" "$out/cycles_$tag.tif" "$out/terrashade_$tag.tif" \
+  --dem "$crop" --sun-azimuth "$azimuth" --sun-elevation "$elevation")
+field() { echo "$json" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin).get('$1', ''))"; }
+echo "$tag,$sky,$elevation,$albedo,$bounces,${TERRASHADE_BOUNCES:-1},${TERRASHADE_TRANSFER:-exact},$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit),$(field cast_shadow_texels),$(field cast_shadow_relative_rmse),$(field cast_shadow_bias)"

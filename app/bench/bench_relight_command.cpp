@@ -286,9 +286,14 @@ void run_bench_relight(const BenchRelightArgs& a) {
     std::printf("DEM %dx%d (%zu texels), %s view %dx%d, %d frames, %d threads\n", dem.width, dem.height, texels,
                 options.view == render::ViewKind::map ? "map" : "perspective", image.width, image.height, a.frames,
                 thread_count(a.render.threads));
-    std::printf("one-time: visibility (exact horizons, %d directions, log-SH) %.3f s + transfer vectors %.3f s "
+    std::string stages;  // what the visibility pass computed: "horizons", "log-SH", ...
+    for (const auto& stage : scene.state().visibility_stages()) stages += (stages.empty() ? "" : ", ") + stage.label;
+    const bool exact_terrain =
+        scene.state().options().terrain_transfer == render::RendererOptions::TerrainTransfer::exact;
+    std::printf("one-time: visibility (%s; exact horizons, %d directions) %.3f s + transfer vectors (%s) %.3f s "
                 "(bounced light %.3f s of it, %d bounces; %zu specular, %zu water texels)\n",
-                a.render.directions, scene.state().visibility_seconds(), scene.state().transfer_seconds(),
+                stages.c_str(), a.render.directions, scene.state().visibility_seconds(),
+                exact_terrain ? "terrain projected from its horizons" : "log-SH", scene.state().transfer_seconds(),
                 scene.state().bounce_seconds(), scene.state().options().bounce.bounces,
                 scene.state().specular_index().size(), scene.state().water_index().size());
     std::printf("per frame: sky SH + sky table %.2f ms, sun visibility sweep %.2f ms, shading %.2f ms, "

@@ -10,6 +10,7 @@
 
 #include "core/geo/azimuth.hpp"
 #include "core/render/diffuse_band_correction.hpp"
+#include "core/render/horizon_transfer.hpp"
 #include "core/render/render_backend.hpp"
 #include "core/render/transfer.hpp"
 #include "core/material/log_brdf.hpp"
@@ -86,6 +87,15 @@ void ShadingState::diffuse_transfer(const float* log_sh, std::size_t n, const st
                               visibility::level_log_visibility(options_.directions, options_.visibility_log_eps));
 }
 
+void ShadingState::blocked_transfer(const float* log_terrain, const float* log_blocked, std::size_t m,
+                                    const std::uint32_t* index, const float* t_terrain, float* out) const {
+    diffuse_transfer(log_blocked, m, index, out);
+    if (!exact_terrain() || m == 0) return;
+    std::vector<float> log_only(16 * m);
+    diffuse_transfer(log_terrain, m, index, log_only.data());
+    for (std::size_t i = 0; i < 16 * m; ++i) out[i] = t_terrain[i] + (out[i] - log_only[i]);
+}
+
 void ShadingState::add_bounce(std::size_t n, const std::uint32_t* index, float* t) const {
     if (bounce_.empty()) return;
     const std::size_t k_count = std::size_t(bounce_coefficients());
@@ -146,15 +156,18 @@ void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
                                    visibility::curvature_factor(options_.curvature), options_.threads, blocked.data());
     // The rectangle's transfer is the terrain's, the blocked one where the blockers changed it.
     std::vector<float> t_rect(16 * n);
-    diffuse_transfer(terrain.data(), n, index.data(), t_rect.data());
-    add_bounce(n, index.data(), t_rect.data());
+    if (exact_terrain()) gather(terrain_transfer_.data(), texels_, index, t_rect.data());
+    else diffuse_transfer(terrain.data(), n, index.data(), t_rect.data());
     std::vector<std::uint32_t> changed, at;
     for (std::size_t k = 0; k < n; ++k)
         if (differs(blocked.data(), terrain.data(), n, k)) changed.push_back(index[k]), at.push_back(std::uint32_t(k));
     const std::size_t m = changed.size();
-    std::vector<float> log_b(16 * m), t_blocked(16 * m), t_terrain(16 * m);
+    std::vector<float> log_b(16 * m), log_t(16 * m), t_blocked(16 * m), t_terrain(16 * m);
     gather(blocked.data(), n, at, log_b.data());
-    diffuse_transfer(log_b.data(), m, changed.data(), t_blocked.data());
+    gather(terrain.data(), n, at, log_t.data());
+    gather(t_rect.data(), n, at, t_terrain.data());
+    blocked_transfer(log_t.data(), log_b.data(), m, changed.data(), t_terrain.data(), t_blocked.data());
+    add_bounce(n, index.data(), t_rect.data());
     add_bounce(m, changed.data(), t_blocked.data());
     gather(t_rect.data(), n, at, t_terrain.data());
     for (int i = 0; i < 16; ++i)
@@ -183,7 +196,10 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     request.horizon.curvature = options.curvature;
     request.horizon.threads = options.threads;
     request.horizon.progress = options.progress;
-    request.log_sh = true;
+    // The log-SH is what the blockers, the specular texels and the log-SH transfer need.
+    bool specular = false;
+    for (std::size_t t = 0; t < texels && !specular; ++t) specular = !s.materials_.water[t] && s.materials_.ks[t] > 0;
+    request.log_sh = !s.exact_terrain() || with_blockers || specular;
     request.log_eps = options.visibility_log_eps;
     request.blockers = s.options_.blockers;
     request.keep_terrain_log_sh = with_blockers;
@@ -200,7 +216,10 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     RenderBackend* backend = options.backend;
     {
         std::vector<float> t_diffuse(16 * texels);
-        s.diffuse_transfer(log_sh, texels, nullptr, t_diffuse.data());
+        if (s.exact_terrain())
+            horizon_transfer({&vis.horizons, &s.normals_, s.bounce_coefficients(), options.threads}, t_diffuse.data());
+        else
+            s.diffuse_transfer(log_sh, texels, nullptr, t_diffuse.data());
         // With blockers: the texels they changed, with their terrain-only transfer.
         std::vector<std::uint32_t> changed;
         std::vector<float> t_terrain;
@@ -209,10 +228,22 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             const float* terrain = s.terrain_log_sh_.data();
             for (std::size_t t = 0; t < texels; ++t)
                 if (differs(log_sh, terrain, texels, t)) changed.push_back(std::uint32_t(t));
-            std::vector<float> log_t(16 * changed.size());
-            t_terrain.resize(16 * changed.size());
+            const std::size_t m = changed.size();
+            std::vector<float> log_t(16 * m);
+            t_terrain.resize(16 * m);
             gather(terrain, texels, changed, log_t.data());
-            s.diffuse_transfer(log_t.data(), changed.size(), changed.data(), t_terrain.data());
+            if (s.exact_terrain()) {
+                // t_diffuse is the terrain's own; the changed texels get what the blockers change.
+                gather(t_diffuse.data(), texels, changed, t_terrain.data());
+                std::vector<float> log_b(16 * m), t_b(16 * m);
+                gather(log_sh, texels, changed, log_b.data());
+                s.blocked_transfer(log_t.data(), log_b.data(), m, changed.data(), t_terrain.data(), t_b.data());
+                s.terrain_transfer_ = t_diffuse;
+                for (int i = 0; i < 16; ++i)
+                    for (std::size_t k = 0; k < m; ++k) t_diffuse[std::size_t(i) * texels + changed[k]] = t_b[std::size_t(i) * m + k];
+            } else {
+                s.diffuse_transfer(log_t.data(), m, changed.data(), t_terrain.data());
+            }
         }
         {
             // Bounced light from the terrain's own transfer: a mesh blocks the sky above the

@@ -68,7 +68,13 @@ struct RendererOptions {
     // hybrid (fast, the visibility default) 19% low, because V + F_diffuse is large (docs/rendering.md).
     // It is a one-time cost here, so accuracy wins.
     sh::ExpMethod exp_method = sh::ExpMethod::scaling_squaring;
-    // Band correction of the diffuse transfer: every SH band l of T_d is scaled by c_l / e_l, with
+    // The terrain's own diffuse transfer: projected exactly from its horizons (horizon_transfer.hpp;
+    // the default: no sky leaks through the log floor, against Blender Cycles' overcast valleys
+    // docs/accuracy.md) or the log-SH path's exp(V + F) (`--terrain-transfer log-sh`, what it was
+    // before). Mesh blockers change the exact transfer by what they change in the log-SH one.
+    enum class TerrainTransfer { exact, log_sh };
+    TerrainTransfer terrain_transfer = TerrainTransfer::exact;
+    // Band correction of the diffuse transfer (the log-SH path's): every SH band l of T_d is scaled by c_l / e_l, with
     // c_l the clamped cosine / pi projected to order 4 (c_3 = 0) and e_l what the exponentiation
     // gives for the same lobe with nothing blocking, so an open texel gets exactly the projected
     // clamped cosine. It removes the log-lobe's low bias under a low sun (docs/accuracy.md).
@@ -177,6 +183,12 @@ private:
     // The band-corrected diffuse transfer of n texels (grid indices `index`; null: texel k is k)
     // from their log-SH [16][n], into `out` [16][n], through the backend when there is one.
     void diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index, float* out) const;
+    // The blocked transfer of m texels (grid indices `index`) from their terrain-only and blocked
+    // log-SH [16][m]: the log-SH path's, or with the exact terrain transfer `t_terrain` [16][m]
+    // (no bounce) plus what the blockers change in the log-SH one.
+    void blocked_transfer(const float* log_terrain, const float* log_blocked, std::size_t m, const std::uint32_t* index,
+                          const float* t_terrain, float* out) const;
+    bool exact_terrain() const { return options_.terrain_transfer == RendererOptions::TerrainTransfer::exact; }
     // Adds the bounced light's transfer to n texels' T [16][n] (grid indices `index`; null: texel k is k).
     void add_bounce(std::size_t n, const std::uint32_t* index, float* transfer) const;
     // Recomputes the blockers' part of the texels of `rect` (move_mesh).
@@ -210,6 +222,9 @@ private:
     blockers::SphereBlockers blockers_;
     // With blockers: the terrain's log-SH [16][texels] before the blockers were added.
     std::vector<float> terrain_log_sh_;
+    // With blockers and the exact terrain transfer: the terrain-only T [16][texels] without the
+    // bounce, what move_mesh starts from.
+    std::vector<float> terrain_transfer_;
     std::unique_ptr<BlockerSkyClamp> sky_clamp_;
     std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;
     std::unique_ptr<visibility::BlockerSunShadow> blocker_sun_;

@@ -271,16 +271,21 @@ private:
 
 TEST(FrameRenderer, BackendRunsTheHeavyStages) {
     const Hills hills;
-    CountingBackend backend(make_cpu_backend(1));
-    RendererOptions o = small_options();
-    CountingVisibility visibility;
-    o.backend = &backend;
-    o.visibility = &visibility;
-    render_hills(hills, o, {200.0, 35.0});
-    EXPECT_EQ(visibility.computed, 1);
-    EXPECT_EQ(backend.transfers, 2);  // diffuse, and specular (the snow texels)
-    EXPECT_EQ(backend.kept, 1);       // the diffuse T, for per-frame shading
-    EXPECT_EQ(backend.name(), "counting cpu");
+    for (const auto terrain : {RendererOptions::TerrainTransfer::exact, RendererOptions::TerrainTransfer::log_sh}) {
+        CountingBackend backend(make_cpu_backend(1));
+        RendererOptions o = small_options();
+        o.terrain_transfer = terrain;
+        CountingVisibility visibility;
+        o.backend = &backend;
+        o.visibility = &visibility;
+        render_hills(hills, o, {200.0, 35.0});
+        EXPECT_EQ(visibility.computed, 1);
+        // The specular texels' (snow), and the diffuse one unless it is projected from the
+        // horizons (horizon_transfer.hpp, on the CPU).
+        EXPECT_EQ(backend.transfers, terrain == RendererOptions::TerrainTransfer::exact ? 1 : 2);
+        EXPECT_EQ(backend.kept, 1);  // the diffuse T, for per-frame shading
+        EXPECT_EQ(backend.name(), "counting cpu");
+    }
 }
 
 }  // namespace

@@ -1,0 +1,204 @@
+#include "core/render/horizon_transfer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "core/sh/sh_basis.hpp"
+#include "core/util/angles.hpp"
+#include "core/util/parallel_for.hpp"
+
+namespace ts::render {
+
+namespace {
+
+constexpr int kMaxHarmonic = 5;                 // l + 2 for l <= 3
+constexpr int kFeatures = 2 + 2 * kMaxHarmonic;  // 1, e0, sin(m e0), cos(m e0)
+constexpr int kDftPoints = 16;                   // exact for trigonometric degree < 8
+constexpr int kBlock = 256;
+
+// Per azimuth and coefficient: the integral from e0 to pi/2 of the part of (n . w) Y_i(w) cos e
+// that goes with n's horizontal component along the azimuth (a) and with n_z (b), each as
+// weights of the features 1, e0, sin(m e0), cos(m e0) (m = 1..harmonics).
+struct ElevationIntegrals {
+    int harmonics = 0, features = 0, coefficients = 0;
+    std::vector<double> weight;  // [d][i][2][features]: a's weights, then b's
+
+    const double* at(int d, int i, int part) const {
+        return weight.data() + ((std::size_t(d) * coefficients + i) * 2 + part) * features;
+    }
+    double* at(int d, int i, int part) {
+        return weight.data() + ((std::size_t(d) * coefficients + i) * 2 + part) * features;
+    }
+};
+
+// The features' weights of int_{e0}^{pi/2} g(e) de for g with the given 16-point samples.
+void integral_weights(const std::array<double, kDftPoints>& g, int harmonics, double* w) {
+    double c0 = 0;
+    for (double v : g) c0 += v;
+    c0 /= kDftPoints;
+    double top = c0 * kPi / 2;  // the antiderivative at pi/2
+    w[1] = -c0;
+    for (int m = 1; m <= harmonics; ++m) {
+        double cm = 0, sm = 0;
+        for (int n = 0; n < kDftPoints; ++n) {
+            const double e = 2 * kPi * n / kDftPoints;
+            cm += g[n] * std::cos(m * e), sm += g[n] * std::sin(m * e);
+        }
+        cm *= 2.0 / kDftPoints, sm *= 2.0 / kDftPoints;
+        // int cos(m e) = sin(m e) / m; int sin(m e) = -cos(m e) / m
+        top += cm * std::sin(m * kPi / 2) / m - sm * std::cos(m * kPi / 2) / m;
+        w[1 + m] = -cm / m;              // sin(m e0)
+        w[1 + harmonics + m] = sm / m;   // cos(m e0)
+    }
+    w[0] = top;
+}
+
+ElevationIntegrals make_table(int directions, int coefficients) {
+    ElevationIntegrals t;
+    t.coefficients = coefficients;
+    t.harmonics = coefficients > 9 ? 5 : 4;
+    t.features = 2 + 2 * t.harmonics;
+    t.weight.assign(std::size_t(directions) * coefficients * 2 * t.features, 0.0);
+    for (int d = 0; d < directions; ++d) {
+        const double phi = visibility::azimuth_rad(d, directions);
+        std::array<std::array<double, kDftPoints>, 16> ga{}, gb{};
+        for (int n = 0; n < kDftPoints; ++n) {
+            const double e = 2 * kPi * n / kDftPoints;
+            const glm::dvec3 w(std::cos(e) * std::cos(phi), std::cos(e) * std::sin(phi), std::sin(e));
+            const sh::ShVec y = sh::eval(w);  // a polynomial: fine on the whole circle of e
+            for (int i = 0; i < coefficients; ++i) {
+                ga[i][n] = std::cos(e) * y[i] * std::cos(e);
+                gb[i][n] = std::sin(e) * y[i] * std::cos(e);
+            }
+        }
+        for (int i = 0; i < coefficients; ++i) {
+            integral_weights(ga[i], t.harmonics, t.at(d, i, 0));
+            integral_weights(gb[i], t.harmonics, t.at(d, i, 1));
+        }
+    }
+    // A band-l coefficient has harmonics up to l + 2 only, and symmetry zeroes more: exact zeros
+    // let the per-texel loop skip them (the DFT leaves them at rounding level).
+    for (double& w : t.weight)
+        if (std::abs(w) < 1e-12) w = 0;
+    return t;
+}
+
+// atan in float without branches (visibility::fast_atan's polynomial, max error 1.7e-6 rad),
+// so that the loop over a block's texels vectorises.
+inline float atan_lanes(float x) {
+    const float ax = std::abs(x);
+    const bool big = ax > 1.0f;
+    const float t = big ? 1.0f / ax : ax, t2 = t * t;
+    const float p = t * (0.99997726f + t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f +
+                                                                   t2 * (0.05265332f + t2 * -0.01172120f)))));
+    const float r = big ? 1.5707963f - p : p;
+    return x < 0.0f ? -r : r;
+}
+
+// One block of kBlock texels from t0 (n of them real: the rest repeat a level open texel, so
+// every loop has the block's fixed length and vectorises).
+void transfer_block(const ElevationIntegrals& table, const visibility::HorizonSet& set, const NormalField& normals,
+                    std::size_t t0, int n, float* out) {
+    const int k_count = table.coefficients, f_count = table.features, harmonics = table.harmonics;
+    const int directions = set.directions;
+    const std::size_t texels = set.texels();
+    // The per-texel sums in float (the output's precision; 32 azimuths of about 10 terms each,
+    // of the transfer's own size): twice the lanes of double.
+    alignas(64) float acc[16][kBlock];
+    alignas(64) float fa[kFeatures][kBlock], fb[kFeatures][kBlock];
+    alignas(64) float nx[kBlock], ny[kBlock], nz[kBlock], h[kBlock];
+    bool void_texel[kBlock];
+    for (int j = 0; j < kBlock; ++j) {
+        const bool real = j < n;
+        const std::size_t t = t0 + std::size_t(real ? j : 0);
+        nx[j] = real ? normals.x[t] : 0.0f;
+        ny[j] = real ? normals.y[t] : 0.0f;
+        nz[j] = real ? std::max(normals.z[t], 1e-6f) : 1.0f;
+        void_texel[j] = false;
+    }
+    for (int i = 0; i < k_count; ++i) std::fill(acc[i], acc[i] + kBlock, 0.0f);
+    for (int d = 0; d < directions; ++d) {
+        const double phi = visibility::azimuth_rad(d, directions);
+        const float cphi = float(std::cos(phi)), sphi = float(std::sin(phi));
+        const float* horizon = set.plane(d) + t0;
+        for (int j = 0; j < kBlock; ++j) {
+            const float v = j < n ? horizon[j] : 0.0f;
+            if (!(v == v)) void_texel[j] = true;
+            h[j] = v == v ? std::clamp(v, -1.5707963f, 1.5707963f) : 0.0f;
+        }
+        for (int j = 0; j < kBlock; ++j) {
+            const float a = nx[j] * cphi + ny[j] * sphi, b = nz[j];
+            // The texel's own plane at this azimuth: a cos e + b sin e = 0.
+            const float plane = atan_lanes(-a / b);
+            const float r = std::sqrt(a * a + b * b);
+            const float half = 0.5f * h[j], half2 = half * half;
+            const float sh = half * (1.0f + half2 * (-1.0f / 6 + half2 * (1.0f / 120 + half2 * (-1.0f / 5040 + half2 / 362880))));
+            const float ch = 1.0f + half2 * (-0.5f + half2 * (1.0f / 24 + half2 * (-1.0f / 720 + half2 / 40320)));
+            const bool above = h[j] > plane;
+            const float e0 = above ? h[j] : plane;
+            const float s1 = above ? 2 * sh * ch : -a / r;
+            const float c1 = above ? (ch - sh) * (ch + sh) : b / r;
+            fa[0][j] = a, fb[0][j] = b;
+            fa[1][j] = a * e0, fb[1][j] = b * e0;
+            float sm = s1, cm = c1;
+            for (int m = 1; m <= kMaxHarmonic; ++m) {
+                if (m <= harmonics) {
+                    fa[1 + m][j] = a * sm, fb[1 + m][j] = b * sm;
+                    fa[1 + harmonics + m][j] = a * cm, fb[1 + harmonics + m][j] = b * cm;
+                }
+                const float s_next = sm * c1 + cm * s1;
+                cm = cm * c1 - sm * s1, sm = s_next;
+            }
+        }
+        for (int i = 0; i < k_count; ++i) {
+            const double* wa = table.at(d, i, 0);
+            const double* wb = table.at(d, i, 1);
+            float* row = acc[i];
+            for (int k = 0; k < f_count; ++k) {
+                const float ca = float(wa[k]), cb = float(wb[k]);
+                const float* xa = fa[k];
+                const float* xb = fb[k];
+                if (ca != 0 && cb != 0) {
+                    for (int j = 0; j < kBlock; ++j) row[j] += ca * xa[j] + cb * xb[j];
+                } else if (ca != 0) {
+                    for (int j = 0; j < kBlock; ++j) row[j] += ca * xa[j];
+                } else if (cb != 0) {
+                    for (int j = 0; j < kBlock; ++j) row[j] += cb * xb[j];
+                }
+            }
+        }
+    }
+    // The trapezoid rule over azimuth (weight 2 pi / D) and the 1 / pi of the transfer.
+    const float scale = 2.0f / float(directions);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < n; ++j)
+            out[std::size_t(i) * texels + t0 + std::size_t(j)] =
+                void_texel[j] ? nan : i < k_count ? acc[i][j] * scale : 0.0f;
+}
+
+}  // namespace
+
+void horizon_transfer(const HorizonTransferInputs& in, float* out) {
+    if (!in.horizons || !in.normals || !out) throw std::invalid_argument("horizon_transfer: missing inputs");
+    const visibility::HorizonSet& set = *in.horizons;
+    if (set.directions < 4) throw std::invalid_argument("horizon_transfer: needs 4 or more horizon azimuths");
+    if (in.coefficients != 9 && in.coefficients != 16)
+        throw std::invalid_argument("horizon_transfer: 9 or 16 coefficients");
+    const std::size_t texels = set.texels();
+    if (in.normals->x.size() != texels || in.normals->y.size() != texels || in.normals->z.size() != texels)
+        throw std::invalid_argument("horizon_transfer: normals and horizons differ in size");
+    const ElevationIntegrals table = make_table(set.directions, in.coefficients);
+    const long long work_per_row = (long long)set.width * set.directions * in.coefficients * table.features;
+    parallel_rows(set.height, in.threads, work_per_row, [&](int r0, int r1) {
+        const std::size_t end = std::size_t(r1) * std::size_t(set.width);
+        for (std::size_t t = std::size_t(r0) * std::size_t(set.width); t < end; t += kBlock)
+            transfer_block(table, set, *in.normals, t, int(std::min<std::size_t>(kBlock, end - t)), out);
+    });
+}
+
+}  // namespace ts::render

@@ -55,6 +55,7 @@ struct BenchRenderOptions {
     std::string sky = "clear";
     std::vector<int> directions = {32};
     std::vector<std::string> sun_shadows = {"sweep"};
+    std::vector<std::string> terrain_transfers = {"exact"};
     // --suns AZ/EL,...: sun positions given directly (instead of times); --window N with
     // --window-at FX:FY,...: square windows of N texels placed at those fractions of the DEM.
     std::vector<std::string> suns;
@@ -70,7 +71,7 @@ struct Row {
     std::string dem, label, time;
     int col0 = 0, row0 = 0, width = 0, height = 0, samples = 0;
     int directions = 0;
-    std::string sun_shadows;
+    std::string sun_shadows, terrain_transfer;
     double mean_tan_slope = kNaN;  // quality::mean_tan_slope of the grid: what --max-error predicts from
     double state_s = kNaN;         // the one-time visibility + transfer
     double azimuth_deg = kNaN, elevation_deg = kNaN;
@@ -109,7 +110,7 @@ std::string csv_text(const std::vector<Row>& rows) {
     out << "dem,label,time_utc,width,height,samples,sun_azimuth_deg,sun_elevation_deg,rel_rmse,rel_p99,rel_bias,"
            "sunlit_rel_rmse,shadow_rel_rmse,mask_iou,mask_disagree,sun_fraction_mae,shadow_share,frame_ms,"
            "sun_visibility_ms,"
-           "reference_sun_ms,reference_s,col0,row0,directions,sun_shadows,mean_tan_slope,state_s\n";
+           "reference_sun_ms,reference_s,col0,row0,directions,sun_shadows,mean_tan_slope,state_s,terrain_transfer\n";
     for (const Row& r : rows)
         out << r.dem << ',' << r.label << ',' << r.time << ',' << r.width << ',' << r.height << ',' << r.samples << ','
             << csv_number(r.azimuth_deg) << ',' << csv_number(r.elevation_deg) << ',' << csv_number(r.rel_rmse) << ',' << csv_number(r.rel_p99)
@@ -117,7 +118,8 @@ std::string csv_text(const std::vector<Row>& rows) {
             << csv_number(r.iou) << ',' << csv_number(r.mask_disagree) << ',' << csv_number(r.sun_fraction_mae) << ',' << csv_number(r.shadow_share)
             << ',' << csv_number(r.frame_ms) << ',' << csv_number(r.sun_visibility_ms) << ',' << csv_number(r.reference_sun_ms) << ','
             << csv_number(r.reference_s) << ',' << r.col0 << ',' << r.row0 << ',' << r.directions << ','
-            << r.sun_shadows << ',' << csv_number(r.mean_tan_slope) << ',' << csv_number(r.state_s) << '\n';
+            << r.sun_shadows << ',' << csv_number(r.mean_tan_slope) << ',' << csv_number(r.state_s) << ','
+            << r.terrain_transfer << '\n';
     return out.str();
 }
 
@@ -218,8 +220,13 @@ void run_window(const BenchRenderOptions& o, const std::string& name, const dem:
 
     std::vector<glm::vec3> frame;
     for (int directions : o.directions)
-        for (const std::string& sun_shadows : o.sun_shadows) {
+        for (const std::string& sun_shadows : o.sun_shadows)
+          for (const std::string& transfer : o.terrain_transfers) {
             render::RendererOptions ro;
+            // The reference is direct light (reference_shading.hpp): no bounce on either side.
+            ro.bounce.bounces = 0;
+            ro.terrain_transfer = transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
+                                                       : render::RendererOptions::TerrainTransfer::exact;
             ro.directions = directions;
             ro.curvature = !o.no_curvature;
             ro.threads = o.threads;
@@ -228,9 +235,10 @@ void run_window(const BenchRenderOptions& o, const std::string& name, const dem:
                 render::compute_shading_state(grid, materials, normals, ro);
             const render::ViewShading view_shading = render::compute_view_shading(*state, view);
             render::FrameRenderer renderer(*state, view_shading);
-            std::printf("%s at %d,%d: %dx%d, mean tan slope %.3f, D %d, sun %s: visibility %.2f s, transfer %.2f s\n",
+            std::printf("%s at %d,%d: %dx%d, mean tan slope %.3f, D %d, sun %s, terrain transfer %s: visibility %.2f s, "
+                        "transfer %.2f s\n",
                         name.c_str(), col0, row0, grid.width, grid.height, roughness, directions, sun_shadows.c_str(),
-                        state->visibility_seconds(), state->transfer_seconds());
+                        transfer.c_str(), state->visibility_seconds(), state->transfer_seconds());
             for (std::size_t si = 0; si < suns.size(); ++si) {
                 const render::SunState& sun = suns[si].sun;
                 const SunReference& ref = refs[si];
@@ -243,6 +251,7 @@ void run_window(const BenchRenderOptions& o, const std::string& name, const dem:
                 row.height = grid.height;
                 row.directions = directions;
                 row.sun_shadows = sun_shadows;
+                row.terrain_transfer = transfer;
                 row.mean_tan_slope = roughness;
                 row.state_s = state->visibility_seconds() + state->transfer_seconds();
                 row.azimuth_deg = sun.azimuth_deg;
@@ -349,6 +358,11 @@ void add_bench_render_command(CLI::App& bench) {
         ->capture_default_str()
         ->delimiter(',')
         ->check(CLI::IsMember({"sweep", "exact"}));
+    cmd->add_option("--terrain-transfer", o->terrain_transfers,
+                    "Renderer's terrain transfer: exact, log-sh or both (a list; as render --terrain-transfer)")
+        ->capture_default_str()
+        ->delimiter(',')
+        ->check(CLI::IsMember({"exact", "log-sh"}));
     cmd->add_option("--suns", o->suns, "Sun positions AZIMUTH/ELEVATION in degrees, instead of --times")
         ->delimiter(',');
     cmd->add_option("--window", o->window, "Measure square windows of N texels instead of the whole DEM (0: whole)")

@@ -144,6 +144,35 @@ Study render_study(const std::string& dem, int directions, Size size) {
     return s;
 }
 
+// bench render with the terrain's transfer projected from its horizons (the default) and the
+// log-SH path's: one-time cost plus a frame against the radiance error (the ray-traced
+// reference, direct light on both sides; bench render's CSV has the shadows' error too).
+Study terrain_transfer_study(const std::string& dem, Size size) {
+    Study s;
+    s.name = "render terrain transfer on " + dem_name(dem);
+    const int samples = size == Size::tiny ? 20 : size == Size::quick ? 120 : 600;
+    s.expected_s = size == Size::tiny ? 8 : size == Size::quick ? 35 : 140;
+    s.args = "render " + shell_quote(dem) + " --samples " + std::to_string(samples) +
+             " --terrain-transfer exact,log-sh" + (size == Size::tiny ? " --reference-azimuths 64" : "");
+    s.parse = [dem](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
+        for (const char* transfer : {"exact", "log-sh"}) {
+            double once = 0, err = 0, frame = 0;
+            int n = 0;
+            for (const CsvRecord& r : csv) {
+                if (r.at("terrain_transfer") != transfer || std::isnan(csv_field(r, "rel_rmse"))) continue;
+                once = csv_field(r, "state_s");
+                err += csv_field(r, "rel_rmse");
+                frame += csv_field(r, "frame_ms") / 1000.0;
+                ++n;
+            }
+            if (n == 0) continue;
+            rows.push_back({"render", "terrain_transfer", transfer, std::string(transfer) == "exact", once + frame / n,
+                            err / n, "radiance_rel_rmse", dem_name(dem)});
+        }
+    };
+    return s;
+}
+
 // bench sun: the per-frame sun visibility, sweep near fields against the exact pass.
 Study sun_study(const std::string& dem, Size size) {
     Study s;
@@ -399,6 +428,7 @@ std::vector<Study> studies(const BenchReportOptions& o, Size size) {
     for (const auto& d : dems) s.push_back(visibility_study(d, size));
     const std::vector<int> render_d = size == Size::tiny ? std::vector<int>{8} : std::vector<int>{8, 16, 32, 64};
     for (int d : render_d) s.push_back(render_study(grenoble, d, size));
+    s.push_back(terrain_transfer_study(grenoble, size));
     for (const auto& d : dems) s.push_back(sun_study(d, size));
     s.push_back(exp_study(size));
     s.push_back(epsilon_study());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -92,11 +93,11 @@ ElevationIntegrals make_table(int directions, int coefficients) {
 inline float atan_lanes(float x) {
     const float ax = std::abs(x);
     const bool big = ax > 1.0f;
-    const float t = big ? 1.0f / ax : ax, t2 = t * t;
+    const float inv = 1.0f / std::max(ax, 1e-30f);  // both computed, then selected
+    const float t = big ? inv : ax, t2 = t * t;
     const float p = t * (0.99997726f + t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f +
                                                                    t2 * (0.05265332f + t2 * -0.01172120f)))));
-    const float r = big ? 1.5707963f - p : p;
-    return x < 0.0f ? -r : r;
+    return std::copysign(big ? 1.5707963f - p : p, x);
 }
 
 // One block of kBlock texels from t0 (n of them real: the rest repeat a level open texel, so
@@ -111,47 +112,60 @@ void transfer_block(const ElevationIntegrals& table, const visibility::HorizonSe
     alignas(64) float acc[16][kBlock];
     alignas(64) float fa[kFeatures][kBlock], fb[kFeatures][kBlock];
     alignas(64) float nx[kBlock], ny[kBlock], nz[kBlock], h[kBlock];
-    bool void_texel[kBlock];
+    // Per texel at one azimuth: n's horizontal part along it (a), n_z (b), and sin, cos of e0.
+    alignas(64) float a_[kBlock], s1[kBlock], c1[kBlock], sm[kBlock], cm[kBlock];
+    alignas(64) std::uint8_t void_texel[kBlock];
     for (int j = 0; j < kBlock; ++j) {
         const bool real = j < n;
         const std::size_t t = t0 + std::size_t(real ? j : 0);
         nx[j] = real ? normals.x[t] : 0.0f;
         ny[j] = real ? normals.y[t] : 0.0f;
         nz[j] = real ? std::max(normals.z[t], 1e-6f) : 1.0f;
-        void_texel[j] = false;
+        void_texel[j] = 0;
     }
     for (int i = 0; i < k_count; ++i) std::fill(acc[i], acc[i] + kBlock, 0.0f);
+    // Each loop below is straight-line over the block's texels, so that it vectorises.
     for (int d = 0; d < directions; ++d) {
         const double phi = visibility::azimuth_rad(d, directions);
         const float cphi = float(std::cos(phi)), sphi = float(std::sin(phi));
         const float* horizon = set.plane(d) + t0;
+        for (int j = 0; j < n; ++j) h[j] = horizon[j];
+        for (int j = n; j < kBlock; ++j) h[j] = 0.0f;
         for (int j = 0; j < kBlock; ++j) {
-            const float v = j < n ? horizon[j] : 0.0f;
-            if (!(v == v)) void_texel[j] = true;
-            h[j] = v == v ? std::clamp(v, -1.5707963f, 1.5707963f) : 0.0f;
+            const float v = h[j];
+            const bool nan = !(v == v);
+            void_texel[j] |= std::uint8_t(nan);
+            h[j] = nan ? 0.0f : std::min(std::max(v, -1.5707963f), 1.5707963f);
         }
         for (int j = 0; j < kBlock; ++j) {
             const float a = nx[j] * cphi + ny[j] * sphi, b = nz[j];
             // The texel's own plane at this azimuth: a cos e + b sin e = 0.
             const float plane = atan_lanes(-a / b);
-            const float r = std::sqrt(a * a + b * b);
-            const float half = 0.5f * h[j], half2 = half * half;
+            const float e0 = h[j] > plane ? h[j] : plane;
+            // sin e0 and cos e0 from the half angle (|e0 / 2| <= pi / 4: Taylor to 1e-9; no libm
+            // call, which would keep the loop scalar).
+            const float half = 0.5f * e0, half2 = half * half;
             const float sh = half * (1.0f + half2 * (-1.0f / 6 + half2 * (1.0f / 120 + half2 * (-1.0f / 5040 + half2 / 362880))));
             const float ch = 1.0f + half2 * (-0.5f + half2 * (1.0f / 24 + half2 * (-1.0f / 720 + half2 / 40320)));
-            const bool above = h[j] > plane;
-            const float e0 = above ? h[j] : plane;
-            const float s1 = above ? 2 * sh * ch : -a / r;
-            const float c1 = above ? (ch - sh) * (ch + sh) : b / r;
+            a_[j] = a;
+            s1[j] = 2 * sh * ch;
+            c1[j] = (ch - sh) * (ch + sh);
             fa[0][j] = a, fb[0][j] = b;
             fa[1][j] = a * e0, fb[1][j] = b * e0;
-            float sm = s1, cm = c1;
-            for (int m = 1; m <= kMaxHarmonic; ++m) {
-                if (m <= harmonics) {
-                    fa[1 + m][j] = a * sm, fb[1 + m][j] = b * sm;
-                    fa[1 + harmonics + m][j] = a * cm, fb[1 + harmonics + m][j] = b * cm;
-                }
-                const float s_next = sm * c1 + cm * s1;
-                cm = cm * c1 - sm * s1, sm = s_next;
+            sm[j] = s1[j], cm[j] = c1[j];
+        }
+        // sin(m e0), cos(m e0) by the angle-sum recurrence.
+        for (int m = 1; m <= harmonics; ++m) {
+            float* fs_a = fa[1 + m];
+            float* fs_b = fb[1 + m];
+            float* fc_a = fa[1 + harmonics + m];
+            float* fc_b = fb[1 + harmonics + m];
+            for (int j = 0; j < kBlock; ++j) {
+                const float a = a_[j], b = nz[j], s = sm[j], c = cm[j];
+                fs_a[j] = a * s, fs_b[j] = b * s;
+                fc_a[j] = a * c, fc_b[j] = b * c;
+                sm[j] = s * c1[j] + c * s1[j];
+                cm[j] = c * c1[j] - s * s1[j];
             }
         }
         for (int i = 0; i < k_count; ++i) {

@@ -221,82 +221,84 @@ void run_window(const BenchRenderOptions& o, const std::string& name, const dem:
     std::vector<glm::vec3> frame;
     for (int directions : o.directions)
         for (const std::string& sun_shadows : o.sun_shadows)
-          for (const std::string& transfer : o.terrain_transfers) {
-            render::RendererOptions ro;
-            // The reference is direct light (reference_shading.hpp): no bounce on either side.
-            ro.bounce.bounces = 0;
-            ro.terrain_transfer = transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
-                                                       : render::RendererOptions::TerrainTransfer::exact;
-            ro.directions = directions;
-            ro.curvature = !o.no_curvature;
-            ro.threads = o.threads;
-            ro.sun_method = visibility::parse_sun_method(sun_shadows);
-            const std::unique_ptr<render::ShadingState> state =
-                render::compute_shading_state(grid, materials, normals, ro);
-            const render::ViewShading view_shading = render::compute_view_shading(*state, view);
-            render::FrameRenderer renderer(*state, view_shading);
-            std::printf("%s at %d,%d: %dx%d, mean tan slope %.3f, D %d, sun %s, terrain transfer %s: visibility %.2f s, "
-                        "transfer %.2f s\n",
-                        name.c_str(), col0, row0, grid.width, grid.height, roughness, directions, sun_shadows.c_str(),
-                        transfer.c_str(), state->visibility_seconds(), state->transfer_seconds());
-            for (std::size_t si = 0; si < suns.size(); ++si) {
-                const render::SunState& sun = suns[si].sun;
-                const SunReference& ref = refs[si];
-                Row row;
-                row.dem = name;
-                row.label = suns[si].label;
-                row.time = suns[si].time;
-                row.col0 = col0, row.row0 = row0;
-                row.width = grid.width;
-                row.height = grid.height;
-                row.directions = directions;
-                row.sun_shadows = sun_shadows;
-                row.terrain_transfer = transfer;
-                row.mean_tan_slope = roughness;
-                row.state_s = state->visibility_seconds() + state->transfer_seconds();
-                row.azimuth_deg = sun.azimuth_deg;
-                row.elevation_deg = sun.elevation_deg;
+            for (const std::string& transfer : o.terrain_transfers) {
+                render::RendererOptions ro;
+                // The reference is direct light (reference_shading.hpp): no bounce on either side.
+                ro.bounce.bounces = 0;
+                ro.terrain_transfer = transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
+                                                           : render::RendererOptions::TerrainTransfer::exact;
+                ro.directions = directions;
+                ro.curvature = !o.no_curvature;
+                ro.threads = o.threads;
+                ro.sun_method = visibility::parse_sun_method(sun_shadows);
+                const std::unique_ptr<render::ShadingState> state =
+                    render::compute_shading_state(grid, materials, normals, ro);
+                const render::ViewShading view_shading = render::compute_view_shading(*state, view);
+                render::FrameRenderer renderer(*state, view_shading);
+                std::printf(
+                    "%s at %d,%d: %dx%d, mean tan slope %.3f, D %d, sun %s, terrain transfer %s: visibility %.2f s, "
+                    "transfer %.2f s\n",
+                    name.c_str(), col0, row0, grid.width, grid.height, roughness, directions, sun_shadows.c_str(),
+                    transfer.c_str(), state->visibility_seconds(), state->transfer_seconds());
+                for (std::size_t si = 0; si < suns.size(); ++si) {
+                    const render::SunState& sun = suns[si].sun;
+                    const SunReference& ref = refs[si];
+                    Row row;
+                    row.dem = name;
+                    row.label = suns[si].label;
+                    row.time = suns[si].time;
+                    row.col0 = col0, row.row0 = row0;
+                    row.width = grid.width;
+                    row.height = grid.height;
+                    row.directions = directions;
+                    row.sun_shadows = sun_shadows;
+                    row.terrain_transfer = transfer;
+                    row.mean_tan_slope = roughness;
+                    row.state_s = state->visibility_seconds() + state->transfer_seconds();
+                    row.azimuth_deg = sun.azimuth_deg;
+                    row.elevation_deg = sun.elevation_deg;
 
-                t0.restart();
-                renderer.render(*ref.sky, sun, frame);
-                row.frame_ms = t0.milliseconds();
-                row.sun_visibility_ms = renderer.last_timings().sun_visibility_s * 1000.0;
-                row.reference_s = ref.seconds;
-                row.reference_sun_ms = ref.sun_ms;
+                    t0.restart();
+                    renderer.render(*ref.sky, sun, frame);
+                    row.frame_ms = t0.milliseconds();
+                    row.sun_visibility_ms = renderer.last_timings().sun_visibility_s * 1000.0;
+                    row.reference_s = ref.seconds;
+                    row.reference_sun_ms = ref.sun_ms;
 
-                std::vector<double> got, want, got_lit, want_lit, got_shadow, want_shadow;
-                for (std::size_t k = 0; k < texels.size(); ++k) {
-                    const double a = luminance(frame[texels[k]]), b = luminance(ref.samples[k].radiance);
-                    if (!std::isfinite(a) || !std::isfinite(b)) continue;
-                    got.push_back(a), want.push_back(b);
-                    const bool lit = ref.samples[k].sun_fraction >= 0.5f;
-                    (lit ? got_lit : got_shadow).push_back(a);
-                    (lit ? want_lit : want_shadow).push_back(b);
+                    std::vector<double> got, want, got_lit, want_lit, got_shadow, want_shadow;
+                    for (std::size_t k = 0; k < texels.size(); ++k) {
+                        const double a = luminance(frame[texels[k]]), b = luminance(ref.samples[k].radiance);
+                        if (!std::isfinite(a) || !std::isfinite(b)) continue;
+                        got.push_back(a), want.push_back(b);
+                        const bool lit = ref.samples[k].sun_fraction >= 0.5f;
+                        (lit ? got_lit : got_shadow).push_back(a);
+                        (lit ? want_lit : want_shadow).push_back(b);
+                    }
+                    row.samples = int(got.size());
+                    const bench::RelativeErrors all = bench::relative_errors(got, want);
+                    row.rel_rmse = all.rmse, row.rel_p99 = all.p99, row.rel_bias = all.bias;
+                    row.sun_lit_rel_rmse = bench::relative_errors(got_lit, want_lit).rmse;
+                    row.shadow_rel_rmse = bench::relative_errors(got_shadow, want_shadow).rmse;
+
+                    // Shadow masks over every texel.
+                    const light::SunDisc disc = ref.sky->sun();
+                    const std::vector<float>& ren_sun = renderer.sun_visibility();
+                    const bool sun_up = (disc.irradiance.x > 0 || disc.irradiance.y > 0 || disc.irradiance.z > 0) &&
+                                        sun.elevation_deg > -disc.angular_radius_rad * 180.0 / kPi;
+                    bench::MaskAgreement masks;
+                    for (std::size_t i = 0; i < ref.sun_visibility.size(); ++i) {
+                        if (std::isnan(ref.sun_visibility[i]) || std::isnan(ren_sun[i])) continue;
+                        masks.add(sun_up ? ref.sun_visibility[i] : 0.0f,
+                                  ren_sun[i]);  // sun below the horizon: all shadow
+                    }
+                    row.iou = masks.iou();
+                    row.mask_disagree = masks.disagreement();
+                    row.sun_fraction_mae = masks.mean_abs_difference();
+                    row.shadow_share = masks.reference_shadow_share();
+                    rows.push_back(row);
+                    print_row(row);
                 }
-                row.samples = int(got.size());
-                const bench::RelativeErrors all = bench::relative_errors(got, want);
-                row.rel_rmse = all.rmse, row.rel_p99 = all.p99, row.rel_bias = all.bias;
-                row.sun_lit_rel_rmse = bench::relative_errors(got_lit, want_lit).rmse;
-                row.shadow_rel_rmse = bench::relative_errors(got_shadow, want_shadow).rmse;
-
-                // Shadow masks over every texel.
-                const light::SunDisc disc = ref.sky->sun();
-                const std::vector<float>& ren_sun = renderer.sun_visibility();
-                const bool sun_up = (disc.irradiance.x > 0 || disc.irradiance.y > 0 || disc.irradiance.z > 0) &&
-                                    sun.elevation_deg > -disc.angular_radius_rad * 180.0 / kPi;
-                bench::MaskAgreement masks;
-                for (std::size_t i = 0; i < ref.sun_visibility.size(); ++i) {
-                    if (std::isnan(ref.sun_visibility[i]) || std::isnan(ren_sun[i])) continue;
-                    masks.add(sun_up ? ref.sun_visibility[i] : 0.0f, ren_sun[i]);  // sun below the horizon: all shadow
-                }
-                row.iou = masks.iou();
-                row.mask_disagree = masks.disagreement();
-                row.sun_fraction_mae = masks.mean_abs_difference();
-                row.shadow_share = masks.reference_shadow_share();
-                rows.push_back(row);
-                print_row(row);
             }
-        }
 }
 
 void run_dem(const BenchRenderOptions& o, const std::string& path, std::vector<Row>& rows) {

@@ -11,6 +11,8 @@
 #include "core/sh/sh_basis.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/parallel_for.hpp"
+#include "core/visibility/fast_atan.hpp"
+#include "core/visibility/small_angle_trig.hpp"
 
 namespace ts::render {
 
@@ -24,16 +26,15 @@ constexpr int kBlock = 256;
 // Per azimuth and coefficient: the integral from e0 to pi/2 of the part of (n . w) Y_i(w) cos e
 // that goes with n's horizontal component along the azimuth (a) and with n_z (b), each as
 // weights of the features 1, e0, sin(m e0), cos(m e0) (m = 1..harmonics).
+// Made in double, kept in float: the per-texel sums are float.
 struct ElevationIntegrals {
     int harmonics = 0, features = 0, coefficients = 0;
-    std::vector<double> weight;  // [d][i][2][features]: a's weights, then b's
+    std::vector<float> weight;  // [d][i][2][features]: a's weights, then b's
 
-    const double* at(int d, int i, int part) const {
-        return weight.data() + ((std::size_t(d) * coefficients + i) * 2 + part) * features;
+    std::size_t offset(int d, int i, int part) const {
+        return ((std::size_t(d) * coefficients + i) * 2 + part) * features;
     }
-    double* at(int d, int i, int part) {
-        return weight.data() + ((std::size_t(d) * coefficients + i) * 2 + part) * features;
-    }
+    const float* at(int d, int i, int part) const { return weight.data() + offset(d, i, part); }
 };
 
 // The features' weights of int_{e0}^{pi/2} g(e) de for g with the given 16-point samples.
@@ -63,7 +64,7 @@ ElevationIntegrals make_table(int directions, int coefficients) {
     t.coefficients = coefficients;
     t.harmonics = coefficients > 9 ? 5 : 4;
     t.features = 2 + 2 * t.harmonics;
-    t.weight.assign(std::size_t(directions) * coefficients * 2 * t.features, 0.0);
+    t.weight.assign(std::size_t(directions) * coefficients * 2 * t.features, 0.0f);
     for (int d = 0; d < directions; ++d) {
         const double phi = visibility::azimuth_rad(d, directions);
         std::array<std::array<double, kDftPoints>, 16> ga{}, gb{};
@@ -76,28 +77,17 @@ ElevationIntegrals make_table(int directions, int coefficients) {
                 gb[i][n] = std::sin(e) * y[i] * std::cos(e);
             }
         }
-        for (int i = 0; i < coefficients; ++i) {
-            integral_weights(ga[i], t.harmonics, t.at(d, i, 0));
-            integral_weights(gb[i], t.harmonics, t.at(d, i, 1));
-        }
+        for (int i = 0; i < coefficients; ++i)
+            for (int part = 0; part < 2; ++part) {
+                double w[kFeatures];
+                integral_weights(part == 0 ? ga[i] : gb[i], t.harmonics, w);
+                // A band-l coefficient has harmonics up to l + 2 only, and symmetry zeroes more:
+                // exact zeros let the per-texel loop skip them (the DFT leaves them at rounding level).
+                for (int k = 0; k < t.features; ++k)
+                    t.weight[t.offset(d, i, part) + std::size_t(k)] = std::abs(w[k]) < 1e-12 ? 0.0f : float(w[k]);
+            }
     }
-    // A band-l coefficient has harmonics up to l + 2 only, and symmetry zeroes more: exact zeros
-    // let the per-texel loop skip them (the DFT leaves them at rounding level).
-    for (double& w : t.weight)
-        if (std::abs(w) < 1e-12) w = 0;
     return t;
-}
-
-// atan in float without branches (visibility::fast_atan's polynomial, max error 1.7e-6 rad),
-// so that the loop over a block's texels vectorises.
-inline float atan_lanes(float x) {
-    const float ax = std::abs(x);
-    const bool big = ax > 1.0f;
-    const float inv = 1.0f / std::max(ax, 1e-30f);  // both computed, then selected
-    const float t = big ? inv : ax, t2 = t * t;
-    const float p = t * (0.99997726f + t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f +
-                                                                   t2 * (0.05265332f + t2 * -0.01172120f)))));
-    return std::copysign(big ? 1.5707963f - p : p, x);
 }
 
 // One block of kBlock texels from t0 (n of them real: the rest repeat a level open texel, so
@@ -140,13 +130,12 @@ void transfer_block(const ElevationIntegrals& table, const visibility::HorizonSe
         for (int j = 0; j < kBlock; ++j) {
             const float a = nx[j] * cphi + ny[j] * sphi, b = nz[j];
             // The texel's own plane at this azimuth: a cos e + b sin e = 0.
-            const float plane = atan_lanes(-a / b);
+            const float plane = visibility::fast_atan_lanes(-a / b);
             const float e0 = h[j] > plane ? h[j] : plane;
-            // sin e0 and cos e0 from the half angle (|e0 / 2| <= pi / 4: Taylor to 1e-9; no libm
-            // call, which would keep the loop scalar).
+            // sin e0 and cos e0 from the half angle (|e0 / 2| <= pi / 4; no libm call, which
+            // would keep the loop scalar).
             const float half = 0.5f * e0, half2 = half * half;
-            const float sh = half * (1.0f + half2 * (-1.0f / 6 + half2 * (1.0f / 120 + half2 * (-1.0f / 5040 + half2 / 362880))));
-            const float ch = 1.0f + half2 * (-0.5f + half2 * (1.0f / 24 + half2 * (-1.0f / 720 + half2 / 40320)));
+            const float sh = half * visibility::sin_over_x(half2), ch = visibility::cos_from_square(half2);
             a_[j] = a;
             s1[j] = 2 * sh * ch;
             c1[j] = (ch - sh) * (ch + sh);
@@ -169,11 +158,11 @@ void transfer_block(const ElevationIntegrals& table, const visibility::HorizonSe
             }
         }
         for (int i = 0; i < k_count; ++i) {
-            const double* wa = table.at(d, i, 0);
-            const double* wb = table.at(d, i, 1);
+            const float* wa = table.at(d, i, 0);
+            const float* wb = table.at(d, i, 1);
             float* row = acc[i];
             for (int k = 0; k < f_count; ++k) {
-                const float ca = float(wa[k]), cb = float(wb[k]);
+                const float ca = wa[k], cb = wb[k];
                 const float* xa = fa[k];
                 const float* xb = fb[k];
                 if (ca != 0 && cb != 0) {

@@ -196,10 +196,13 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     request.horizon.curvature = options.curvature;
     request.horizon.threads = options.threads;
     request.horizon.progress = options.progress;
+    // What the views need: V of the specular texels, the horizons of the water texels.
+    for (std::size_t t = 0; t < texels; ++t) {
+        if (s.materials_.water[t]) s.water_index_.push_back(std::uint32_t(t));
+        else if (s.materials_.ks[t] > 0) s.spec_index_.push_back(std::uint32_t(t));
+    }
     // The log-SH is what the blockers, the specular texels and the log-SH transfer need.
-    bool specular = false;
-    for (std::size_t t = 0; t < texels && !specular; ++t) specular = !s.materials_.water[t] && s.materials_.ks[t] > 0;
-    request.log_sh = !s.exact_terrain() || with_blockers || specular;
+    request.log_sh = !s.exact_terrain() || with_blockers || !s.spec_index_.empty();
     request.log_eps = options.visibility_log_eps;
     request.blockers = s.options_.blockers;
     request.keep_terrain_log_sh = with_blockers;
@@ -305,11 +308,6 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             s.diffuse_ = std::make_unique<DiffuseShading>(di);
         }
         if (options.keep_diffuse_transfer) s.kept_transfer_ = std::move(t_diffuse);
-    }
-    // What the views need: V of the specular texels, the horizons of the water texels.
-    for (std::size_t t = 0; t < texels; ++t) {
-        if (s.materials_.water[t]) s.water_index_.push_back(std::uint32_t(t));
-        else if (s.materials_.ks[t] > 0) s.spec_index_.push_back(std::uint32_t(t));
     }
     const std::size_t n_spec = s.spec_index_.size();
     s.spec_log_sh_.resize(16 * n_spec);

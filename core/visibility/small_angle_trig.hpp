@@ -11,16 +11,19 @@
 namespace ts::visibility {
 
 // clang-format off
-// sin(x) / x from x2 = x * x (1 at x = 0, no division: also the sinc of a wedge).
-inline double sin_over_x(double x2) {
-    return 1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-           x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0))))));
+// sin(x) / x from x2 = x * x (1 at x = 0, no division: also the sinc of a wedge). T: double, or
+// float where a loop over texels needs float lanes (the same terms, rounded to float).
+template <class T>
+inline T sin_over_x(T x2) {
+    return T(1.0) + x2 * (T(-1.0 / 6) + x2 * (T(1.0 / 120) + x2 * (T(-1.0 / 5040) + x2 * (T(1.0 / 362880) +
+           x2 * (T(-1.0 / 39916800) + x2 * T(1.0 / 6227020800.0))))));
 }
 
 // cos(x) from x2 = x * x.
-inline double cos_from_square(double x2) {
-    return 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 +
-           x2 * (-1.0 / 3628800 + x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0)))))));
+template <class T>
+inline T cos_from_square(T x2) {
+    return T(1.0) + x2 * (T(-1.0 / 2) + x2 * (T(1.0 / 24) + x2 * (T(-1.0 / 720) + x2 * (T(1.0 / 40320) +
+           x2 * (T(-1.0 / 3628800) + x2 * (T(1.0 / 479001600.0) + x2 * T(-1.0 / 87178291200.0)))))));
 }
 // clang-format on
 

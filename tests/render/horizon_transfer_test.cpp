@@ -3,7 +3,6 @@
 // over an uneven skyline, void texels, and bad inputs.
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <stdexcept>
 #include <vector>
 

@@ -78,6 +78,11 @@ const SkySh& HdrSky::cached_sh() const {
     return sh_;
 }
 
+const SkySh& HdrSky::cached_diffuse_sh() const {
+    std::call_once(diffuse_sh_once_, [this] { diffuse_sh_ = project_diffuse_sky_sh(*this, default_sky_rule(*this)); });
+    return diffuse_sh_;
+}
+
 std::string HdrSky::describe() const {
     char buf[96];
     std::snprintf(buf, sizeof buf, " (%dx%d), centre azimuth %.1f deg, scale %g", image_.width, image_.height,

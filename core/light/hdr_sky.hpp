@@ -35,6 +35,8 @@ public:
     glm::dvec3 brightest_direction() const;
     // project_sky_sh of this map with default_sky_rule, computed on first use (thread-safe).
     const SkySh& cached_sh() const;
+    // project_diffuse_sky_sh of this map, likewise.
+    const SkySh& cached_diffuse_sh() const;
 
 private:
     raster::FloatImage image_;
@@ -44,6 +46,8 @@ private:
     SunDisc sun_;
     mutable std::once_flag sh_once_;
     mutable SkySh sh_{};
+    mutable std::once_flag diffuse_sh_once_;
+    mutable SkySh diffuse_sh_{};
 };
 
 }  // namespace ts::light

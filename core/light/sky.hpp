@@ -63,5 +63,8 @@ std::unique_ptr<Sky> make_sky(const SkyOptions& options, const glm::dvec3& sun_d
 // sphere, per RGB channel. Deterministic quadrature; see the implementation for its error.
 using SkySh = std::array<Rgb, 16>;
 SkySh project_sky_sh(const Sky& sky);
+// The same with bands 0..2 fitted for diffuse terrain (sky_sh.hpp, diffuse_sky_fit.hpp): what the
+// terrain's <T, L> takes.
+SkySh project_diffuse_sky_sh(const Sky& sky);
 
 }  // namespace ts::light

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/light/diffuse_sky_fit.hpp"
 #include "core/light/hdr_sky.hpp"
 #include "core/sh/sh_basis.hpp"
 #include "core/util/angles.hpp"
@@ -38,39 +39,74 @@ struct RingSums {
         c[0] += wl, c[1] += wl * cp, s[1] += wl * sp, c[2] += wl * c2, s[2] += wl * s2, c[3] += wl * c3,
             s[3] += wl * s3;
     }
-    void flush(std::array<glm::dvec3, sh::kCount>& acc) const {
-        if (std::isnan(z)) return;
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        sh::ShVec a[4];  // a[k]: sh::eval where trig_m = 1 for m = 0 (all m >= 0) and m = -k
-        a[0] = sh::eval({r, 0.0, z});
-        for (int k = 1; k <= 3; ++k) {
-            const double phi = kPi / (2.0 * k);
-            a[k] = sh::eval({r * std::cos(phi), r * std::sin(phi), z});
-        }
+    // acc_i += ring sum of trig_m(i) times factor_i: Y_i's factor at the ring's z (the
+    // projection) or the diffuse fit's (DiffuseSkyFit::ring_factors).
+    void flush(const std::array<double, sh::kCount>& factor, std::array<glm::dvec3, sh::kCount>& acc) const {
         for (int i = 0; i < sh::kCount; ++i) {
             const int m = sh::order_of(i);
-            acc[std::size_t(i)] += m >= 0 ? c[m] * a[0][std::size_t(i)] : s[-m] * a[-m][std::size_t(i)];
+            acc[std::size_t(i)] += (m >= 0 ? c[m] : s[-m]) * factor[std::size_t(i)];
         }
     }
 };
 
-}  // namespace
+// Y_i's factor at height z: sh::eval at the azimuths where trig_m = 1 (m >= 0: 0; m < 0: pi / (2|m|)).
+std::array<double, sh::kCount> projection_factors(double z) {
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    sh::ShVec a[4];
+    a[0] = sh::eval({r, 0.0, z});
+    for (int k = 1; k <= 3; ++k) {
+        const double phi = kPi / (2.0 * k);
+        a[k] = sh::eval({r * std::cos(phi), r * std::sin(phi), z});
+    }
+    std::array<double, sh::kCount> f{};
+    for (int i = 0; i < sh::kCount; ++i) {
+        const int m = sh::order_of(i);
+        f[std::size_t(i)] = m >= 0 ? a[0][std::size_t(i)] : a[-m][std::size_t(i)];
+    }
+    return f;
+}
 
-SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule) {
+// The ring sums of the sky's radiance, each ring weighted by factors(z).
+template <class Factors>
+SkySh ring_projection(const Sky& sky, const HemisphereRule& rule, Factors&& factors) {
     std::array<glm::dvec3, sh::kCount> acc{};
     RingSums ring;
+    const auto flush = [&] {
+        if (!std::isnan(ring.z)) ring.flush(factors(ring.z), acc);
+    };
     for_each_sky_node(rule, true, [&](const glm::dvec3& d, double w) {
         if (d.z != ring.z) {
-            ring.flush(acc);
+            flush();
             ring = RingSums{};
             ring.z = d.z;
         }
         ring.add(d, glm::dvec3(sky.radiance(d)) * w);
     });
-    ring.flush(acc);
+    flush();
     SkySh out{};
     for (int i = 0; i < sh::kCount; ++i) out[i] = Rgb(acc[i]);
     return out;
+}
+
+}  // namespace
+
+SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule) {
+    return ring_projection(sky, rule, projection_factors);
+}
+
+SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule) {
+    const DiffuseSkyFit fit;
+    return ring_projection(sky, rule, [&fit](double z) {
+        std::array<double, sh::kCount> f = projection_factors(z);
+        const std::array<double, 9> fitted = fit.ring_factors(z);
+        std::copy(fitted.begin(), fitted.end(), f.begin());
+        return f;
+    });
+}
+
+SkySh project_diffuse_sky_sh(const Sky& sky) {
+    if (const auto* hdr = dynamic_cast<const HdrSky*>(&sky)) return hdr->cached_diffuse_sh();
+    return project_diffuse_sky_sh(sky, default_sky_rule(sky));
 }
 
 SkySh project_sky_sh(const Sky& sky) {

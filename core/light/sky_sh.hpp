@@ -16,6 +16,11 @@ HemisphereRule default_sky_rule(const Sky& sky);
 
 SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule);
 
+// The sky's SH for diffuse terrain shading: bands 0..2 fitted to the irradiance of the normals
+// terrain has, band 3 as project_sky_sh (diffuse_sky_fit.hpp). What <T, L> of a terrain texel
+// takes; a specular lobe or a mesh takes project_sky_sh.
+SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule);
+
 // The sky's radiance reconstructed from its SH at a direction (sh::reconstruct per channel).
 Rgb reconstruct_sky_sh(const SkySh& sh, const glm::dvec3& dir);
 

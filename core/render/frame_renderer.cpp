@@ -26,7 +26,7 @@ FrameRenderer::FrameRenderer(ShadingState& state, const ViewShading& view)
 
 void FrameRenderer::render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out) {
     const Stopwatch t0;
-    const light::SkySh sh = light::project_sky_sh(sky);
+    const light::SkySh sh = light::project_diffuse_sky_sh(sky);
     const double sh_s = t0.seconds();
     render(sky, sh, sun, out);
     timings_.sky_s += sh_s;
@@ -55,8 +55,10 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     t0.restart();
     const std::vector<std::uint32_t>& spec_index = state_.specular_index();
     if (!spec_index.empty()) {
-        shade_transfer(view_.t_spec.data(), spec_index.size(), sky_sh, spec_rgb_.data(), threads);
-        if (view_.spec_clamp) view_.spec_clamp->apply(sky_sh, spec_rgb_.data(), threads);
+        // A glossy lobe takes the radiance's projection, not the diffuse fit.
+        const light::SkySh radiance_sh = light::project_sky_sh(sky);
+        shade_transfer(view_.t_spec.data(), spec_index.size(), radiance_sh, spec_rgb_.data(), threads);
+        if (view_.spec_clamp) view_.spec_clamp->apply(radiance_sh, spec_rgb_.data(), threads);
     }
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));

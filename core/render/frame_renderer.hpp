@@ -2,7 +2,8 @@
 // One frame of per-texel radiance under a sun and sky, from the view-independent state and one
 // view's shading (relighting is cheap because neither changes with the light):
 //
-// per frame: sky SH L (project_sky_sh), sky table (water), sun visibility (the state's sweep),
+// per frame: sky SH L (the diffuse fit for T_d, project_diffuse_sky_sh; the projection for T_s,
+// project_sky_sh), sky table (water), sun visibility (the state's sweep),
 // then per texel
 //   L_out = albedo <T_d, L> + ks <T_s, L>
 //         + sun_vis E_sun [albedo/pi max(0, n.s) + ks (alpha+1)/(2 pi) max(0, r.s)^alpha [n.s > 0]]
@@ -45,7 +46,8 @@ public:
     // Radiance of every texel (linear RGB, the sky's units) into `out` (resized once to texels()).
     // `sky` is the sky of this frame (its sun disc gives the sun's irradiance and direction).
     void render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out);
-    // The same with the sky's SH already projected (bench: time the parts apart).
+    // The same with the sky's diffuse SH already made (project_diffuse_sky_sh; bench: time the
+    // parts apart).
     void render(const light::Sky& sky, const light::SkySh& sky_sh, const SunState& sun, std::vector<glm::vec3>& out);
 
     // The sun's visible fraction per texel of the last frame (0 when the sun was down).

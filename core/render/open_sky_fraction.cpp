@@ -31,7 +31,7 @@ std::vector<float> open_sky_fraction(FrameRenderer& frame) {
     // The frame's transfer carries the bounced light too (T_d + T_b): the sky alone is without it.
     const std::vector<float>& bounce = frame.state().bounce_transfer();
     const std::size_t k_count = std::size_t(frame.state().bounce_coefficients());
-    const light::SkySh sh = bounce.empty() ? light::SkySh{} : light::project_sky_sh(sky);
+    const light::SkySh sh = bounce.empty() ? light::SkySh{} : light::project_diffuse_sky_sh(sky);
     std::vector<float> out(radiance.size(), 1.0f);
     for (std::size_t t = 0; t < radiance.size(); ++t) {
         if (m.water[t]) continue;

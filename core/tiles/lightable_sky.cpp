@@ -27,7 +27,7 @@ std::string sky_table_json(const light::SkyOptions& options) {
     for (double e : lightable_sky_elevations()) {
         const render::SunState state{90.0, e};
         const auto sky = light::make_sky(options, render::sun_direction(state));
-        const light::SkySh projected = light::project_sky_sh(*sky);
+        const light::SkySh projected = light::project_diffuse_sky_sh(*sky);  // as FrameRenderer
         const light::SunDisc disc = sky->sun();
         radius = disc.angular_radius_rad;
         // As FrameRenderer: the disc's top above the horizon and some light.

@@ -94,14 +94,45 @@ SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule) {
     return ring_projection(sky, rule, projection_factors);
 }
 
-SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule) {
+namespace {
+
+// Per ring of the rule (in for_each_sky_node's order), the diffuse fit's factors for bands 0..2
+// and the projection's for band 3.
+std::vector<std::array<double, sh::kCount>> diffuse_ring_factors(const HemisphereRule& rule) {
     const DiffuseSkyFit fit;
-    return ring_projection(sky, rule, [&fit](double z) {
-        std::array<double, sh::kCount> f = projection_factors(z);
-        const std::array<double, 9> fitted = fit.ring_factors(z);
+    std::vector<std::array<double, sh::kCount>> out;
+    double last = std::numeric_limits<double>::quiet_NaN();
+    for_each_sky_node({rule.n_z, 1}, true, [&](const glm::dvec3& d, double) {
+        if (d.z == last) return;
+        last = d.z;
+        std::array<double, sh::kCount> f = projection_factors(d.z);
+        const std::array<double, 9> fitted = fit.ring_factors(d.z);
         std::copy(fitted.begin(), fitted.end(), f.begin());
-        return f;
+        out.push_back(f);
     });
+    return out;
+}
+
+SkySh project_with_factors(const Sky& sky, const HemisphereRule& rule,
+                           const std::vector<std::array<double, sh::kCount>>& factors) {
+    std::size_t k = 0;
+    return ring_projection(sky, rule, [&](double) { return factors.at(k++); });
+}
+
+}  // namespace
+
+SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule) {
+    return project_with_factors(sky, rule, diffuse_ring_factors(rule));
+}
+
+SkySh DiffuseSkyProjector::project(const Sky& sky) {
+    if (const auto* hdr = dynamic_cast<const HdrSky*>(&sky)) return hdr->cached_diffuse_sh();
+    const HemisphereRule rule = default_sky_rule(sky);
+    if (rule.n_z != rule_.n_z || rule.n_phi != rule_.n_phi || factors_.empty()) {
+        factors_ = diffuse_ring_factors(rule);
+        rule_ = rule;
+    }
+    return project_with_factors(sky, rule, factors_);
 }
 
 SkySh project_diffuse_sky_sh(const Sky& sky) {

@@ -1,8 +1,12 @@
 #pragma once
 // SH projection of a sky (project_sky_sh in sky.hpp) with an explicit quadrature, for tests and
 // studies. project_sky_sh uses default_sky_rule(sky).
+#include <array>
+#include <vector>
+
 #include "core/light/sky.hpp"
 #include "core/light/sky_quadrature.hpp"
+#include "core/sh/sh_basis.hpp"
 
 namespace ts::light {
 
@@ -20,6 +24,17 @@ SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule);
 // terrain has, band 3 as project_sky_sh (diffuse_sky_fit.hpp). What <T, L> of a terrain texel
 // takes; a specular lobe or a mesh takes project_sky_sh.
 SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule);
+
+// project_diffuse_sky_sh(sky) that keeps the fit's factors per ring of its rule: for a caller
+// that projects every frame (the factors took a quarter of the projection's time).
+class DiffuseSkyProjector {
+public:
+    SkySh project(const Sky& sky);
+
+private:
+    HemisphereRule rule_{0, 0};
+    std::vector<std::array<double, sh::kCount>> factors_;
+};
 
 // The sky's radiance reconstructed from its SH at a direction (sh::reconstruct per channel).
 Rgb reconstruct_sky_sh(const SkySh& sh, const glm::dvec3& dir);

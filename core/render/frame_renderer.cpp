@@ -26,7 +26,7 @@ FrameRenderer::FrameRenderer(ShadingState& state, const ViewShading& view)
 
 void FrameRenderer::render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out) {
     const Stopwatch t0;
-    const light::SkySh sh = light::project_diffuse_sky_sh(sky);
+    const light::SkySh sh = diffuse_sky_.project(sky);
     const double sh_s = t0.seconds();
     render(sky, sh, sun, out);
     timings_.sky_s += sh_s;

@@ -23,6 +23,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/light/sky.hpp"
+#include "core/light/sky_sh.hpp"
 #include "core/render/shading_state.hpp"
 #include "core/light/sky_table.hpp"
 #include "core/render/view_shading.hpp"
@@ -57,6 +58,7 @@ public:
 private:
     ShadingState& state_;
     const ViewShading& view_;
+    light::DiffuseSkyProjector diffuse_sky_;  // the sky's SH for <T_d, L>, its fit kept per rule
     // Per-frame scratch, allocated once.
     std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
     std::vector<float> sun_vis_;

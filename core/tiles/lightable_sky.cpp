@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "core/light/sky_sh.hpp"
 #include "core/render/shading_state.hpp"
 #include "core/tiles/tile_set_info.hpp"
 
@@ -24,10 +25,11 @@ std::string number(double v) {
 std::string sky_table_json(const light::SkyOptions& options) {
     std::string els, sh, sun;
     double radius = 0;
+    light::DiffuseSkyProjector diffuse;  // as FrameRenderer
     for (double e : lightable_sky_elevations()) {
         const render::SunState state{90.0, e};
         const auto sky = light::make_sky(options, render::sun_direction(state));
-        const light::SkySh projected = light::project_diffuse_sky_sh(*sky);  // as FrameRenderer
+        const light::SkySh projected = diffuse.project(*sky);
         const light::SunDisc disc = sky->sun();
         radius = disc.angular_radius_rad;
         // As FrameRenderer: the disc's top above the horizon and some light.

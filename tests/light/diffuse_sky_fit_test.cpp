@@ -92,6 +92,18 @@ TEST(DiffuseSkySh, BeatsTheProjectionOnSlopesUnderALowClearSun) {
     }
 }
 
+TEST(DiffuseSkySh, TheProjectorGivesWhatTheFunctionGives) {
+    // It keeps the ring factors between frames: the same numbers, bit for bit, sky after sky.
+    DiffuseSkyProjector projector;
+    for (double elevation : {3.0, 30.0, 70.0}) {
+        const double e = radians(elevation);
+        const PreethamSky sky(2.5, 0.2, {0.0, std::cos(e), std::sin(e)});
+        const SkySh a = projector.project(sky), b = project_diffuse_sky_sh(sky);
+        for (int i = 0; i < 16; ++i)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(a[std::size_t(i)][c], b[std::size_t(i)][c]) << i;
+    }
+}
+
 TEST(DiffuseSkySh, RingFactorsVanishWhereNoNormalOfTheCapSees) {
     // A direction more than 60 degrees below the horizon lies behind every normal of a cap of
     // slopes up to 60 degrees (the closest, 30 degrees up, is 91 degrees away): its weight is zero.

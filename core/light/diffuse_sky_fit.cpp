@@ -38,7 +38,7 @@ std::array<double, 3> clamped_cosine_harmonics(double a, double c) {
     return {2 * (a * t + c * s1), 2 * a * s1 + c * (t + s2 / 2), a * s2 + c * (s1 + s3 / 3)};
 }
 
-// Solves the 9 x 9 symmetric positive definite system's inverse by Gauss-Jordan elimination.
+// The inverse of a 9 x 9 matrix (here symmetric positive definite) by Gauss-Jordan elimination.
 std::array<double, 81> invert(std::array<double, 81> a) {
     std::array<double, 81> inv{};
     for (int i = 0; i < 9; ++i) inv[std::size_t(i * 9 + i)] = 1.0;

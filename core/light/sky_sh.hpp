@@ -1,6 +1,6 @@
 #pragma once
-// SH projection of a sky (project_sky_sh in sky.hpp) with an explicit quadrature, for tests and
-// studies. project_sky_sh uses default_sky_rule(sky).
+// SH of a sky with an explicit quadrature rule (project_sky_sh and project_diffuse_sky_sh in
+// sky.hpp use default_sky_rule(sky)), and the diffuse projection with its fit kept per rule.
 #include <array>
 #include <vector>
 

@@ -31,7 +31,7 @@ public:
 // The irradiance / pi of an open plane with normal n: brute force over a fine rule.
 double open_irradiance(const Sky& sky, const glm::dvec3& n) {
     double e = 0;
-    for_each_sky_node({256, 1024}, true, [&](const glm::dvec3& d, double w) {
+    for_each_sky_node({128, 512}, true, [&](const glm::dvec3& d, double w) {
         const double c = glm::dot(n, d);
         if (c > 0) e += w * c * sky.radiance(d).g;
     });

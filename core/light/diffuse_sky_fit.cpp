@@ -16,18 +16,6 @@ constexpr int kNodes = 48;
 // The lobe (A_l) of the clamped cosine on bands 0..2.
 constexpr double kLobe[3] = {kPi, 2.0 * kPi / 3.0, kPi / 4.0};
 
-// R_i(u): Y_i at height u where its trig_m is 1 (m >= 0: azimuth 0; m < 0: pi / (2|m|)).
-std::array<double, 9> radial_factors(double u) {
-    const double r = std::sqrt(std::max(0.0, 1.0 - u * u));
-    std::array<double, 9> out{};
-    for (int i = 0; i < 9; ++i) {
-        const int m = sh::order_of(i);
-        const double phi = m >= 0 ? 0.0 : kPi / (2.0 * -m);
-        out[std::size_t(i)] = sh::eval({r * std::cos(phi), r * std::sin(phi), u})[std::size_t(i)];
-    }
-    return out;
-}
-
 // int_-pi^pi cos(m b) max(0, a + c cos b) db, m = 0..2, in closed form (c >= 0).
 std::array<double, 3> clamped_cosine_harmonics(double a, double c) {
     double t;  // the half-width of the arc where a + c cos b > 0
@@ -73,7 +61,7 @@ DiffuseSkyFit::DiffuseSkyFit() {
     for (int k = 0; k < kNodes; ++k) {
         u_[std::size_t(k)] = gl.nodes[std::size_t(k)];
         w_[std::size_t(k)] = gl.weights[std::size_t(k)];
-        const std::array<double, 9> r = radial_factors(u_[std::size_t(k)]);
+        const sh::ShVec r = sh::eval_height_factors(u_[std::size_t(k)]);
         for (int i = 0; i < 9; ++i)
             radial_[std::size_t(k)][std::size_t(i)] = kLobe[sh::band_of(i)] / kPi * r[std::size_t(i)];
     }

@@ -25,9 +25,8 @@ namespace {
 // The quadrature's nodes come in rings of equal z (and weight), and every real SH basis
 // function factors as Y_lm(d) = A_lm(z) trig_m(phi), trig = cos(m phi) for m >= 0 and
 // sin(|m| phi) for m < 0 (sh_shared.h's ts_sh_eval). So each ring needs only the Fourier sums
-// sum_j w L_j trig_m(phi_j), m = 0..3, and A_lm(z) once: sh::eval at the four azimuths where
-// trig_m = 1. Same nodes and weights as the direct sum_j w L_j Y(d_j), a quarter of the work
-// besides the radiance itself (equal within rounding, tests/light/sky_sh_test.cpp).
+// sum_j w L_j trig_m(phi_j), m = 0..3, and A_lm(z) once (sh::eval_height_factors). Same nodes
+// and weights as the direct sum_j w L_j Y(d_j), a quarter of the work besides the radiance itself (equal within rounding, tests/light/sky_sh_test.cpp).
 struct RingSums {
     double z = std::numeric_limits<double>::quiet_NaN();
     glm::dvec3 c[4] = {}, s[4] = {};  // sum w L cos(m phi), sum w L sin(m phi); s[0] unused
@@ -40,8 +39,8 @@ struct RingSums {
             s[3] += wl * s3;
     }
     // acc_i += ring sum of trig_m(i) times factor_i: Y_i's factor at the ring's z (the
-    // projection) or the diffuse fit's (DiffuseSkyFit::ring_factors).
-    void flush(const std::array<double, sh::kCount>& factor, std::array<glm::dvec3, sh::kCount>& acc) const {
+    // projection, sh::eval_height_factors) or the diffuse fit's (DiffuseSkyFit::ring_factors).
+    void flush(const sh::ShVec& factor, std::array<glm::dvec3, sh::kCount>& acc) const {
         for (int i = 0; i < sh::kCount; ++i) {
             const int m = sh::order_of(i);
             acc[std::size_t(i)] += (m >= 0 ? c[m] : s[-m]) * factor[std::size_t(i)];
@@ -49,40 +48,22 @@ struct RingSums {
     }
 };
 
-// Y_i's factor at height z: sh::eval at the azimuths where trig_m = 1 (m >= 0: 0; m < 0: pi / (2|m|)).
-std::array<double, sh::kCount> projection_factors(double z) {
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    sh::ShVec a[4];
-    a[0] = sh::eval({r, 0.0, z});
-    for (int k = 1; k <= 3; ++k) {
-        const double phi = kPi / (2.0 * k);
-        a[k] = sh::eval({r * std::cos(phi), r * std::sin(phi), z});
-    }
-    std::array<double, sh::kCount> f{};
-    for (int i = 0; i < sh::kCount; ++i) {
-        const int m = sh::order_of(i);
-        f[std::size_t(i)] = m >= 0 ? a[0][std::size_t(i)] : a[-m][std::size_t(i)];
-    }
-    return f;
-}
-
-// The ring sums of the sky's radiance, each ring weighted by factors(z).
-template <class Factors>
-SkySh ring_projection(const Sky& sky, const HemisphereRule& rule, Factors&& factors) {
-    std::array<glm::dvec3, sh::kCount> acc{};
+// Calls on_ring(ring) with each ring's sums of the sky's radiance, in the rule's order.
+template <class OnRing>
+void for_each_ring(const Sky& sky, const HemisphereRule& rule, OnRing&& on_ring) {
     RingSums ring;
-    const auto flush = [&] {
-        if (!std::isnan(ring.z)) ring.flush(factors(ring.z), acc);
-    };
     for_each_sky_node(rule, true, [&](const glm::dvec3& d, double w) {
         if (d.z != ring.z) {
-            flush();
+            if (!std::isnan(ring.z)) on_ring(ring);
             ring = RingSums{};
             ring.z = d.z;
         }
         ring.add(d, glm::dvec3(sky.radiance(d)) * w);
     });
-    flush();
+    if (!std::isnan(ring.z)) on_ring(ring);
+}
+
+SkySh to_sky_sh(const std::array<glm::dvec3, sh::kCount>& acc) {
     SkySh out{};
     for (int i = 0; i < sh::kCount; ++i) out[i] = Rgb(acc[i]);
     return out;
@@ -91,53 +72,55 @@ SkySh ring_projection(const Sky& sky, const HemisphereRule& rule, Factors&& fact
 }  // namespace
 
 SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule) {
-    return ring_projection(sky, rule, projection_factors);
+    std::array<glm::dvec3, sh::kCount> acc{};
+    for_each_ring(sky, rule, [&](const RingSums& ring) { ring.flush(sh::eval_height_factors(ring.z), acc); });
+    return to_sky_sh(acc);
 }
-
-namespace {
-
-// Per ring of the rule (in for_each_sky_node's order), the diffuse fit's factors for bands 0..2
-// and the projection's for band 3.
-std::vector<std::array<double, sh::kCount>> diffuse_ring_factors(const HemisphereRule& rule) {
-    const DiffuseSkyFit fit;
-    std::vector<std::array<double, sh::kCount>> out;
-    double last = std::numeric_limits<double>::quiet_NaN();
-    for_each_sky_node({rule.n_z, 1}, true, [&](const glm::dvec3& d, double) {
-        if (d.z == last) return;
-        last = d.z;
-        std::array<double, sh::kCount> f = projection_factors(d.z);
-        const std::array<double, 9> fitted = fit.ring_factors(d.z);
-        std::copy(fitted.begin(), fitted.end(), f.begin());
-        out.push_back(f);
-    });
-    return out;
-}
-
-SkySh project_with_factors(const Sky& sky, const HemisphereRule& rule,
-                           const std::vector<std::array<double, sh::kCount>>& factors) {
-    std::size_t k = 0;
-    return ring_projection(sky, rule, [&](double) { return factors.at(k++); });
-}
-
-}  // namespace
 
 SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule) {
-    return project_with_factors(sky, rule, diffuse_ring_factors(rule));
+    return DiffuseSkyProjector().project(sky, rule, nullptr);
 }
 
-SkySh DiffuseSkyProjector::project(const Sky& sky) {
-    if (const auto* hdr = dynamic_cast<const HdrSky*>(&sky)) return hdr->cached_diffuse_sh();
-    const HemisphereRule rule = default_sky_rule(sky);
-    if (rule.n_z != rule_.n_z || rule.n_phi != rule_.n_phi || factors_.empty()) {
-        factors_ = diffuse_ring_factors(rule);
+SkySh DiffuseSkyProjector::project(const Sky& sky, SkySh* radiance) {
+    if (const auto* hdr = dynamic_cast<const HdrSky*>(&sky)) {
+        if (radiance) *radiance = hdr->cached_sh();
+        return hdr->cached_diffuse_sh();
+    }
+    return project(sky, default_sky_rule(sky), radiance);
+}
+
+SkySh DiffuseSkyProjector::project(const Sky& sky, const HemisphereRule& rule, SkySh* radiance) {
+    if (rule.n_z != rule_.n_z || rule.n_phi != rule_.n_phi || diffuse_factors_.empty()) {
+        // Per ring (the rings' heights do not depend on the azimuths): the projection's factors,
+        // and the diffuse fit's for bands 0..2.
+        const DiffuseSkyFit fit;
+        radiance_factors_.clear();
+        diffuse_factors_.clear();
+        double last = std::numeric_limits<double>::quiet_NaN();
+        for_each_sky_node({rule.n_z, 1}, true, [&](const glm::dvec3& d, double) {
+            if (d.z == last) return;
+            last = d.z;
+            radiance_factors_.push_back(sh::eval_height_factors(d.z));
+            sh::ShVec f = radiance_factors_.back();
+            const std::array<double, 9> fitted = fit.ring_factors(d.z);
+            std::copy(fitted.begin(), fitted.end(), f.begin());
+            diffuse_factors_.push_back(f);
+        });
         rule_ = rule;
     }
-    return project_with_factors(sky, rule, factors_);
+    std::array<glm::dvec3, sh::kCount> diffuse{}, projected{};
+    std::size_t k = 0;
+    for_each_ring(sky, rule, [&](const RingSums& ring) {
+        ring.flush(diffuse_factors_.at(k), diffuse);
+        if (radiance) ring.flush(radiance_factors_.at(k), projected);
+        ++k;
+    });
+    if (radiance) *radiance = to_sky_sh(projected);
+    return to_sky_sh(diffuse);
 }
 
 SkySh project_diffuse_sky_sh(const Sky& sky) {
-    if (const auto* hdr = dynamic_cast<const HdrSky*>(&sky)) return hdr->cached_diffuse_sh();
-    return project_diffuse_sky_sh(sky, default_sky_rule(sky));
+    return DiffuseSkyProjector().project(sky);
 }
 
 SkySh project_sky_sh(const Sky& sky) {

@@ -25,15 +25,17 @@ SkySh project_sky_sh(const Sky& sky, const HemisphereRule& rule);
 // takes; a specular lobe or a mesh takes project_sky_sh.
 SkySh project_diffuse_sky_sh(const Sky& sky, const HemisphereRule& rule);
 
-// project_diffuse_sky_sh(sky) that keeps the fit's factors per ring of its rule: for a caller
-// that projects every frame (the factors took a quarter of the projection's time).
+// project_diffuse_sky_sh(sky) that keeps the factors per ring of its rule: for a caller that
+// projects every frame (computing the fit's factors took a quarter of the projection's time).
+// With `radiance`, also project_sky_sh(sky) from the same pass over the sky's radiance.
 class DiffuseSkyProjector {
 public:
-    SkySh project(const Sky& sky);
+    SkySh project(const Sky& sky, SkySh* radiance = nullptr);
+    SkySh project(const Sky& sky, const HemisphereRule& rule, SkySh* radiance);
 
 private:
     HemisphereRule rule_{0, 0};
-    std::vector<std::array<double, sh::kCount>> factors_;
+    std::vector<sh::ShVec> radiance_factors_, diffuse_factors_;  // per ring
 };
 
 // The sky's radiance reconstructed from its SH at a direction (sh::reconstruct per channel).

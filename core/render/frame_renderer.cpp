@@ -26,14 +26,16 @@ FrameRenderer::FrameRenderer(ShadingState& state, const ViewShading& view)
 
 void FrameRenderer::render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out) {
     const Stopwatch t0;
-    const light::SkySh sh = diffuse_sky_.project(sky);
+    // The specular texels' radiance projection comes from the same pass over the sky.
+    light::SkySh radiance_sh{};
+    const light::SkySh sh = diffuse_sky_.project(sky, state_.specular_index().empty() ? nullptr : &radiance_sh);
     const double sh_s = t0.seconds();
-    render(sky, sh, sun, out);
+    render(sky, sh, radiance_sh, sun, out);
     timings_.sky_s += sh_s;
 }
 
-void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, const SunState& sun,
-                           std::vector<glm::vec3>& out) {
+void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, const light::SkySh& radiance_sh,
+                           const SunState& sun, std::vector<glm::vec3>& out) {
     const std::size_t texels = state_.texels();
     const int threads = state_.options().threads;
     out.resize(texels);
@@ -56,7 +58,6 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     const std::vector<std::uint32_t>& spec_index = state_.specular_index();
     if (!spec_index.empty()) {
         // A glossy lobe takes the radiance's projection, not the diffuse fit.
-        const light::SkySh radiance_sh = light::project_sky_sh(sky);
         shade_transfer(view_.t_spec.data(), spec_index.size(), radiance_sh, spec_rgb_.data(), threads);
         if (view_.spec_clamp) view_.spec_clamp->apply(radiance_sh, spec_rgb_.data(), threads);
     }

@@ -47,9 +47,11 @@ public:
     // Radiance of every texel (linear RGB, the sky's units) into `out` (resized once to texels()).
     // `sky` is the sky of this frame (its sun disc gives the sun's irradiance and direction).
     void render(const light::Sky& sky, const SunState& sun, std::vector<glm::vec3>& out);
-    // The same with the sky's diffuse SH already made (project_diffuse_sky_sh; bench: time the
-    // parts apart).
-    void render(const light::Sky& sky, const light::SkySh& sky_sh, const SunState& sun, std::vector<glm::vec3>& out);
+    // The same with the sky's SH already made: `sky_sh` for the terrain's diffuse term
+    // (project_diffuse_sky_sh), `radiance_sh` for the specular texels (project_sky_sh; read only
+    // when there are some).
+    void render(const light::Sky& sky, const light::SkySh& sky_sh, const light::SkySh& radiance_sh,
+                const SunState& sun, std::vector<glm::vec3>& out);
 
     // The sun's visible fraction per texel of the last frame (0 when the sun was down).
     const std::vector<float>& sun_visibility() const { return sun_vis_; }

@@ -1,5 +1,6 @@
 #include "core/sh/sh_basis.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/sh/sh_shared.hpp"
@@ -12,6 +13,22 @@ ShVec eval(const glm::dvec3& d) {
     shared::ts_sh_eval(d, raw);
     for (int i = 0; i < kCount; ++i) y[i] = raw[i];
     return y;
+}
+
+ShVec eval_height_factors(double z) {
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    ShVec at[4];  // at[k]: the basis where trig_m = 1 for m >= 0 (azimuth 0) and for m = -k
+    at[0] = eval({r, 0.0, z});
+    for (int k = 1; k < kBands; ++k) {
+        const double phi = kPi / (2.0 * k);
+        at[k] = eval({r * std::cos(phi), r * std::sin(phi), z});
+    }
+    ShVec h{};
+    for (int i = 0; i < kCount; ++i) {
+        const int m = order_of(i);
+        h[std::size_t(i)] = at[m >= 0 ? 0 : -m][std::size_t(i)];
+    }
+    return h;
 }
 
 double reconstruct(const ShVec& f, const glm::dvec3& d) {

@@ -28,6 +28,9 @@ constexpr int order_of(int i) {
 
 // The 16 basis functions at a unit direction.
 ShVec eval(const glm::dvec3& d);
+// Each basis function factors as Y_i(d) = H_i(z) trig_m(phi), trig_m = cos(m phi) for m >= 0 and
+// sin(|m| phi) for m < 0 (sh_shared.h's ts_sh_eval): H_i(z), Y_i at height z where trig_m = 1.
+ShVec eval_height_factors(double z);
 // Value of the band-limited function with coefficients f at a unit direction.
 double reconstruct(const ShVec& f, const glm::dvec3& d);
 // ZH coefficients (axis +z) turned so that the axis points along unit direction d.

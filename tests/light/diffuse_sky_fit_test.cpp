@@ -93,14 +93,19 @@ TEST(DiffuseSkySh, BeatsTheProjectionOnSlopesUnderALowClearSun) {
 }
 
 TEST(DiffuseSkySh, TheProjectorGivesWhatTheFunctionGives) {
-    // It keeps the ring factors between frames: the same numbers, bit for bit, sky after sky.
+    // It keeps the ring factors between frames: the same numbers, bit for bit, sky after sky; the
+    // radiance's projection it makes on the way is project_sky_sh's.
     DiffuseSkyProjector projector;
     for (double elevation : {3.0, 30.0, 70.0}) {
         const double e = radians(elevation);
         const PreethamSky sky(2.5, 0.2, {0.0, std::cos(e), std::sin(e)});
-        const SkySh a = projector.project(sky), b = project_diffuse_sky_sh(sky);
+        SkySh radiance{};
+        const SkySh a = projector.project(sky, &radiance), b = project_diffuse_sky_sh(sky), p = project_sky_sh(sky);
         for (int i = 0; i < 16; ++i)
-            for (int c = 0; c < 3; ++c) EXPECT_EQ(a[std::size_t(i)][c], b[std::size_t(i)][c]) << i;
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_EQ(a[std::size_t(i)][c], b[std::size_t(i)][c]) << i;
+                EXPECT_EQ(radiance[std::size_t(i)][c], p[std::size_t(i)][c]) << i;  // from the same pass
+            }
     }
 }
 

@@ -269,6 +269,7 @@ export function texelGrey(tile, light, {contrast = 1, flatGrey = 0.5} = {}) {
     if (!valid[k]) { grey[k] = NaN; continue; }
     let lum = base;
     for (let c = 0; c < K; ++c) lum += wk[c] * planes[c][k];
+    if (lum < 0) lum = 0;  // the sky's irradiance clamped at 0, as FrameRenderer does
     if (vis) {
       const cos = normal.x[k] * sx + normal.y[k] * sy + normal.z[k] * sz;
       if (cos > 0) lum += vis[k] * cos * light.eDiffuse;
@@ -307,6 +308,7 @@ export function texelColor(tile, light, exposure) {
       const v = planes[q][k];
       lr += wk[3 * q] * v, lg += wk[3 * q + 1] * v, lb += wk[3 * q + 2] * v;
     }
+    lr = Math.max(0, lr), lg = Math.max(0, lg), lb = Math.max(0, lb);  // as FrameRenderer
     if (vis) {
       const cos = normal.x[k] * sx + normal.y[k] * sy + normal.z[k] * sz;
       if (cos > 0) { const d = vis[k] * cos; lr += d * eR, lg += d * eG, lb += d * eB; }

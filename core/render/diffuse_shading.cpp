@@ -113,6 +113,11 @@ template <class Load, class BlockT>
             g += x * c.g[i];
             bl += x * c.b[i];
         }
+        // Irradiance is never negative; a sky concentrated in a few degrees (the twilight glow
+        // just after sunset) rings below 0 in 16 coefficients on slopes facing away from it.
+        r = r > zero ? r : zero;
+        g = g > zero ? g : zero;
+        bl = bl > zero ? bl : zero;
         if constexpr (BlockT::kBounce) {
             Float8 u = zero;
             for (int i = 0; i < kBounceSunCoefficients; ++i) {

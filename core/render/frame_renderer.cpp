@@ -107,9 +107,10 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
                     for (std::size_t i = 0; i < k_count; ++i) u += bounce[i * texels_all + t] * sun_sh[i];
                     if (u == u) sun_w += u * std::numbers::pi_v<float>;
                 }
-                o[t].x = ar[t] * (d[t].x + sun_w * e_diffuse.x);
-                o[t].y = ag[t] * (d[t].y + sun_w * e_diffuse.y);
-                o[t].z = ab[t] * (d[t].z + sun_w * e_diffuse.z);
+                // The sky's irradiance clamped at 0 as in the fused pass (diffuse_shading.cpp).
+                o[t].x = ar[t] * (std::max(d[t].x, 0.0f) + sun_w * e_diffuse.x);
+                o[t].y = ag[t] * (std::max(d[t].y, 0.0f) + sun_w * e_diffuse.y);
+                o[t].z = ab[t] * (std::max(d[t].z, 0.0f) + sun_w * e_diffuse.z);
             }
         });
     }

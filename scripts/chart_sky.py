@@ -6,6 +6,9 @@ Runs the sky_chart_csv program (built in BUILD_DIR/tests/light) to print the dat
                                 turbidities and the CIE overcast sky (sun 30 degrees up)
   docs/charts/sky_sh.png      : the same profile (on the whole circle, ground included) beside
                                 its order-4 SH reconstruction
+  docs/charts/sky_low_sun.png : CIE x and luminance along the sun's vertical with the sun 3 and
+                                20 degrees up: the physical sky, Preetham's, and Blender's Nishita
+                                sky (tests/light/reference/nishita_sky_default.csv)
 Usage: /usr/bin/python3 scripts/chart_sky.py [BUILD_DIR]   (default: build/release)
 """
 import csv
@@ -36,12 +39,18 @@ def main():
         subprocess.run([exe, tmp], check=True)
         profile = read(os.path.join(tmp, "sky_profile.csv"))
         sh = read(os.path.join(tmp, "sky_sh.csv"))
+        low = read(os.path.join(tmp, "sky_low_sun.csv"))
+    with open(os.path.join(ROOT, "tests", "light", "reference", "nishita_sky_default.csv")) as f:
+        nishita = list(csv.DictReader(line for line in f if not line.startswith("#")))
 
     fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=100)
     for t in sorted({r["turbidity"] for r in profile if r["sky"] == "clear"}, key=float):
         rows = [r for r in profile if r["sky"] == "clear" and r["turbidity"] == t]
         ax.plot([float(r["signed_zenith_deg"]) for r in rows], [float(r["luminance"]) for r in rows],
                 label=f"clear, T = {float(t):g}")
+    rows = [r for r in profile if r["sky"] == "physical"]
+    ax.plot([float(r["signed_zenith_deg"]) for r in rows], [float(r["luminance"]) for r in rows], "C1:",
+            label="physical, T = 3")
     rows = [r for r in profile if r["sky"] == "overcast"]
     ax.plot([float(r["signed_zenith_deg"]) for r in rows], [float(r["luminance"]) for r in rows], "k--",
             label="CIE overcast")
@@ -50,7 +59,7 @@ def main():
     ax.set_yscale("log")
     ax.set_xlabel("zenith angle in the sun's vertical plane (deg, + towards the sun)")
     ax.set_ylabel("luminance (kcd/m$^2$)")
-    ax.set_title("Sky luminance, sun 30 deg up (Preetham 1999; CIE overcast)", fontsize=10)
+    ax.set_title("Sky luminance, sun 30 deg up (clear: Preetham 1999; physical; CIE overcast)", fontsize=10)
     ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
     fig.tight_layout()
@@ -71,7 +80,31 @@ def main():
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(out_dir, "sky_sh.png"))
-    print("wrote docs/charts/sky_profile.png and docs/charts/sky_sh.png")
+    # Low sun: colour and luminance along the sun's vertical, models and Blender's Nishita sky.
+    fig, axes = plt.subplots(2, 2, figsize=(9.6, 6.4), dpi=100, sharex=True)
+    styles = {"physical T=3": "C0-", "physical with Blender's dust": "C2-", "Preetham T=3": "C1--"}
+    for col, e in enumerate((3.0, 20.0)):
+        for name, style in styles.items():
+            rows = [r for r in low if r["sky"] == name and float(r["sun_elevation_deg"]) == e]
+            z = [float(r["signed_zenith_deg"]) for r in rows]
+            axes[0][col].plot(z, [float(r["x"]) for r in rows], style, lw=1.2, label=name)
+            axes[1][col].plot(z, [float(r["luminance"]) for r in rows], style, lw=1.2, label=name)
+        pts = [r for r in nishita if float(r["sun_elevation_deg"]) == e and float(r["rel_azimuth_deg"]) in (0.0, 180.0)]
+        z = [(90.0 - float(r["view_elevation_deg"])) * (1 if float(r["rel_azimuth_deg"]) == 0.0 else -1) for r in pts]
+        axes[0][col].plot(z, [float(r["x"]) for r in pts], "k.", label="Blender Nishita (default dust)")
+        axes[1][col].plot(z, [0.683 * float(r["Y"]) for r in pts], "k.", label="Blender Nishita (default dust)")
+        axes[0][col].set_title(f"sun {e:g} deg up (at +{90 - e:g})", fontsize=10)
+        axes[1][col].set_yscale("log")
+        axes[1][col].set_xlabel("zenith angle in the sun's vertical (deg, + towards the sun)")
+        for ax in (axes[0][col], axes[1][col]):
+            ax.axvline(90 - e, color="orange", lw=0.8, ls=":")
+            ax.grid(alpha=0.3)
+    axes[0][0].set_ylabel("CIE x (redder up)")
+    axes[1][0].set_ylabel("luminance (kcd/m$^2$)")
+    axes[0][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "sky_low_sun.png"))
+    print("wrote docs/charts/sky_profile.png, docs/charts/sky_sh.png and docs/charts/sky_low_sun.png")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 
 #include "core/light/hdr_sky.hpp"
 #include "core/light/overcast_sky.hpp"
+#include "core/light/physical_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 
 namespace ts::light {
@@ -11,6 +12,8 @@ std::unique_ptr<Sky> make_sky(const SkyOptions& options, const glm::dvec3& sun_d
     switch (options.kind) {
         case SkyOptions::Kind::clear:
             return std::make_unique<PreethamSky>(options.turbidity, options.ground_albedo, sun_direction_enu);
+        case SkyOptions::Kind::physical:
+            return std::make_unique<PhysicalSky>(options.turbidity, options.ground_albedo, sun_direction_enu);
         case SkyOptions::Kind::overcast:
             return std::make_unique<OvercastSky>(options.overcast_brightness, options.ground_albedo, sun_direction_enu);
         case SkyOptions::Kind::hdr:

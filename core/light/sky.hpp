@@ -18,12 +18,16 @@ namespace ts::light {
 using Rgb = glm::vec3;
 
 // What `--sky` asks for. Grammar (parse_sky_options):
-//   clear[:turbidity=T,albedo=A]   analytic clear sky (turbidity 1.7..10, ground albedo 0..1)
+//   clear[:turbidity=T,albedo=A]   Preetham et al.'s analytic clear sky (preetham_sky.hpp;
+//                                  turbidity 1.7..10, ground albedo 0..1)
+//   physical[:turbidity=T,albedo=A]
+//                                  clear sky by single scattering in a spherical atmosphere
+//                                  (physical_sky.hpp), same parameters
 //   overcast[:brightness=B]        CIE standard overcast sky, zenith 3x the horizon
 //   PATH.exr | PATH.hdr | hdr:PATH[,rotation=DEG,scale=S]
 //                                  equirectangular HDR map (read through OpenImageIO)
 struct SkyOptions {
-    enum class Kind { clear, overcast, hdr };
+    enum class Kind { clear, physical, overcast, hdr };
     Kind kind = Kind::clear;
     double turbidity = 3.0;
     double ground_albedo = 0.2;

@@ -1,6 +1,7 @@
 #include "core/light/sky_color.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ts::light {
 
@@ -28,6 +29,26 @@ Chromaticity planckian_chromaticity(double kelvin) {
     const double x = -3.0258469e9 * u * u * u + 2.1070379e6 * u * u + 0.2226347e3 * u + 0.240390;
     const double y = 3.0817580 * x * x * x - 5.87338670 * x * x + 3.75112997 * x - 0.37001483;
     return {x, y};
+}
+
+}  // namespace ts::light
+
+namespace ts::light {
+
+namespace {
+// exp(-(x - mu)^2 / (2 sigma^2)) with one sigma below the mean and another above.
+double split_gaussian(double x, double mu, double sigma_below, double sigma_above) {
+    const double t = (x - mu) / (x < mu ? sigma_below : sigma_above);
+    return std::exp(-0.5 * t * t);
+}
+}  // namespace
+
+glm::dvec3 cie_1931_color_matching(double nm) {
+    const double x = 1.056 * split_gaussian(nm, 599.8, 37.9, 31.0) + 0.362 * split_gaussian(nm, 442.0, 16.0, 26.7) -
+                     0.065 * split_gaussian(nm, 501.1, 20.4, 26.2);
+    const double y = 0.821 * split_gaussian(nm, 568.8, 46.9, 40.5) + 0.286 * split_gaussian(nm, 530.9, 16.3, 31.1);
+    const double z = 1.217 * split_gaussian(nm, 437.0, 11.8, 36.0) + 0.681 * split_gaussian(nm, 459.0, 26.0, 13.8);
+    return {x, y, z};
 }
 
 }  // namespace ts::light

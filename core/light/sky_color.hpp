@@ -26,3 +26,13 @@ struct Chromaticity {
 Chromaticity planckian_chromaticity(double kelvin);
 
 }  // namespace ts::light
+
+namespace ts::light {
+
+// The CIE 1931 2-degree colour-matching functions (x-bar, y-bar, z-bar) at a wavelength in nm,
+// from the multi-lobe piecewise-Gaussian fit of Wyman, Sloan & Shirley, "Simple analytic
+// approximations to the CIE XYZ color matching functions", JCGT 2(2) 2013 (their fit's error
+// is within the spread between the CIE's own tabulations).
+glm::dvec3 cie_1931_color_matching(double wavelength_nm);
+
+}  // namespace ts::light

@@ -1,7 +1,10 @@
 // Prints the data behind docs/charts/sky_*.png (scripts/chart_sky.py runs it):
-//   sky_chart_csv OUT_DIR  ->  OUT_DIR/sky_profile.csv, OUT_DIR/sky_sh.csv
+//   sky_chart_csv OUT_DIR  ->  OUT_DIR/sky_profile.csv, OUT_DIR/sky_sh.csv, OUT_DIR/sky_low_sun.csv
 // sky_profile: luminance and RGB along the sun's vertical plane (signed zenith angle, positive
-// towards the sun) for several turbidities and the overcast sky, sun 30 degrees up.
+// towards the sun) for several turbidities of the clear sky (Preetham), the physical sky at T = 3
+// and the overcast sky, sun 30 degrees up.
+// sky_low_sun: CIE xy and luminance along the sun's vertical with the sun 3 and 20 degrees up,
+// for the physical sky (T = 3, and with Blender's default dust), Preetham's (T = 3).
 // sky_sh: the same profile for the clear (T = 3) and overcast skies beside their order-4 SH
 // reconstruction.
 #include <cmath>
@@ -12,6 +15,7 @@
 
 #include "core/geo/azimuth.hpp"
 #include "core/light/overcast_sky.hpp"
+#include "core/light/physical_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_color.hpp"
 #include "core/light/sky_sh.hpp"
@@ -52,6 +56,11 @@ int main(int argc, char** argv) {
                     << '\n';
         }
     }
+    const PhysicalSky physical(3.0, 0.2, sun);
+    for (double z = -89.5; z <= 89.5; z += 1.0) {
+        const Rgb l = physical.radiance(vertical_dir(z));
+        profile << "physical,3," << z << ',' << luminance(l) << ',' << l.r << ',' << l.g << ',' << l.b << '\n';
+    }
     const OvercastSky overcast(1.0, 0.2, sun);
     for (double z = -89.5; z <= 89.5; z += 1.0) {
         const Rgb l = overcast.radiance(vertical_dir(z));
@@ -75,6 +84,27 @@ int main(int argc, char** argv) {
                   << luminance(reconstruct_sky_sh(sh, d)) << '\n';
         }
     }
-    std::printf("wrote %s and %s\n", (dir / "sky_profile.csv").c_str(), (dir / "sky_sh.csv").c_str());
+    std::ofstream low(dir / "sky_low_sun.csv");
+    low << "sky,sun_elevation_deg,signed_zenith_deg,x,y,luminance\n";
+    for (double e : {3.0, 20.0}) {
+        const glm::dvec3 s = ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), radians(e));
+        const PhysicalSky physical_t3(3.0, 0.2, s);
+        const PhysicalSky blender_dust(Aerosol{2.22e-5 * 1200.0, 0.0}, 0.2, s);
+        const PreethamSky fitted(3.0, 0.2, s);
+        const Sky* models[] = {&physical_t3, &blender_dust, &fitted};
+        const char* labels[] = {"physical T=3", "physical with Blender's dust", "Preetham T=3"};
+        for (int k = 0; k < 3; ++k) {
+            for (double z = -89.5; z <= 89.5; z += 0.5) {
+                const Rgb l = models[k]->radiance(vertical_dir(z));
+                const double X = 0.4124564 * l.r + 0.3575761 * l.g + 0.1804375 * l.b;
+                const double Y = 0.2126729 * l.r + 0.7151522 * l.g + 0.0721750 * l.b;
+                const double Z = 0.0193339 * l.r + 0.1191920 * l.g + 0.9503041 * l.b;
+                low << labels[k] << ',' << e << ',' << z << ',' << X / (X + Y + Z) << ',' << Y / (X + Y + Z) << ','
+                    << luminance(l) << '\n';
+            }
+        }
+    }
+    std::printf("wrote %s, %s and %s\n", (dir / "sky_profile.csv").c_str(), (dir / "sky_sh.csv").c_str(),
+                (dir / "sky_low_sun.csv").c_str());
     return 0;
 }

@@ -16,6 +16,11 @@ TEST(SkyOptions, ClearAndOvercast) {
     EXPECT_EQ(o.ground_albedo, 0.1);
     o = parse_sky_options("CLEAR:Albedo=0");
     EXPECT_EQ(o.ground_albedo, 0.0);
+    o = parse_sky_options("physical:turbidity=4");
+    EXPECT_EQ(o.kind, SkyOptions::Kind::physical);
+    EXPECT_EQ(o.turbidity, 4.0);
+    EXPECT_NE(make_sky(o, {0, 0.5, 0.5})->describe().find("single scattering"), std::string::npos);
+    EXPECT_NE(make_sky(parse_sky_options("clear"), {0, 0.5, 0.5})->describe().find("Preetham"), std::string::npos);
     o = parse_sky_options("overcast:brightness=2");
     EXPECT_EQ(o.kind, SkyOptions::Kind::overcast);
     EXPECT_EQ(o.overcast_brightness, 2.0);

@@ -1,0 +1,73 @@
+#pragma once
+// A physically based clear sky: sunlight scattered once by air (Rayleigh) and by aerosol (Mie)
+// in a spherical atmosphere with ozone absorption, integrated over wavelength (Nishita et al.,
+// "Display of the Earth taking into account atmospheric scattering", SIGGRAPH 1993; the model
+// behind Blender's "Nishita" sky). Unlike a fitted model it holds down to the horizon and at
+// sunset: the long, low paths redden both the sun and the sky around it, and a sun below the
+// horizon still lights the upper atmosphere (twilight) through the Earth's shadow.
+//
+// The sun's beam (`sun()`) is attenuated along the same atmosphere, so the disc and the sky
+// redden together. Units as every Sky: linear Rec. 709 radiance with luminance in kcd/m^2;
+// the extraterrestrial sun is light::kSolarIlluminanceKlx of 5778 K black-body light.
+// Formulas, constants and their sources: docs/lighting.md, "Clear sky: single scattering".
+#include <array>
+#include <vector>
+
+#include "core/light/sky.hpp"
+
+namespace ts::light {
+
+// Wavelengths (nm) at which the spectrum is sampled; the colour-matching functions are
+// integrated against the piecewise-linear spectrum between them.
+inline constexpr int kSkyWavelengths = 17;
+inline constexpr double kSkyFirstWavelengthNm = 390.0;
+inline constexpr double kSkyWavelengthStepNm = 20.0;
+
+// The aerosol's vertical optical depth beta lambda^-alpha (lambda in micrometres, Angstrom).
+struct Aerosol {
+    double beta = 0.0;
+    double alpha = 1.3;
+};
+
+class PhysicalSky final : public Sky {
+public:
+    // Turbidity 1.7..10 (Angstrom beta as sun_transmittance.hpp, alpha 1.3), ground albedo 0..1.
+    PhysicalSky(double turbidity, double ground_albedo, const glm::dvec3& sun_direction_enu);
+    // Any aerosol (tests match other models' with it); `turbidity` only names it in describe().
+    PhysicalSky(const Aerosol& aerosol, double ground_albedo, const glm::dvec3& sun_direction_enu,
+                double turbidity = 0.0);
+
+    Rgb radiance(const glm::dvec3& dir) const override;
+    SunDisc sun() const override { return sun_; }
+    std::string describe() const override;
+
+    // The dome alone for z > 0 (clamped to the horizon below).
+    Rgb sky_radiance(const glm::dvec3& dir) const;
+    // The same by integrating along the view ray now, without the table: the reference the
+    // table is tested against (slow: one integral per call).
+    Rgb sky_radiance_integrated(const glm::dvec3& dir) const;
+    Rgb ground_radiance() const { return ground_; }
+    Rgb sky_horizontal_irradiance() const { return sky_horizontal_; }
+
+private:
+    struct NodeRadiance {
+        Rgb rayleigh{0.0f};  // radiance per unit Rayleigh phase function
+        Rgb mie{0.0f};       // radiance per unit Mie phase function
+    };
+    NodeRadiance integrate(const glm::dvec3& view) const;
+    glm::dvec3 view_direction(double elevation_rad, double relative_azimuth_rad) const;
+
+    double turbidity_;
+    double albedo_;
+    glm::dvec3 sun_dir_;
+    glm::dvec3 sun_east_;  // horizontal unit vectors of the sun's frame (relative azimuth 0 = towards the sun)
+    glm::dvec3 sun_north_;
+    std::array<double, kSkyWavelengths> rayleigh_{}, mie_scattering_{}, mie_extinction_{}, ozone_{};  // per metre / per unit column
+    std::array<Rgb, kSkyWavelengths> weight_{};  // extraterrestrial sun x colour matching -> linear RGB
+    std::vector<NodeRadiance> table_;            // elevation-major
+    SunDisc sun_;
+    Rgb sky_horizontal_{0.0f};
+    Rgb ground_{0.0f};
+};
+
+}  // namespace ts::light

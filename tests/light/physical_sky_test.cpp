@@ -1,0 +1,187 @@
+// The physical clear sky (core/light/physical_sky.hpp): against Blender's Nishita sky (the same
+// single-scattering physics, stored by scripts/nishita_sky_reference.sh), its table against its
+// own integral, the colours of a low sun, twilight and the disc's reddening.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/light/physical_sky.hpp"
+#include "core/light/preetham_sky.hpp"
+#include "core/light/sky_color.hpp"
+#include "core/light/sun_transmittance.hpp"
+#include "core/util/angles.hpp"
+
+namespace ts::light {
+namespace {
+
+// ENU direction at an elevation and an azimuth clockwise from north (degrees).
+glm::dvec3 direction(double elevation_deg, double azimuth_deg) {
+    const double e = elevation_deg * kPi / 180.0, a = azimuth_deg * kPi / 180.0;
+    return {std::cos(e) * std::sin(a), std::cos(e) * std::cos(a), std::sin(e)};
+}
+
+Chromaticity xy_of(const Rgb& c) {
+    const double X = 0.4124564 * c.r + 0.3575761 * c.g + 0.1804375 * c.b;
+    const double Y = 0.2126729 * c.r + 0.7151522 * c.g + 0.0721750 * c.b;
+    const double Z = 0.0193339 * c.r + 0.1191920 * c.g + 0.9503041 * c.b;
+    return {X / (X + Y + Z), Y / (X + Y + Z)};
+}
+
+struct NishitaSample {
+    double sun_elevation, view_elevation, rel_azimuth, x, y, Y_kcd;
+};
+
+std::vector<NishitaSample> read_nishita_reference() {
+    std::ifstream in(std::string(TS_SOURCE_DIR) + "/tests/light/reference/nishita_sky_default.csv");
+    std::vector<NishitaSample> out;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#' || line[0] == 's') continue;
+        std::istringstream s(line);
+        NishitaSample n{};
+        char comma = 0;
+        s >> n.sun_elevation >> comma >> n.view_elevation >> comma >> n.rel_azimuth >> comma >> n.x >> comma >> n.y >> comma >>
+            n.Y_kcd;
+        n.Y_kcd *= 0.683;  // Blender's Y = 1 is 683 cd/m^2
+        out.push_back(n);
+    }
+    return out;
+}
+
+// Blender's default atmosphere: grey dust, vertical extinction 2.22e-5 /m over a 1.2 km scale height.
+constexpr Aerosol kBlenderDefaultDust{2.22e-5 * 1200.0, 0.0};
+
+constexpr double kLowestComparedDeg = 6.0;
+
+TEST(PhysicalSky, AgreesWithBlendersNishitaSkyInColourAndLuminance) {
+    const std::vector<NishitaSample> ref = read_nishita_reference();
+    ASSERT_GT(ref.size(), 800u);
+    double worst_xy = 0.0, worst_xy_near_sun = 0.0, sum_log2 = 0.0;
+    int n = 0;
+    for (double sun_el : {0.0, 3.0, 10.0, 20.0, 45.0, 70.0}) {
+        const PhysicalSky sky(kBlenderDefaultDust, 0.2, direction(sun_el, 0.0));
+        for (const NishitaSample& r : ref) {
+            // Within a few degrees of the horizon Blender's dome is 30-50% darker and redder than
+            // this model's integral, which is converged there (400 steps give the same): left
+            // out until the cause is known (docs/lighting.md).
+            if (r.sun_elevation != sun_el || r.view_elevation < kLowestComparedDeg) continue;
+            const Rgb l = sky.sky_radiance(direction(r.view_elevation, r.rel_azimuth));
+            const Chromaticity c = xy_of(l);
+            const double dxy = std::hypot(c.x - r.x, c.y - r.y);
+            // Blender reads its own table up to 0.7 degree off the asked direction (its
+            // half-texel conventions), which near a low sun's steep aureole shows in colour.
+            const bool near_sun = r.rel_azimuth <= 10.0 && std::abs(r.view_elevation - sun_el) <= 6.0;
+            (near_sun ? worst_xy_near_sun : worst_xy) = std::max(near_sun ? worst_xy_near_sun : worst_xy, dxy);
+            sum_log2 += std::pow(std::log(luminance(l) / r.Y_kcd), 2.0);
+            if (std::getenv("TS_DEBUG_SKY") && (dxy > 0.015 || std::abs(std::log(luminance(l) / r.Y_kcd)) > 0.2))
+                std::printf("sun %g view %g az %g: ours %.4f %.4f Y %.4f  blender %.4f %.4f Y %.4f\n", sun_el, r.view_elevation,
+                            r.rel_azimuth, c.x, c.y, luminance(l), r.x, r.y, r.Y_kcd);
+            ++n;
+        }
+    }
+    const double rms_log = std::sqrt(sum_log2 / n);
+    std::printf("against Blender's Nishita (%d directions, sun 0..70 deg): xy within %.4f (%.4f near the sun), "
+                "luminance RMS %.1f%%\n",
+                n, worst_xy, worst_xy_near_sun, 100.0 * (std::exp(rms_log) - 1.0));
+    EXPECT_LT(worst_xy, 0.02);
+    EXPECT_LT(worst_xy_near_sun, 0.02);
+    EXPECT_LT(rms_log, std::log(1.12));
+}
+
+TEST(PhysicalSky, TableMatchesItsOwnIntegral) {
+    double worst = 0.0;
+    for (double sun_el : {-3.0, 2.0, 15.0, 60.0}) {
+        const PhysicalSky sky(3.0, 0.2, direction(sun_el, 200.0));
+        const double zenith = luminance(sky.sky_radiance_integrated(glm::dvec3(0.0, 0.0, 1.0)));
+        for (double el : {1.0, 3.0, 7.0, 25.0, 50.0, 85.0}) {
+            for (double az = 0.0; az < 360.0; az += 37.0) {
+                const glm::dvec3 d = direction(el, az);
+                const double table = luminance(sky.sky_radiance(d));
+                const double exact = luminance(sky.sky_radiance_integrated(d));
+                // Relative to the larger of the value and the zenith's: dark corners of a
+                // twilight sky are compared by what they add to the picture.
+                worst = std::max(worst, std::abs(table - exact) / std::max(exact, zenith));
+            }
+        }
+    }
+    std::printf("table against the integral: worst %.2f%%\n", 100.0 * worst);
+    EXPECT_LT(worst, 0.03);
+}
+
+TEST(PhysicalSky, LowSunIsOrangeWherePreethamIsYellow) {
+    // The case: sun 3 degrees up, the sky 4 degrees up beside it.
+    const glm::dvec3 sun = direction(3.0, 270.0);
+    const Chromaticity physical = xy_of(PhysicalSky(3.0, 0.2, sun).sky_radiance(direction(4.0, 270.0)));
+    const Chromaticity preetham = xy_of(PreethamSky(3.0, 0.2, sun).sky_radiance(direction(4.0, 270.0)));
+    EXPECT_GT(physical.x, 0.45);  // orange: x above y, both near 0.43-0.5
+    EXPECT_GT(physical.x - physical.y, 0.02);
+    EXPECT_GT(physical.x - preetham.x, 0.03);
+    // The zenith stays blue.
+    const Chromaticity zenith = xy_of(PhysicalSky(3.0, 0.2, sun).sky_radiance(glm::dvec3(0.0, 0.0, 1.0)));
+    EXPECT_LT(zenith.x, 0.29);
+    EXPECT_LT(zenith.y, 0.31);
+}
+
+TEST(PhysicalSky, TheDiscReddensAndDimsTowardsTheHorizonAndSetsAtIt) {
+    double last_ratio = 1e9, last_luminance = 1e9;
+    for (double el : {70.0, 45.0, 20.0, 10.0, 3.0, 0.5}) {
+        const Rgb e = PhysicalSky(3.0, 0.2, direction(el, 90.0)).sun().irradiance;
+        const double ratio = e.b / e.r;
+        EXPECT_LE(ratio, last_ratio) << el;
+        EXPECT_LT(luminance(e), last_luminance) << el;
+        last_ratio = ratio;
+        last_luminance = luminance(e);
+    }
+    // Clear-sky direct normal illuminance at a high sun: measured ~80-100 klx.
+    const double high = luminance(PhysicalSky(3.0, 0.2, direction(60.0, 90.0)).sun().irradiance);
+    EXPECT_GT(high, 70.0);
+    EXPECT_LT(high, 115.0);
+    // The same turbidity gives nearly the beam of the disc model Preetham's sky uses (the same
+    // optical depths along a spherical path instead of Kasten & Young's air mass, and ozone,
+    // which that model leaves out: 0.944 at 30 degrees).
+    const double preetham = luminance(sun_beam_irradiance(3.0, direction(30.0, 90.0), 0.004654));
+    const double physical = luminance(PhysicalSky(3.0, 0.2, direction(30.0, 90.0)).sun().irradiance);
+    EXPECT_NEAR(physical / preetham, 0.96, 0.03);
+    EXPECT_EQ(luminance(PhysicalSky(3.0, 0.2, direction(-1.0, 90.0)).sun().irradiance), 0.0);
+}
+
+TEST(PhysicalSky, TwilightIsSkyLitBlueAndContinuous) {
+    const auto zenith = [](double sun_el) {
+        return PhysicalSky(3.0, 0.2, direction(sun_el, 90.0)).sky_radiance(glm::dvec3(0.0, 0.0, 1.0));
+    };
+    const Rgb civil = zenith(-4.0);
+    EXPECT_GT(luminance(civil), 1e-3);  // > 1 cd/m^2: a sky, not black
+    EXPECT_LT(xy_of(civil).x, 0.29);
+    // A degree of sun costs the zenith about a third near sunset (measured twilight skies lose
+    // ~10x in luminance from 0 to -6 degrees): no cliff at the horizon.
+    const double below = luminance(zenith(-0.5)), above = luminance(zenith(0.5));
+    EXPECT_GT(below / above, 0.5);
+    EXPECT_LT(below / above, 1.0);
+    // Darker monotonically as the sun sinks.
+    double last = 1e9;
+    for (double el = 2.0; el >= -6.0; el -= 1.0) {
+        const double y = luminance(zenith(el));
+        EXPECT_LT(y, last) << el;
+        last = y;
+    }
+}
+
+TEST(PhysicalSky, GroundIsAlbedoTimesIrradianceOverPi) {
+    const glm::dvec3 sun = direction(30.0, 120.0);
+    const PhysicalSky sky(3.0, 0.25, sun);
+    const Rgb e = sky.sky_horizontal_irradiance() + sky.sun().irradiance * static_cast<float>(sun.z);
+    const Rgb g = sky.radiance(glm::dvec3(0.3, 0.2, -0.9));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(g[c], 0.25 * e[c] / kPi, 1e-4 * e[c]);
+    // A clear sky's diffuse share of the light on level ground with the sun 30 degrees up: 15-35%.
+    const double share = luminance(sky.sky_horizontal_irradiance()) / luminance(e);
+    EXPECT_GT(share, 0.15);
+    EXPECT_LT(share, 0.35);
+}
+
+}  // namespace
+}  // namespace ts::light

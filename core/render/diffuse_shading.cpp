@@ -115,9 +115,10 @@ template <class Load, class BlockT>
         }
         // Irradiance is never negative; a sky concentrated in a few degrees (the twilight glow
         // just after sunset) rings below 0 in 16 coefficients on slopes facing away from it.
-        r = r > zero ? r : zero;
-        g = g > zero ? g : zero;
-        bl = bl > zero ? bl : zero;
+        // Written so that a void's NaN stays NaN.
+        r = r < zero ? zero : r;
+        g = g < zero ? zero : g;
+        bl = bl < zero ? zero : bl;
         if constexpr (BlockT::kBounce) {
             Float8 u = zero;
             for (int i = 0; i < kBounceSunCoefficients; ++i) {

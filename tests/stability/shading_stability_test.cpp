@@ -43,8 +43,8 @@ struct MapScene {
         view = render::compute_view_shading(*state, map_view);
         renderer = std::make_unique<render::FrameRenderer>(*state, view);
     }
-    std::vector<glm::vec3> render(const render::SunState& sun) {
-        sky = light::make_sky(light::SkyOptions{}, render::sun_direction(sun));
+    std::vector<glm::vec3> render(const render::SunState& sun, const light::SkyOptions& sky_options = {}) {
+        sky = light::make_sky(sky_options, render::sun_direction(sun));
         std::vector<glm::vec3> out;
         renderer->render(*sky, sun, out);
         return out;
@@ -131,6 +131,11 @@ TEST(StabilityShading, SunJustBelowTheHorizonGivesAnExactlyZeroSunTermAndNoNaN) 
     const auto frame = scene.render({270.0, -0.1});
     expect_finite_non_negative(frame, "disc half set");
     for (float v : scene.renderer->sun_visibility()) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+    // The physical sky's twilight glow is a few degrees wide: in 16 SH coefficients it rings
+    // below 0 on slopes facing away (41 texels before the sky term was clamped at 0).
+    light::SkyOptions physical;
+    physical.kind = light::SkyOptions::Kind::physical;
+    for (double el : {-0.3, -0.5, -2.0, -5.0, -10.0}) expect_finite_non_negative(scene.render({270.0, el}, physical), "physical twilight");
 }
 
 TEST(StabilityShading, ExtremePhongExponentsGiveFiniteNonNegativeRadiance) {

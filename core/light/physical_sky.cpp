@@ -110,9 +110,10 @@ public:
     }
     // Bilinear in (sqrt of altitude, elevation).
     Densities at(double altitude_m, double sin_elevation) const {
-        const double a = std::sqrt(std::clamp(altitude_m, 0.0, kAtmosphereHeightM) / kAtmosphereHeightM) * (kAltitudes - 1);
-        const double e = (std::clamp(sin_elevation, -1.0, 1.0) - kLowestSin) / kStepSin;
-        if (e < 0.0) return {kBlocked, kBlocked, kBlocked};
+        const double h = altitude_m > 0.0 ? std::min(altitude_m, kAtmosphereHeightM) : 0.0;  // NaN -> 0
+        const double a = std::sqrt(h / kAtmosphereHeightM) * (kAltitudes - 1);
+        const double e = (std::min(sin_elevation, 1.0) - kLowestSin) / kStepSin;
+        if (!(e >= 0.0)) return {kBlocked, kBlocked, kBlocked};  // below the table, or NaN
         const int i = std::min(int(a), kAltitudes - 2);
         const int j = std::min(int(e), kElevations - 2);
         const double fa = std::min(a - i, 1.0), fe = std::min(e - j, 1.0);
@@ -299,11 +300,13 @@ PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
 }
 
 Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
-    const double z = std::clamp(dir.z, 0.0, 1.0);
+    // Written so that a NaN direction reads node 0 instead of converting NaN to an index.
+    const double z = dir.z > 0.0 ? std::min(dir.z, 1.0) : 0.0;
     const double elevation = std::asin(z);
     const double along = dir.x * sun_east_.x + dir.y * sun_east_.y;
     const double across = std::abs(dir.x * sun_north_.x + dir.y * sun_north_.y);
-    const double phi = (along == 0.0 && across == 0.0) ? 0.0 : std::atan2(across, along);
+    const double angle = std::atan2(across, along);
+    const double phi = angle >= 0.0 ? angle : 0.0;
     const double a = std::sqrt(elevation / (0.5 * kPi)) * (kTableElevations - 1);
     const double b = phi / kPi * (kTableAzimuths - 1);
     const int i = std::min(int(a), kTableElevations - 2);

@@ -9,7 +9,7 @@
 // The sun's beam (`sun()`) is attenuated along the same atmosphere, so the disc and the sky
 // redden together. Units as every Sky: linear Rec. 709 radiance with luminance in kcd/m^2;
 // the extraterrestrial sun is light::kSolarIlluminanceKlx of 5778 K black-body light.
-// Formulas, constants and their sources: docs/lighting.md, "Clear sky: single scattering".
+// Formulas, constants and their sources: docs/lighting.md, "Physical clear sky".
 #include <array>
 #include <vector>
 

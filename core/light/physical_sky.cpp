@@ -60,11 +60,10 @@ double distance_to_top(double r, double mu) {
     return -r * mu + std::sqrt(std::max(0.0, r * r * (mu * mu - 1.0) + kTopRadiusM * kTopRadiusM));
 }
 
-// Densities integrated from radius r along cos(zenith) mu to the top: steps dense near the start,
-// where the density is highest (t = d u^2).
+// Densities integrated from radius r along cos(zenith) mu to the top (which the ray must reach):
+// steps dense near the start, where the density is highest (t = d u^2).
 Densities optical_path(double r, double mu, int steps) {
     const double d = distance_to_top(r, mu);
-    if (d < 0.0) return {};
     Densities sum;
     for (int k = 0; k < steps; ++k) {
         const double u = (k + 0.5) / steps;
@@ -98,9 +97,8 @@ public:
             const double r = kEarthRadiusM + altitude_of(i);
             for (int j = 0; j < kElevations; ++j) {
                 const double mu = kLowestSin + j * kStepSin;
-                Densities p = optical_path(r, mu, 96);
-                if (distance_to_top(r, mu) < 0.0) p = {kBlocked, kBlocked, kBlocked};
-                paths_[std::size_t(i) * kElevations + std::size_t(j)] = p;
+                paths_[std::size_t(i) * kElevations + std::size_t(j)] =
+                    distance_to_top(r, mu) < 0.0 ? Densities{kBlocked, kBlocked, kBlocked} : optical_path(r, mu, 96);
             }
         }
     }
@@ -203,10 +201,11 @@ PhysicalSky::PhysicalSky(const Aerosol& aerosol, double ground_albedo, const glm
     for (int k = 0; k < kSkyWavelengths; ++k) {
         const double nm = wavelength_nm(k);
         const double um = nm * 1e-3;
-        rayleigh_[std::size_t(k)] = rayleigh_optical_depth(um) / kRayleighScaleHeightM;
-        mie_extinction_[std::size_t(k)] = aerosol.beta * std::pow(um, -aerosol.alpha) / kMieScaleHeightM;
-        mie_scattering_[std::size_t(k)] = kAerosolSingleScatteringAlbedo * mie_extinction_[std::size_t(k)];
-        ozone_[std::size_t(k)] = ozone_cross_section_m2(nm) * kOzoneColumnPerM2;
+        const double mie = aerosol.beta * std::pow(um, -aerosol.alpha) / kMieScaleHeightM;
+        rayleigh_[std::size_t(k)] = float(rayleigh_optical_depth(um) / kRayleighScaleHeightM);
+        mie_extinction_[std::size_t(k)] = float(mie);
+        mie_scattering_[std::size_t(k)] = float(kAerosolSingleScatteringAlbedo * mie);
+        ozone_[std::size_t(k)] = float(ozone_cross_section_m2(nm) * kOzoneColumnPerM2);
         luminance_sum += black_body(nm, kSunTemperatureK) * cmf[std::size_t(k)].y;
     }
     for (int k = 0; k < kSkyWavelengths; ++k) {
@@ -263,9 +262,7 @@ PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
     const SunPathTable& sun_paths = SunPathTable::instance();
     // The spectral loop in float: 17 exponentials a step are most of a sky's cost, and float's
     // 1e-7 is far below the table's 2% interpolation error.
-    std::array<float, kSkyWavelengths> sum_r{}, sum_m{}, k_r{}, k_m{}, k_o{};
-    for (std::size_t w = 0; w < kSkyWavelengths; ++w)
-        k_r[w] = float(rayleigh_[w]), k_m[w] = float(mie_extinction_[w]), k_o[w] = float(ozone_[w]);
+    std::array<float, kSkyWavelengths> sum_r{}, sum_m{};
     Densities behind;  // integrated along the view ray up to the current step
     for (int k = 0; k < kViewSteps; ++k) {
         const double u = (k + 0.5) / kViewSteps;
@@ -286,15 +283,15 @@ PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
         const float path_o = float(here.ozone + to_sun.ozone);
         const float w_r = float(rho.rayleigh * dt), w_m = float(rho.mie * dt);
         for (std::size_t w = 0; w < kSkyWavelengths; ++w) {
-            const float transmittance = std::exp(-(k_r[w] * path_r + k_m[w] * path_m + k_o[w] * path_o));
+            const float transmittance = std::exp(-(rayleigh_[w] * path_r + mie_extinction_[w] * path_m + ozone_[w] * path_o));
             sum_r[w] += transmittance * w_r;
             sum_m[w] += transmittance * w_m;
         }
     }
     NodeRadiance out;
     for (std::size_t w = 0; w < kSkyWavelengths; ++w) {
-        out.rayleigh += weight_[w] * static_cast<float>(rayleigh_[w] * double(sum_r[w]));
-        out.mie += weight_[w] * static_cast<float>(mie_scattering_[w] * double(sum_m[w]));
+        out.rayleigh += weight_[w] * (rayleigh_[w] * sum_r[w]);
+        out.mie += weight_[w] * (mie_scattering_[w] * sum_m[w]);
     }
     return out;
 }
@@ -315,20 +312,20 @@ Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
     auto node = [&](int di, int dj) -> const NodeRadiance& {
         return table_[std::size_t(i + di) * kTableAzimuths + std::size_t(j + dj)];
     };
-    const Rgb ray = (node(0, 0).rayleigh * (1 - fb) + node(0, 1).rayleigh * fb) * (1 - fa) +
-                    (node(1, 0).rayleigh * (1 - fb) + node(1, 1).rayleigh * fb) * fa;
-    const Rgb mie = (node(0, 0).mie * (1 - fb) + node(0, 1).mie * fb) * (1 - fa) +
-                    (node(1, 0).mie * (1 - fb) + node(1, 1).mie * fb) * fa;
-    const glm::dvec3 v(dir.x, dir.y, z);
-    const double cos_gamma = std::clamp(glm::dot(glm::normalize(v), sun_dir_), -1.0, 1.0);
-    const Rgb l = ray * static_cast<float>(rayleigh_phase(cos_gamma)) + mie * static_cast<float>(mie_phase(cos_gamma));
-    return glm::max(l, Rgb(0.0f));
+    NodeRadiance n;
+    n.rayleigh = (node(0, 0).rayleigh * (1 - fb) + node(0, 1).rayleigh * fb) * (1 - fa) +
+                 (node(1, 0).rayleigh * (1 - fb) + node(1, 1).rayleigh * fb) * fa;
+    n.mie = (node(0, 0).mie * (1 - fb) + node(0, 1).mie * fb) * (1 - fa) + (node(1, 0).mie * (1 - fb) + node(1, 1).mie * fb) * fa;
+    return with_phases(n, glm::normalize(glm::dvec3(dir.x, dir.y, z)));
 }
 
 Rgb PhysicalSky::sky_radiance_integrated(const glm::dvec3& dir) const {
     const glm::dvec3 v = glm::normalize(glm::dvec3(dir.x, dir.y, std::max(dir.z, 0.0)));
-    const NodeRadiance n = integrate(v);
-    const double cos_gamma = std::clamp(glm::dot(v, sun_dir_), -1.0, 1.0);
+    return with_phases(integrate(v), v);
+}
+
+Rgb PhysicalSky::with_phases(const NodeRadiance& n, const glm::dvec3& unit_view) const {
+    const double cos_gamma = std::clamp(glm::dot(unit_view, sun_dir_), -1.0, 1.0);
     const Rgb l = n.rayleigh * static_cast<float>(rayleigh_phase(cos_gamma)) + n.mie * static_cast<float>(mie_phase(cos_gamma));
     return glm::max(l, Rgb(0.0f));
 }

@@ -55,6 +55,8 @@ private:
         Rgb mie{0.0f};       // radiance per unit Mie phase function
     };
     NodeRadiance integrate(const glm::dvec3& view) const;
+    // A direction's radiance from its two integrals and the phase functions at its angle to the sun.
+    Rgb with_phases(const NodeRadiance& n, const glm::dvec3& unit_view) const;
     glm::dvec3 view_direction(double elevation_rad, double relative_azimuth_rad) const;
 
     double turbidity_;
@@ -62,7 +64,9 @@ private:
     glm::dvec3 sun_dir_;
     glm::dvec3 sun_east_;  // horizontal unit vectors of the sun's frame (relative azimuth 0 = towards the sun)
     glm::dvec3 sun_north_;
-    std::array<double, kSkyWavelengths> rayleigh_{}, mie_scattering_{}, mie_extinction_{}, ozone_{};  // per metre / per unit column
+    // Per metre at sea level / per unit ozone column. In float: the spectral loop of integrate()
+    // (17 exponentials a step, most of a sky's cost) runs in float.
+    std::array<float, kSkyWavelengths> rayleigh_{}, mie_scattering_{}, mie_extinction_{}, ozone_{};
     std::array<Rgb, kSkyWavelengths> weight_{};  // extraterrestrial sun x colour matching -> linear RGB
     std::vector<NodeRadiance> table_;            // elevation-major
     SunDisc sun_;

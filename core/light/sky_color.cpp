@@ -23,6 +23,13 @@ double luminance(const Rgb& rgb) {
     return 0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b;
 }
 
+Chromaticity chromaticity_of(const Rgb& c) {
+    const double X = 0.4124564 * c.r + 0.3575761 * c.g + 0.1804375 * c.b;
+    const double Y = 0.2126729 * c.r + 0.7151522 * c.g + 0.0721750 * c.b;
+    const double Z = 0.0193339 * c.r + 0.1191920 * c.g + 0.9503041 * c.b;
+    return {X / (X + Y + Z), Y / (X + Y + Z)};
+}
+
 Chromaticity planckian_chromaticity(double kelvin) {
     const double t = std::clamp(kelvin, 4000.0, 25000.0);
     const double u = 1.0 / t;

@@ -24,6 +24,8 @@ struct Chromaticity {
     double y = 0.0;
 };
 Chromaticity planckian_chromaticity(double kelvin);
+// CIE 1931 xy of a linear Rec. 709 colour (the inverse of xyz_to_linear_srgb's matrix).
+Chromaticity chromaticity_of(const Rgb& linear_srgb);
 
 }  // namespace ts::light
 

@@ -96,11 +96,8 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 3; ++k) {
             for (double z = -89.5; z <= 89.5; z += 0.5) {
                 const Rgb l = models[k]->radiance(vertical_dir(z));
-                const double X = 0.4124564 * l.r + 0.3575761 * l.g + 0.1804375 * l.b;
-                const double Y = 0.2126729 * l.r + 0.7151522 * l.g + 0.0721750 * l.b;
-                const double Z = 0.0193339 * l.r + 0.1191920 * l.g + 0.9503041 * l.b;
-                low << labels[k] << ',' << e << ',' << z << ',' << X / (X + Y + Z) << ',' << Y / (X + Y + Z) << ','
-                    << luminance(l) << '\n';
+                const Chromaticity xy = chromaticity_of(l);
+                low << labels[k] << ',' << e << ',' << z << ',' << xy.x << ',' << xy.y << ',' << luminance(l) << '\n';
             }
         }
     }

@@ -1,9 +1,9 @@
 #pragma once
-// A physically based clear sky: sunlight scattered once by air (Rayleigh) and by aerosol (Mie)
-// in a spherical atmosphere with ozone absorption, integrated over wavelength (Nishita et al.,
-// "Display of the Earth taking into account atmospheric scattering", SIGGRAPH 1993; the model
-// behind Blender's "Nishita" sky). Unlike a fitted model it holds down to the horizon and at
-// sunset: the long, low paths redden both the sun and the sky around it, and a sun below the
+// A physically based clear sky: sunlight scattered by air (Rayleigh) and by aerosol (Mie) in a
+// spherical atmosphere with ozone absorption, integrated over wavelength. Single scattering as
+// Nishita et al. ("Display of the Earth taking into account atmospheric scattering", SIGGRAPH
+// 1993; the model behind Blender's "Nishita" sky), plus light scattered more than once
+// (multiple_scattering.hpp). Unlike a fitted model it holds down to the horizon and at sunset: the long, low paths redden both the sun and the sky around it, and a sun below the
 // horizon still lights the upper atmosphere (twilight) through the Earth's shadow.
 //
 // The sun's beam (`sun()`) is attenuated along the same atmosphere, so the disc and the sky
@@ -11,31 +11,33 @@
 // the extraterrestrial sun is light::kSolarIlluminanceKlx of 5778 K black-body light.
 // Formulas, constants and their sources: docs/lighting.md, "Physical clear sky".
 #include <array>
+#include <memory>
 #include <vector>
 
+#include "core/light/atmosphere.hpp"
+#include "core/light/multiple_scattering.hpp"
 #include "core/light/sky.hpp"
 
 namespace ts::light {
 
-// Wavelengths (nm) at which the spectrum is sampled; the colour-matching functions are
-// integrated against the piecewise-linear spectrum between them.
-inline constexpr int kSkyWavelengths = 17;
-inline constexpr double kSkyFirstWavelengthNm = 390.0;
-inline constexpr double kSkyWavelengthStepNm = 20.0;
+using atmosphere::Aerosol;
 
-// The aerosol's vertical optical depth beta lambda^-alpha (lambda in micrometres, Angstrom).
-struct Aerosol {
-    double beta = 0.0;
-    double alpha = 1.3;
-};
+// How many times the light may scatter: once (Nishita's model, as Blender's "Nishita" sky), or
+// any number of times (multiple_scattering.hpp), which lights the haze near the horizon and
+// the twilight sky with the dome's own light.
+enum class Scattering { single, multiple };
 
 class PhysicalSky final : public Sky {
 public:
     // Turbidity 1.7..10 (Angstrom beta as sun_transmittance.hpp, alpha 1.3), ground albedo 0..1.
-    PhysicalSky(double turbidity, double ground_albedo, const glm::dvec3& sun_direction_enu);
+    PhysicalSky(double turbidity, double ground_albedo, const glm::dvec3& sun_direction_enu,
+                Scattering scattering = Scattering::multiple);
     // Any aerosol (tests match other models' with it); `turbidity` only names it in describe().
     PhysicalSky(const Aerosol& aerosol, double ground_albedo, const glm::dvec3& sun_direction_enu,
-                double turbidity = 0.0);
+                Scattering scattering, double turbidity = 0.0);
+    // Any atmosphere's coefficients (tests give every wavelength the same: a monochromatic sky).
+    PhysicalSky(const atmosphere::Coefficients& coefficients, double ground_albedo, const glm::dvec3& sun_direction_enu,
+                Scattering scattering);
 
     Rgb radiance(const glm::dvec3& dir) const override;
     SunDisc sun() const override { return sun_; }
@@ -50,9 +52,12 @@ public:
     Rgb sky_horizontal_irradiance() const { return sky_horizontal_; }
 
 private:
+    PhysicalSky(const atmosphere::Coefficients& coefficients, std::shared_ptr<const MultipleScattering> multiple,
+                double ground_albedo, const glm::dvec3& sun_direction_enu, double turbidity);
     struct NodeRadiance {
         Rgb rayleigh{0.0f};  // radiance per unit Rayleigh phase function
         Rgb mie{0.0f};       // radiance per unit Mie phase function
+        Rgb multiple{0.0f};  // radiance scattered more than once (isotropic)
     };
     NodeRadiance integrate(const glm::dvec3& view) const;
     // A direction's radiance from its two integrals and the phase functions at its angle to the sun.
@@ -64,10 +69,9 @@ private:
     glm::dvec3 sun_dir_;
     glm::dvec3 sun_east_;  // horizontal unit vectors of the sun's frame (relative azimuth 0 = towards the sun)
     glm::dvec3 sun_north_;
-    // Per metre at sea level / per unit ozone column. In float: the spectral loop of integrate()
-    // (17 exponentials a step, most of a sky's cost) runs in float.
-    std::array<float, kSkyWavelengths> rayleigh_{}, mie_scattering_{}, mie_extinction_{}, ozone_{};
-    std::array<Rgb, kSkyWavelengths> weight_{};  // extraterrestrial sun x colour matching -> linear RGB
+    atmosphere::Coefficients coefficients_;
+    std::shared_ptr<const MultipleScattering> multiple_;  // null for single scattering
+    std::array<Rgb, atmosphere::kWavelengths> weight_{};  // extraterrestrial sun x colour matching -> linear RGB
     std::vector<NodeRadiance> table_;            // elevation-major
     SunDisc sun_;
     Rgb sky_horizontal_{0.0f};

@@ -20,9 +20,10 @@ using Rgb = glm::vec3;
 // What `--sky` asks for. Grammar (parse_sky_options):
 //   clear[:turbidity=T,albedo=A]   Preetham et al.'s analytic clear sky (preetham_sky.hpp;
 //                                  turbidity 1.7..10, ground albedo 0..1)
-//   physical[:turbidity=T,albedo=A]
-//                                  clear sky by single scattering in a spherical atmosphere
-//                                  (physical_sky.hpp), same parameters
+//   physical[:turbidity=T,albedo=A,scattering=multiple|single]
+//                                  clear sky scattered in a spherical atmosphere
+//                                  (physical_sky.hpp), same parameters; light scattered once
+//                                  only with scattering=single (as Blender's Nishita sky)
 //   overcast[:brightness=B]        CIE standard overcast sky, zenith 3x the horizon
 //   PATH.exr | PATH.hdr | hdr:PATH[,rotation=DEG,scale=S]
 //                                  equirectangular HDR map (read through OpenImageIO)
@@ -32,6 +33,7 @@ struct SkyOptions {
     double turbidity = 3.0;
     double ground_albedo = 0.2;
     double overcast_brightness = 1.0;  // scales the overcast zenith luminance
+    bool multiple_scattering = true;   // physical: light scattered more than once as well
     std::string hdr_path;
     double hdr_rotation_deg = 0.0;  // azimuth (clockwise from north) of the map's centre column
     double hdr_scale = 1.0;

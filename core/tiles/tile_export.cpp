@@ -39,6 +39,23 @@ std::string number(double v) {
     return buf;
 }
 
+// The sky as the job's description holds it: kind and turbidity as always, then only what
+// differs from the defaults, so that older jobs describe themselves as before.
+std::string sky_fingerprint(const light::SkyOptions& sky) {
+    const light::SkyOptions defaults;
+    std::string out = std::to_string(int(sky.kind)) + "_" + number(sky.turbidity);
+    if (sky.ground_albedo != defaults.ground_albedo) out += "_albedo" + number(sky.ground_albedo);
+    if (sky.kind == light::SkyOptions::Kind::physical && !sky.multiple_scattering) out += "_single";
+    if (sky.kind == light::SkyOptions::Kind::overcast && sky.overcast_brightness != defaults.overcast_brightness)
+        out += "_brightness" + number(sky.overcast_brightness);
+    if (sky.kind == light::SkyOptions::Kind::hdr) {
+        std::string path = sky.hdr_path;
+        std::replace_if(path.begin(), path.end(), [](char c) { return c == '"' || c == '\\' || c < ' '; }, '_');
+        out += "_" + path + "_" + number(sky.hdr_rotation_deg) + "_" + number(sky.hdr_scale);
+    }
+    return out;
+}
+
 }  // namespace
 
 void check_tile_job(const TileJob& job) {
@@ -105,7 +122,7 @@ std::string describe_job(const TileJob& job) {
            ",\"directions\":" + std::to_string(s.directions) + ",\"block\":" + std::to_string(s.block_texels) +
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
-           "\"" + ",\"sky\":\"" + std::to_string(int(s.sky.kind)) + "_" + number(s.sky.turbidity) + "\"" + contrast + bias +
+           "\"" + ",\"sky\":\"" + sky_fingerprint(s.sky) + "\"" + contrast + bias +
            by_zoom + max_error + dem + colors + insolation + light + bounce + "}\n";
 }
 

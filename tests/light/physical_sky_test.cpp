@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/light/atmosphere.hpp"
 #include "core/light/physical_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_color.hpp"
@@ -57,7 +59,7 @@ TEST(PhysicalSky, AgreesWithBlendersNishitaSkyInColourAndLuminance) {
     double worst_xy = 0.0, worst_xy_near_sun = 0.0, sum_log2 = 0.0;
     int n = 0;
     for (double sun_el : {0.0, 3.0, 10.0, 20.0, 45.0, 70.0}) {
-        const PhysicalSky sky(kBlenderDefaultDust, 0.2, direction(sun_el, 0.0));
+        const PhysicalSky sky(kBlenderDefaultDust, 0.2, direction(sun_el, 0.0), Scattering::single);
         for (const NishitaSample& r : ref) {
             // Within a few degrees of the horizon Blender's dome is 30-50% darker and redder than
             // this model's integral, which is converged there (400 steps give the same): left
@@ -82,6 +84,96 @@ TEST(PhysicalSky, AgreesWithBlendersNishitaSkyInColourAndLuminance) {
     EXPECT_LT(worst_xy, 0.02);
     EXPECT_LT(worst_xy_near_sun, 0.02);
     EXPECT_LT(rms_log, std::log(1.12));
+}
+
+struct PathTracedSample {
+    int wavelength_index;
+    double albedo, sun_elevation, view_elevation, azimuth_from_sun, single, total, stderr_;
+};
+
+std::vector<PathTracedSample> read_path_traced_reference() {
+    std::ifstream in(std::string(TS_SOURCE_DIR) + "/tests/light/reference/sky_path_traced.csv");
+    std::vector<PathTracedSample> out;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#' || line[0] == 'w') continue;
+        std::istringstream s(line);
+        PathTracedSample p{};
+        char comma = 0;
+        s >> p.wavelength_index >> comma >> p.albedo >> comma >> p.sun_elevation >> comma >> p.view_elevation >> comma >>
+            p.azimuth_from_sun >> comma >> p.single >> comma >> p.total >> comma >> p.stderr_;
+        out.push_back(p);
+    }
+    return out;
+}
+
+// One wavelength's coefficients at every sample: the sky's luminance over the solar constant's
+// is then that wavelength's radiance per unit extraterrestrial irradiance, as the path tracer's.
+atmosphere::Coefficients monochromatic(int wavelength_index) {
+    const atmosphere::Coefficients c = atmosphere::coefficients_for({angstrom_beta(3.0), 1.3});
+    const std::size_t k = std::size_t(wavelength_index);
+    atmosphere::Coefficients m;
+    m.rayleigh.fill(c.rayleigh[k]);
+    m.mie_scattering.fill(c.mie_scattering[k]);
+    m.mie_extinction.fill(c.mie_extinction[k]);
+    m.ozone.fill(c.ozone[k]);
+    return m;
+}
+
+// Light scattered any number of times against a Monte Carlo path tracer of the same atmosphere
+// (tests/light/sky_path_tracer.cpp, stored by scripts/sky_path_traced_reference.sh): 450 and
+// 550 nm, ground albedo 0.2 and 0.8, sun 2-60 degrees, the dome in five directions and its
+// irradiance on level ground. The path tracer's own first order checks this sky's single
+// scattering; the whole against the whole checks Hillaire's isotropic approximation.
+TEST(PhysicalSky, AgreesWithAPathTracerWhenLightScattersManyTimes) {
+    const std::vector<PathTracedSample> ref = read_path_traced_reference();
+    ASSERT_EQ(ref.size(), 96u);
+    double sum_log2_multiple = 0.0, sum_log2_single = 0.0, sum_log2_first = 0.0, worst_multiple = 0.0,
+           worst_irradiance = 0.0;
+    std::unique_ptr<PhysicalSky> multiple_sky, single_sky;  // made again when the scene changes
+    const PathTracedSample* scene = nullptr;
+    for (const PathTracedSample& r : ref) {
+        if (!scene || scene->wavelength_index != r.wavelength_index || scene->albedo != r.albedo ||
+            scene->sun_elevation != r.sun_elevation) {
+            const glm::dvec3 sun = direction(r.sun_elevation, 0.0);
+            multiple_sky = std::make_unique<PhysicalSky>(monochromatic(r.wavelength_index), r.albedo, sun, Scattering::multiple);
+            single_sky = std::make_unique<PhysicalSky>(monochromatic(r.wavelength_index), r.albedo, sun, Scattering::single);
+            scene = &r;
+        }
+        const PhysicalSky& multiple = *multiple_sky;
+        const PhysicalSky& single = *single_sky;
+        const bool irradiance = r.view_elevation < -45.0;
+        const auto value = [&](const PhysicalSky& sky) {
+            const Rgb l = irradiance ? sky.sky_horizontal_irradiance()
+                                     : sky.sky_radiance(direction(r.view_elevation, r.azimuth_from_sun));
+            return luminance(l) / kSolarIlluminanceKlx;
+        };
+        const double m = value(multiple), s = value(single);
+        const double err = std::log(m / r.total);
+        if (std::abs(err) > std::log(1.2)) std::printf("%3.0f nm albedo %.1f sun %4.1f view %5.1f/%5.1f: path traced %.4e (+-%.1f%%) multiple %+6.1f%% "
+                    "single %+6.1f%% (first order %+6.1f%%)\n",
+                    atmosphere::wavelength_nm(r.wavelength_index), r.albedo, r.sun_elevation, r.view_elevation,
+                    r.azimuth_from_sun, r.total, 100.0 * r.stderr_ / r.total, 100.0 * (m / r.total - 1.0),
+                    100.0 * (s / r.total - 1.0), 100.0 * (s / r.single - 1.0));
+        sum_log2_multiple += err * err;
+        sum_log2_single += std::pow(std::log(s / r.total), 2.0);
+        sum_log2_first += std::pow(std::log(s / r.single), 2.0);
+        worst_multiple = std::max(worst_multiple, std::abs(err));
+        if (irradiance) worst_irradiance = std::max(worst_irradiance, std::abs(err));
+    }
+    const auto rms = [&](double sum) { return std::exp(std::sqrt(sum / double(ref.size()))) - 1.0; };
+    std::printf("against the path tracer (%zu rows): multiple scattering RMS %.1f%% (worst %.1f%%, irradiance worst "
+                "%.1f%%); single scattering RMS %.1f%% against the whole, %.1f%% against the first order\n",
+                ref.size(), 100.0 * rms(sum_log2_multiple), 100.0 * (std::exp(worst_multiple) - 1.0),
+                100.0 * (std::exp(worst_irradiance) - 1.0), 100.0 * rms(sum_log2_single), 100.0 * rms(sum_log2_first));
+    // The path tracer's first order is this sky's single scattering (its noise is 0.3-1.3%).
+    EXPECT_LT(rms(sum_log2_first), 0.03);
+    // All orders: the isotropic approximation is off most a few degrees above the horizon at a
+    // low sun (+25-32% at 550 nm) and over snow under a high sun (+12-30%); without it the
+    // dome is 3-20x too dark there (single scattering: RMS ~290%).
+    EXPECT_LT(rms(sum_log2_multiple), 0.13);
+    EXPECT_LT(std::exp(worst_multiple) - 1.0, 0.36);
+    EXPECT_LT(std::exp(worst_irradiance) - 1.0, 0.22);
 }
 
 TEST(PhysicalSky, TableMatchesItsOwnIntegral) {
@@ -168,10 +260,12 @@ TEST(PhysicalSky, GroundIsAlbedoTimesIrradianceOverPi) {
     const Rgb e = sky.sky_horizontal_irradiance() + sky.sun().irradiance * static_cast<float>(sun.z);
     const Rgb g = sky.radiance(glm::dvec3(0.3, 0.2, -0.9));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(g[c], 0.25 * e[c] / kPi, 1e-4 * e[c]);
-    // A clear sky's diffuse share of the light on level ground with the sun 30 degrees up: 15-35%.
+    // A clear sky's diffuse share of the light on level ground with the sun 30 degrees up: 15-40%
+    // (measured clear skies; 0.36 at turbidity 3, where the path tracer's irradiance at 450 and
+    // 550 nm is within 5% of this sky's).
     const double share = luminance(sky.sky_horizontal_irradiance()) / luminance(e);
     EXPECT_GT(share, 0.15);
-    EXPECT_LT(share, 0.35);
+    EXPECT_LT(share, 0.40);
 }
 
 }  // namespace

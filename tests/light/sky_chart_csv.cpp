@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     for (double e : {3.0, 20.0}) {
         const glm::dvec3 s = ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), radians(e));
         const PhysicalSky physical_t3(3.0, 0.2, s);
-        const PhysicalSky blender_dust(Aerosol{2.22e-5 * 1200.0, 0.0}, 0.2, s);
+        const PhysicalSky blender_dust(Aerosol{2.22e-5 * 1200.0, 0.0}, 0.2, s, Scattering::single);
         const PreethamSky fitted(3.0, 0.2, s);
         const Sky* models[] = {&physical_t3, &blender_dust, &fitted};
         const char* labels[] = {"physical T=3", "physical with Blender's dust", "Preetham T=3"};

@@ -19,7 +19,14 @@ TEST(SkyOptions, ClearAndOvercast) {
     o = parse_sky_options("physical:turbidity=4");
     EXPECT_EQ(o.kind, SkyOptions::Kind::physical);
     EXPECT_EQ(o.turbidity, 4.0);
+    EXPECT_TRUE(o.multiple_scattering);
+    EXPECT_NE(make_sky(o, {0, 0.5, 0.5})->describe().find("multiple scattering"), std::string::npos);
+    o = parse_sky_options("physical:scattering=Single,albedo=0.3");
+    EXPECT_FALSE(o.multiple_scattering);
+    EXPECT_EQ(o.ground_albedo, 0.3);
     EXPECT_NE(make_sky(o, {0, 0.5, 0.5})->describe().find("single scattering"), std::string::npos);
+    EXPECT_THROW(parse_sky_options("physical:scattering=double"), InputError);
+    EXPECT_THROW(parse_sky_options("clear:scattering=single"), InputError);
     EXPECT_NE(make_sky(parse_sky_options("clear"), {0, 0.5, 0.5})->describe().find("Preetham"), std::string::npos);
     o = parse_sky_options("overcast:brightness=2");
     EXPECT_EQ(o.kind, SkyOptions::Kind::overcast);

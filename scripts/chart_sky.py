@@ -66,7 +66,7 @@ def main():
     fig.savefig(os.path.join(out_dir, "sky_profile.png"))
 
     fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=100)
-    for name, style in (("clear T=3", "C0"), ("overcast", "C3")):
+    for name, style in (("clear T=3", "C0"), ("physical T=3", "C2"), ("overcast", "C3")):
         rows = [r for r in sh if r["sky"] == name]
         x = [float(r["signed_zenith_deg"]) for r in rows]
         ax.plot(x, [float(r["true_luminance"]) for r in rows], style, label=f"{name}: model")
@@ -82,7 +82,8 @@ def main():
     fig.savefig(os.path.join(out_dir, "sky_sh.png"))
     # Low sun: colour and luminance along the sun's vertical, models and Blender's Nishita sky.
     fig, axes = plt.subplots(2, 2, figsize=(9.6, 6.4), dpi=100, sharex=True)
-    styles = {"physical T=3": "C0-", "physical with Blender's dust": "C2-", "Preetham T=3": "C1--"}
+    styles = {"physical T=3": "C0-", "physical T=3 single scattering": "C0:",
+              "single scattering with Blender's dust": "C2-", "Preetham T=3": "C1--"}
     for col, e in enumerate((3.0, 20.0)):
         for name, style in styles.items():
             rows = [r for r in low if r["sky"] == name and float(r["sun_elevation_deg"]) == e]
@@ -91,7 +92,7 @@ def main():
             axes[1][col].plot(z, [float(r["luminance"]) for r in rows], style, lw=1.2, label=name)
         pts = [r for r in nishita if float(r["sun_elevation_deg"]) == e and float(r["rel_azimuth_deg"]) in (0.0, 180.0)]
         z = [(90.0 - float(r["view_elevation_deg"])) * (1 if float(r["rel_azimuth_deg"]) == 0.0 else -1) for r in pts]
-        axes[0][col].plot(z, [float(r["x"]) for r in pts], "k.", label="Blender Nishita (default dust)")
+        axes[0][col].plot(z, [float(r["x"]) for r in pts], "k.", label="Blender Nishita (default dust, single scattering)")
         axes[1][col].plot(z, [0.683 * float(r["Y"]) for r in pts], "k.", label="Blender Nishita (default dust)")
         axes[0][col].set_title(f"sun {e:g} deg up (at +{90 - e:g})", fontsize=10)
         axes[1][col].set_yscale("log")

@@ -151,10 +151,12 @@ glm::dvec3 PhysicalSky::view_direction(double elevation, double phi) const {
 // (the sun path's transmittance) scattered towards the observer once, plus the light scattered
 // there more than once (Psi), both dimmed on the way back (the view path's transmittance). The
 // single-scattering phase functions are the same at every step (the sun is at infinity), so
-// they are left out and applied per direction. With multiple scattering both paths are dimmed
-// by the delta-scaled atmosphere (MultipleScattering::medium()): the aerosol's forward peak
-// stays in the beam, as the path tracer's light does (without it the dome near the horizon
-// came out 25-45% too dark against tests/light/sky_path_tracer.cpp).
+// they are left out and applied per direction. With multiple scattering the view path is
+// dimmed by the delta-scaled atmosphere (MultipleScattering::medium()): light the aerosol
+// scatters forward along it stays in it, as the path tracer's does (without that the dome near
+// the horizon came out 25-45% too dark against tests/light/sky_path_tracer.cpp). The sun's path
+// keeps the whole extinction: scaled too, it kept the forward-scattered sunlight in the beam
+// and the exact phase's peak counted it again, an aureole 30-150% too bright.
 PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
     const double mu = std::clamp(view.z, 0.0, 1.0);
     const double d = atmosphere::distance_to_top(kObserverRadiusM, mu);
@@ -192,11 +194,11 @@ PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
             }
         }
         if (SunPathTable::blocked(to_sun)) continue;  // in the Earth's shadow
-        const float path_r = float(here.rayleigh + to_sun.rayleigh);
-        const float path_m = float(here.mie + to_sun.mie);
-        const float path_o = float(here.ozone + to_sun.ozone);
+        const float view_r = float(here.rayleigh), view_m = float(here.mie), view_o = float(here.ozone);
+        const float sun_r = float(to_sun.rayleigh), sun_m = float(to_sun.mie), sun_o = float(to_sun.ozone);
         for (std::size_t w = 0; w < kWavelengths; ++w) {
-            const float transmittance = std::exp(-(tc.rayleigh[w] * path_r + tc.mie_extinction[w] * path_m + tc.ozone[w] * path_o));
+            const float transmittance = std::exp(-(tc.rayleigh[w] * view_r + tc.mie_extinction[w] * view_m + tc.ozone[w] * view_o +
+                                                   c.rayleigh[w] * sun_r + c.mie_extinction[w] * sun_m + c.ozone[w] * sun_o));
             sum_r[w] += transmittance * w_r;
             sum_m[w] += transmittance * w_m;
         }

@@ -122,12 +122,12 @@ atmosphere::Coefficients monochromatic(int wavelength_index) {
 
 // Light scattered any number of times against a Monte Carlo path tracer of the same atmosphere
 // (tests/light/sky_path_tracer.cpp, stored by scripts/sky_path_traced_reference.sh): 450 and
-// 550 nm, ground albedo 0.2 and 0.8, sun 2-60 degrees, the dome in five directions and its
-// irradiance on level ground. The path tracer's own first order checks this sky's single
+// 550 nm, ground albedo 0.2 and 0.8, sun 2-60 degrees, the dome in seven directions (the
+// aureole among them) and its irradiance on level ground. The path tracer's own first order checks this sky's single
 // scattering; the whole against the whole checks Hillaire's isotropic approximation.
 TEST(PhysicalSky, AgreesWithAPathTracerWhenLightScattersManyTimes) {
     const std::vector<PathTracedSample> ref = read_path_traced_reference();
-    ASSERT_EQ(ref.size(), 96u);
+    ASSERT_EQ(ref.size(), 128u);
     double sum_log2_multiple = 0.0, sum_log2_single = 0.0, sum_log2_first = 0.0, worst_multiple = 0.0,
            worst_irradiance = 0.0;
     std::unique_ptr<PhysicalSky> multiple_sky, single_sky;  // made again when the scene changes
@@ -168,12 +168,12 @@ TEST(PhysicalSky, AgreesWithAPathTracerWhenLightScattersManyTimes) {
                 100.0 * (std::exp(worst_irradiance) - 1.0), 100.0 * rms(sum_log2_single), 100.0 * rms(sum_log2_first));
     // The path tracer's first order is this sky's single scattering (its noise is 0.3-1.3%).
     EXPECT_LT(rms(sum_log2_first), 0.03);
-    // All orders: the isotropic approximation is off most a few degrees above the horizon at a
-    // low sun (+25-32% at 550 nm) and over snow under a high sun (+12-30%); without it the
-    // dome is 3-20x too dark there (single scattering: RMS ~290%).
-    EXPECT_LT(rms(sum_log2_multiple), 0.13);
-    EXPECT_LT(std::exp(worst_multiple) - 1.0, 0.36);
-    EXPECT_LT(std::exp(worst_irradiance) - 1.0, 0.22);
+    // All orders: off most beside a setting sun (+27-37% 5 degrees from it), a few degrees up
+    // at a low sun (+25-32% at 550 nm) and over snow under a high sun (+20-30%); without them
+    // the dome is 3-20x too dark there (single scattering: RMS ~230%).
+    EXPECT_LT(rms(sum_log2_multiple), 0.12);
+    EXPECT_LT(std::exp(worst_multiple) - 1.0, 0.40);
+    EXPECT_LT(std::exp(worst_irradiance) - 1.0, 0.20);
 }
 
 TEST(PhysicalSky, TableMatchesItsOwnIntegral) {

@@ -4,9 +4,10 @@
 // towards the sun) for several turbidities of the clear sky (Preetham), the physical sky at T = 3
 // and the overcast sky, sun 30 degrees up.
 // sky_low_sun: CIE xy and luminance along the sun's vertical with the sun 3 and 20 degrees up,
-// for the physical sky (T = 3, and with Blender's default dust), Preetham's (T = 3).
-// sky_sh: the same profile for the clear (T = 3) and overcast skies beside their order-4 SH
-// reconstruction.
+// for the physical sky (T = 3, all orders and single scattering; single scattering with
+// Blender's default dust), Preetham's (T = 3).
+// sky_sh: the same profile for the clear (Preetham, T = 3), physical (T = 3) and overcast skies
+// beside their order-4 SH reconstruction.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -70,9 +71,9 @@ int main(int argc, char** argv) {
     std::ofstream shcsv(dir / "sky_sh.csv");
     shcsv << "sky,signed_zenith_deg,true_luminance,sh_luminance\n";
     const PreethamSky clear(3.0, 0.2, sun);
-    const Sky* skies[] = {&clear, &overcast};
-    const char* names[] = {"clear T=3", "overcast"};
-    for (int k = 0; k < 2; ++k) {
+    const Sky* skies[] = {&clear, &physical, &overcast};
+    const char* names[] = {"clear T=3", "physical T=3", "overcast"};
+    for (int k = 0; k < 3; ++k) {
         const SkySh sh = project_sky_sh(*skies[k]);
         // The whole circle: the vertical plane continues below the horizon (the ground).
         for (double a = -179.5; a <= 179.5; a += 1.0) {
@@ -89,11 +90,13 @@ int main(int argc, char** argv) {
     for (double e : {3.0, 20.0}) {
         const glm::dvec3 s = ts::geo::enu_direction(ts::geo::azimuth_cw_from_north_to_phi(kSunAzimuth), radians(e));
         const PhysicalSky physical_t3(3.0, 0.2, s);
+        const PhysicalSky single_t3(3.0, 0.2, s, Scattering::single);
         const PhysicalSky blender_dust(Aerosol{2.22e-5 * 1200.0, 0.0}, 0.2, s, Scattering::single);
         const PreethamSky fitted(3.0, 0.2, s);
-        const Sky* models[] = {&physical_t3, &blender_dust, &fitted};
-        const char* labels[] = {"physical T=3", "physical with Blender's dust", "Preetham T=3"};
-        for (int k = 0; k < 3; ++k) {
+        const Sky* models[] = {&physical_t3, &single_t3, &blender_dust, &fitted};
+        const char* labels[] = {"physical T=3", "physical T=3 single scattering", "single scattering with Blender's dust",
+                                "Preetham T=3"};
+        for (int k = 0; k < 4; ++k) {
             for (double z = -89.5; z <= 89.5; z += 0.5) {
                 const Rgb l = models[k]->radiance(vertical_dir(z));
                 const Chromaticity xy = chromaticity_of(l);

@@ -232,7 +232,10 @@ int main(int argc, char** argv) {
             std::printf("%g,%g,%g,%.6e,%.6e,%.3e\n", sun_el, view_el, az, e.single / n, mean, std::sqrt(var / n));
             std::fflush(stdout);
         };
-        for (const auto& [el, az] : {std::pair{90.0, 0.0}, {30.0, 90.0}, {5.0, 90.0}, {5.0, 180.0}, {15.0, 30.0}}) {
+        // The zenith, the dome at 90 degrees from the sun, low beside and opposite it, 30 and
+        // 5 and 10 degrees from it (the aureole) along its vertical.
+        for (const auto& [el, az] : {std::pair{90.0, 0.0}, {30.0, 90.0}, {5.0, 90.0}, {5.0, 180.0}, {15.0, 30.0},
+                                     {sun_el + 5.0, 0.0}, {sun_el + 10.0, 0.0}}) {
             Tracer tracer(m, albedo, sun, seed++);
             row(el, az, tracer.radiance(direction(el, az), paths), paths);
         }

@@ -45,6 +45,8 @@ struct RelightArgs {
     std::string format = "png";
     int write_queue = 2;  // frames that may wait for the writer threads (memory: 12 B/pixel each)
     int writer_threads = render::kDefaultWriterThreads;
+    // --exposure-boost: how many EV automatic exposure may brighten a frame beyond the highest sun's.
+    std::optional<double> exposure_boost_ev;
     NightArgs night;  // --night skip|include (app/options/night_option.hpp)
     bool overwrite = false;  // replace the series already in out_dir
     std::string shard;  // K/N
@@ -163,6 +165,8 @@ void run_relight(const RelightArgs& a) {
     plan.input("--times-file", a.times_file).input("--mesh-path", a.mesh_path).output_directory("--out", a.out_dir);
     plan.check();
     const Shard shard = shard_of_process(a.shard);
+    if (a.exposure_boost_ev && (!exposure.automatic || a.format == "exr"))
+        throw InputError("--exposure-boost: only with automatic exposure (not with --exposure EV or --format exr)");
     if (!shard.whole() && exposure.automatic && a.format != "exr")
         throw InputError("relight --shard: automatic exposure is averaged over neighbouring frames of the whole series; "
                          "give --exposure EV (or --format exr) so that shards match one run");
@@ -281,7 +285,9 @@ void run_relight(const RelightArgs& a) {
         place_mesh(frames[brightest]);
         scene->render(frames[brightest].sun, image);
         reference_ev = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
-        sequence.emplace(reference_ev);
+        render::SequenceExposureOptions sequence_options;
+        sequence_options.max_boost_ev = a.exposure_boost_ev.value_or(sequence_options.max_boost_ev);
+        sequence.emplace(reference_ev, sequence_options);
     }
     const Stopwatch t1;
     double render_s = 0;
@@ -338,9 +344,10 @@ void run_relight(const RelightArgs& a) {
     const double total_s = t1.seconds();
     if (per_frame_auto)
         std::printf("exposure: automatic per frame, averaged over up to %d frames each side within ~%.0f minutes: "
-                    "EV100 %.2f to %.2f (at most %.0f EV brighter than the highest sun's %.2f; --exposure EV fixes one)\n",
+                    "EV100 %.2f to %.2f (at most %g EV brighter than the highest sun's %.2f; --exposure EV fixes one)\n",
                     render::SequenceExposureOptions{}.half_window, render::SequenceExposureOptions{}.tau_s / 60.0,
-                    ev_min, ev_max, render::SequenceExposureOptions{}.max_boost_ev, reference_ev);
+                    ev_min, ev_max, a.exposure_boost_ev.value_or(render::SequenceExposureOptions{}.max_boost_ev),
+                    reference_ev);
     if (motion.moves > 0) {
         // The same recompute over the whole grid, once, in this run: what each frame would cost
         // without the footprint rectangles.
@@ -386,6 +393,11 @@ void add_relight_command(CLI::App& root) {
                     "Threads encoding and writing frames, each its own frame (frames may then land out of order)")
         ->capture_default_str()
         ->check(within(1, 64));
+    cmd->add_option("--exposure-boost", a->exposure_boost_ev,
+                    "With automatic exposure: how many EV a frame may be brightened beyond the highest sun's frame. "
+                    "Default 3: dawn readable and night dark under the default sky; a physical sky's twilight "
+                    "(--sky physical, 10-13 EV under noon) wants 8-12")
+        ->check(CLI::Range(0.0, 20.0));
     add_shard_option(*cmd, a->shard);
     cmd->add_option("--mesh-path", a->mesh_path,
                     "The first --mesh follows this flight path (CSV t_s,lon,lat,height_m,heading_deg,pitch_deg,roll_deg; "

@@ -113,6 +113,36 @@ TEST(RelightTimeLapse, AutoExposureFollowsTheDayWithoutFlicker) {
         EXPECT_LE(std::abs(evening[k].ev100 - evening[k - 1].ev100), 0.2) << evening[k].time;
 }
 
+// The physical sky's dawn and twilight are as dark as real ones (6 and 13 EV under noon), beyond
+// the default 3 EV of brightening: --exposure-boost widens it, and only where exposure is automatic.
+TEST(RelightTimeLapse, ExposureBoostLightsAPhysicalTwilight) {
+    const auto base = temp_dir("timelapse_boost");
+    const std::string day = " --sky physical" + kDay + " --night include";
+    const Result d = run(ts_cmd("relight " + quote(kDem) + kCrop + day + " --out " + quote((base / "default").string())));
+    ASSERT_EQ(d.exit_code, 0) << d.err;
+    const Result b = run(ts_cmd("relight " + quote(kDem) + kCrop + day + " --exposure-boost 10 --out " +
+                                quote((base / "boost").string())));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.out.find("at most 10 EV brighter"), std::string::npos) << b.out;
+    const std::vector<CsvRow> rows = read_times_csv(base / "boost" / "times.csv");
+    ASSERT_EQ(rows.size(), 10u);
+    // Frame 1: the sun 1 degree up; frame 9: 5 degrees down; frame 5: noon.
+    const double noon = mean_code(base / "boost" / rows[5].file);
+    EXPECT_GT(mean_code(base / "boost" / rows[1].file), 0.8 * noon);
+    EXPECT_LT(mean_code(base / "default" / rows[1].file), 0.5 * noon);
+    EXPECT_GT(mean_code(base / "boost" / rows[9].file), 10.0);  // a blue twilight, not black
+    EXPECT_LT(mean_code(base / "default" / rows[9].file), 2.0);
+    double highest = rows[0].ev100;
+    for (const CsvRow& row : rows) highest = std::max(highest, row.ev100);
+    for (const CsvRow& row : rows) EXPECT_GE(row.ev100, highest - 10.0 - 0.01) << row.file;
+
+    const Result fixed = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --exposure 14 --exposure-boost 5 --out " +
+                                    quote((base / "fixed").string())));
+    EXPECT_NE(fixed.exit_code, 0);
+    EXPECT_NE(fixed.err.find("--exposure-boost: only with automatic exposure"), std::string::npos) << fixed.err;
+    EXPECT_FALSE(std::filesystem::exists(base / "fixed"));
+}
+
 TEST(RelightTimeLapse, NightInstantsAreLeftOutByDefault) {
     const auto dir = temp_dir("timelapse_skip") / "frames";
     const Result r = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --out " + quote(dir.string())));

@@ -411,7 +411,7 @@ class Generator:
             "shard": ["0/1", "1/3", "3/3", "0/0", "-1/2", "a/b", "1"],
             "device": ["cpu", "auto", "vulkan", "0", "7", "gpu"],
             "styles": ["hillshade", "hillshade,relief", "nope"],
-            "sky": ["clear", "overcast", "hdr"],
+            "sky": ["clear", "overcast", "hdr", "physical", "physical:scattering=single,turbidity=2"],
             "name": ["n", "", "x" * 200],
             "exaggeration": ["auto", "1", "0", "-1", "nan"],
         }

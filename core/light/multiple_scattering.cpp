@@ -15,14 +15,14 @@ using atmosphere::Densities;
 using atmosphere::Spectrum;
 using atmosphere::kWavelengths;
 
-constexpr double kStepSin = (1.0 - MultipleScattering::kLowestSin) / (MultipleScattering::kSunSines - 1);
+constexpr double kPsiSunSineStep = (1.0 - MultipleScattering::kLowestSin) / (MultipleScattering::kSunSines - 1);
 // Directions of the sphere integrals: midpoints in cos(zenith) by azimuth over the half sphere
 // on one side of the sun's vertical plane (the other half mirrors it).
 constexpr int kZeniths = 16;
 constexpr int kAzimuths = 4;
 constexpr int kSteps = 24;
 
-double altitude_of_row(int i) {
+double psi_altitude_of_row(int i) {
     const double v = double(i) / (MultipleScattering::kAltitudes - 1);
     return atmosphere::kHeightM * v * v;
 }
@@ -94,7 +94,7 @@ MultipleScattering::MultipleScattering(const Coefficients& atmosphere, double gr
     const double isotropic_phase = 1.0 / (4.0 * kPi);
     const double ground_brdf = ground_albedo / kPi;
     for (int a = 0; a < kAltitudes; ++a) {
-        const double r = atmosphere::kEarthRadiusM + std::min(altitude_of_row(a), atmosphere::kHeightM - 1.0);
+        const double r = atmosphere::kEarthRadiusM + std::min(psi_altitude_of_row(a), atmosphere::kHeightM - 1.0);
         std::vector<double> second(std::size_t(kSunSines) * kWavelengths, 0.0);  // L2 per sun and wavelength
         Spectrum transfer{};                                                        // f
         for (int iz = 0; iz < kZeniths; ++iz) {
@@ -149,7 +149,7 @@ MultipleScattering::MultipleScattering(const Coefficients& atmosphere, double gr
                     }
                 }
                 for (int js = 0; js < kSunSines; ++js) {
-                    const double ss = kLowestSin + js * kStepSin;
+                    const double ss = kLowestSin + js * kPsiSunSineStep;
                     const double sc = std::sqrt(std::max(0.0, 1.0 - ss * ss));
                     Spectrum sum{};
                     for (int k = 0; k < kSteps; ++k) {
@@ -202,7 +202,7 @@ std::shared_ptr<const MultipleScattering> MultipleScattering::shared(const atmos
 void MultipleScattering::at(double altitude_m, double sin_sun_elevation, Spectrum& out) const {
     const double h = altitude_m > 0.0 ? std::min(altitude_m, atmosphere::kHeightM) : 0.0;  // NaN -> 0
     const double a = std::sqrt(h / atmosphere::kHeightM) * (kAltitudes - 1);
-    const double e = (std::min(sin_sun_elevation, 1.0) - kLowestSin) / kStepSin;
+    const double e = (std::min(sin_sun_elevation, 1.0) - kLowestSin) / kPsiSunSineStep;
     if (!(e >= 0.0)) {
         out.fill(0.0f);
         return;

@@ -10,13 +10,16 @@
 //
 // where L1(h, w) is the light scattered once (isotropically) towards the point along w, plus the
 // sunlit ground (Lambert, the sky's ground albedo) where w meets it, and F1(h, w) the integral of
-// the scattering coefficient times the transmittance along w. Psi is radiance per unit of the
-// sun's extraterrestrial irradiance; a view ray adds sigma_s(p) T(p) Psi(h(p), s(p)) along its
-// length. Isotropy and one f per point are the approximation: Hillaire reports it within a few
-// percent of a path tracer for Earth-like atmospheres, as bright as 20 orders of Bruneton's.
+// the scattering coefficient times the transmittance along w, plus the ground's albedo times its
+// transmittance where w meets it (an isotropic unit radiance lights the ground with pi). Psi is
+// radiance per unit of the sun's extraterrestrial irradiance; a view ray adds
+// sigma_s(p) T(p) Psi(h(p), s(p)) along its length. The aerosol's forward peak is delta-scaled
+// (medium()). Isotropy and one f per point are the approximation: against a path tracer of the
+// same atmosphere the dome agrees with RMS 11% (physical_sky_test.cpp, docs/lighting.md),
+// where single scattering alone is off by 230%.
 //
 // The table depends on the aerosol and the ground's albedo, not on where the sun is, so the
-// skies of one atmosphere (a time-lapse's frames, a day's insolation) share it.
+// skies of one atmosphere (a time-lapse's frames, a tile set's sun elevations) share it.
 #include <memory>
 #include <vector>
 

@@ -27,6 +27,30 @@ double psi_altitude_of_row(int i) {
     return atmosphere::kHeightM * v * v;
 }
 
+// A bilinear look-up in a [row][column][wavelength] table over (sqrt of altitude up to the top
+// of the atmosphere, sine of the sun's elevation from `lowest_sin` in steps of `step`): the
+// four corners and their weights; false below the table (or for a NaN sine).
+struct SpectralCorners {
+    const float* p[4];
+    float w[4];
+};
+bool spectral_corners(const std::vector<float>& table, int rows, int columns, double lowest_sin, double step,
+                      double altitude_m, double sin_elevation, SpectralCorners& c) {
+    const double h = altitude_m > 0.0 ? std::min(altitude_m, atmosphere::kHeightM) : 0.0;  // NaN -> 0
+    const double a = std::sqrt(h / atmosphere::kHeightM) * (rows - 1);
+    const double e = (std::min(sin_elevation, 1.0) - lowest_sin) / step;
+    if (!(e >= 0.0)) return false;
+    const int i = std::min(int(a), rows - 2);
+    const int j = std::min(int(e), columns - 2);
+    const float fa = float(std::min(a - i, 1.0)), fe = float(std::min(e - j, 1.0));
+    c.p[0] = &table[(std::size_t(i) * columns + std::size_t(j)) * kWavelengths];
+    c.p[1] = c.p[0] + kWavelengths;
+    c.p[2] = c.p[0] + std::size_t(columns) * kWavelengths;
+    c.p[3] = c.p[2] + kWavelengths;
+    c.w[0] = (1 - fa) * (1 - fe), c.w[1] = (1 - fa) * fe, c.w[2] = fa * (1 - fe), c.w[3] = fa * fe;
+    return true;
+}
+
 // The sun's transmittance per wavelength over (sqrt of altitude, sine of elevation), so the
 // sphere integrals look it up instead of taking 17 exponentials for every sun and step.
 class SunTransmittance {
@@ -54,20 +78,10 @@ public:
     }
     // Adds weight x transmittance at (altitude, sine) to `sum`.
     void accumulate(double altitude_m, double sin_elevation, const float* weight, float* sum) const {
-        const double h = std::clamp(altitude_m, 0.0, atmosphere::kHeightM);
-        const double a = std::sqrt(h / atmosphere::kHeightM) * (kRows - 1);
-        const double e = (std::min(sin_elevation, 1.0) - kLowestSin) / kStep;
-        if (!(e >= 0.0)) return;
-        const int i = std::min(int(a), kRows - 2);
-        const int j = std::min(int(e), kColumns - 2);
-        const float fa = float(std::min(a - i, 1.0)), fe = float(std::min(e - j, 1.0));
-        const float* p00 = &t_[(std::size_t(i) * kColumns + std::size_t(j)) * kWavelengths];
-        const float* p01 = p00 + kWavelengths;
-        const float* p10 = p00 + std::size_t(kColumns) * kWavelengths;
-        const float* p11 = p10 + kWavelengths;
-        const float w00 = (1 - fa) * (1 - fe), w01 = (1 - fa) * fe, w10 = fa * (1 - fe), w11 = fa * fe;
+        SpectralCorners c;
+        if (!spectral_corners(t_, kRows, kColumns, kLowestSin, kStep, altitude_m, sin_elevation, c)) return;
         for (std::size_t w = 0; w < kWavelengths; ++w) {
-            sum[w] += weight[w] * (w00 * p00[w] + w01 * p01[w] + w10 * p10[w] + w11 * p11[w]);
+            sum[w] += weight[w] * (c.w[0] * c.p[0][w] + c.w[1] * c.p[1][w] + c.w[2] * c.p[2][w] + c.w[3] * c.p[3][w]);
         }
     }
 
@@ -200,22 +214,13 @@ std::shared_ptr<const MultipleScattering> MultipleScattering::shared(const atmos
 }
 
 void MultipleScattering::at(double altitude_m, double sin_sun_elevation, Spectrum& out) const {
-    const double h = altitude_m > 0.0 ? std::min(altitude_m, atmosphere::kHeightM) : 0.0;  // NaN -> 0
-    const double a = std::sqrt(h / atmosphere::kHeightM) * (kAltitudes - 1);
-    const double e = (std::min(sin_sun_elevation, 1.0) - kLowestSin) / kPsiSunSineStep;
-    if (!(e >= 0.0)) {
+    SpectralCorners c;
+    if (!spectral_corners(psi_, kAltitudes, kSunSines, kLowestSin, kPsiSunSineStep, altitude_m, sin_sun_elevation, c)) {
         out.fill(0.0f);
         return;
     }
-    const int i = std::min(int(a), kAltitudes - 2);
-    const int j = std::min(int(e), kSunSines - 2);
-    const float fa = float(std::min(a - i, 1.0)), fe = float(std::min(e - j, 1.0));
-    const float* p00 = &psi_[(std::size_t(i) * kSunSines + std::size_t(j)) * kWavelengths];
-    const float* p01 = p00 + kWavelengths;
-    const float* p10 = p00 + std::size_t(kSunSines) * kWavelengths;
-    const float* p11 = p10 + kWavelengths;
-    const float w00 = (1 - fa) * (1 - fe), w01 = (1 - fa) * fe, w10 = fa * (1 - fe), w11 = fa * fe;
-    for (std::size_t w = 0; w < kWavelengths; ++w) out[w] = w00 * p00[w] + w01 * p01[w] + w10 * p10[w] + w11 * p11[w];
+    for (std::size_t w = 0; w < kWavelengths; ++w)
+        out[w] = c.w[0] * c.p[0][w] + c.w[1] * c.p[1][w] + c.w[2] * c.p[2][w] + c.w[3] * c.p[3][w];
 }
 
 }  // namespace ts::light

@@ -77,6 +77,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "Perspective: aerial haze distance (transmittance exp(-d/haze)); 0 = none")
         ->capture_default_str()
         ->check(within(0.0, 1e6));
+    cmd.add_option("--shadow-detail", a.shadow_detail,
+                   "Perspective: sun shadows found per pixel by a ray towards the sun (pixel), or blended from "
+                   "the texels' (texel: a texel-wide, stepped edge; cheaper per frame)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"pixel", "texel"}));
     cmd.add_option("--exp-method", a.exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
@@ -167,6 +172,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.renderer.bounce = a.bounce;
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
+    o.perspective.pixel_sun_shadows = a.shadow_detail == "pixel";
     parse_mesh_specs(a.meshes);  // everything about --mesh that needs no DEM, checked now
     o.blocker_options = blocker_options(a.meshes);
     o.mesh_terrain_shadow = !a.meshes.no_mesh_terrain_shadow;

@@ -39,6 +39,7 @@ struct RenderArgs {
     bool no_curvature = false;
     DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)
     double haze_km = 250.0;
+    std::string shadow_detail = "pixel";  // --shadow-detail pixel|texel (PerspectiveOptions::pixel_sun_shadows)
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
     std::string terrain_transfer = "exact";  // exact | log-sh

@@ -55,6 +55,10 @@ public:
 
     // The sun's visible fraction per texel of the last frame (0 when the sun was down).
     const std::vector<float>& sun_visibility() const { return sun_vis_; }
+    // The same from the grid's own terrain alone (what the meshes' and outer shadows left out).
+    const std::vector<float>& terrain_sun_visibility() const {
+        return state_.has_other_sun_shadows() ? terrain_sun_vis_ : sun_vis_;
+    }
     const FrameTimings& last_timings() const { return timings_; }
 
 private:
@@ -63,7 +67,7 @@ private:
     light::DiffuseSkyProjector diffuse_sky_;  // the sky's SH for <T_d, L>, its fit kept per rule
     // Per-frame scratch, allocated once.
     std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
-    std::vector<float> sun_vis_;
+    std::vector<float> sun_vis_, terrain_sun_vis_;  // terrain_sun_vis_: only with other sun shadows
     light::SkyTable sky_table_{light::SkyGrid::whole_sphere(128, 64)};
     FrameTimings timings_;
 };

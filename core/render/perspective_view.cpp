@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/terrain/height_pyramid.hpp"
+#include "core/terrain/smooth_surface.hpp"
 #include "core/terrain/valid_bilinear.hpp"
 #include "core/util/angles.hpp"
 #include "core/util/error.hpp"
@@ -16,7 +16,6 @@
 namespace ts::render {
 namespace {
 
-constexpr float kNoSurface = -std::numeric_limits<float>::infinity();
 // sin(3 deg): where the air light and the land beyond the DEM are read from the sky.
 constexpr float kHorizonLift = 0.0523f;
 
@@ -29,109 +28,7 @@ double parse_number(std::string_view s, const std::string& what) {
     return v;
 }
 
-// Max pyramid over bilinear patches (see the header); level l is w_l x h_l.
-struct PatchPyramid {
-    std::vector<std::vector<float>> max;
-    std::vector<int> w, h;
-
-    explicit PatchPyramid(const terrain::HeightGrid& g, int threads) {
-        const int pw = std::max(1, g.width - 1), ph = std::max(1, g.height - 1);
-        std::vector<float> level0(std::size_t(pw) * ph, kNoSurface);
-        for (int j = 0; j < ph; ++j)
-            for (int i = 0; i < pw; ++i) {
-                float m = kNoSurface;
-                for (int dj = 0; dj < 2; ++dj)
-                    for (int di = 0; di < 2; ++di) {
-                        const int c = std::min(i + di, g.width - 1), r = std::min(j + dj, g.height - 1);
-                        const float z = g.at(c, r);
-                        if (!std::isnan(z)) m = std::max(m, z);
-                    }
-                level0[std::size_t(j) * pw + i] = m;
-            }
-        max.push_back(std::move(level0));
-        w.push_back(pw), h.push_back(ph);
-        while (w.back() > 1 || h.back() > 1) {
-            max.push_back(terrain::downsample_2x2(max.back().data(), w.back(), h.back(), true, threads));
-            w.push_back((w.back() + 1) / 2), h.push_back((h.back() + 1) / 2);
-        }
-    }
-};
-
-struct Ray {
-    double x0, y0;   // texel-centre coordinates at s = 0
-    double ux, uy;   // texel units per horizontal metre
-    double z0, kz, curv;  // height(s) = z0 + kz s + curv s^2 (curv: the terrain's drop, as a lift of the ray)
-    double height_at(double s) const { return z0 + s * (kz + s * curv); }
-    double min_height(double s0, double s1) const {
-        double m = std::min(height_at(s0), height_at(s1));
-        if (curv > 0) {
-            const double sv = -kz / (2 * curv);
-            if (sv > s0 && sv < s1) m = std::min(m, height_at(sv));
-        }
-        return m;
-    }
-};
-
-float surface(const terrain::HeightGrid& g, double x, double y) {
-    float fx = 0, fy = 0;
-    const int c = terrain::valid_bilinear_corner(std::clamp(x, 0.0, double(g.width - 1)), g.width, fx);
-    const int r = terrain::valid_bilinear_corner(std::clamp(y, 0.0, double(g.height - 1)), g.height, fy);
-    const int c1 = std::min(c + 1, g.width - 1), r1 = std::min(r + 1, g.height - 1);
-    return terrain::blend_valid_corners(g.at(c, r), g.at(c1, r), g.at(c, r1), g.at(c1, r1), fx, fy);
-}
-
-// The first s in [s_begin, s_end] where the ray is at or below the surface, or < 0.
-double march(const terrain::HeightGrid& g, const PatchPyramid& pyr, const Ray& ray, double s_begin, double s_end,
-             double nudge) {
-    const int top = int(pyr.max.size()) - 1;
-    int level = top;
-    double s = s_begin;
-    for (int guard = 0; guard < 1 << 22 && s <= s_end; ++guard) {
-        const double x = ray.x0 + s * ray.ux, y = ray.y0 + s * ray.uy;
-        const int size = 1 << level;
-        const int ci = std::clamp(int(std::floor(x / size)), 0, pyr.w[level] - 1);
-        const int cj = std::clamp(int(std::floor(y / size)), 0, pyr.h[level] - 1);
-        double exit = s_end;
-        if (ray.ux > 0) exit = std::min(exit, ((ci + 1.0) * size - ray.x0) / ray.ux);
-        if (ray.ux < 0) exit = std::min(exit, (double(ci) * size - ray.x0) / ray.ux);
-        if (ray.uy > 0) exit = std::min(exit, ((cj + 1.0) * size - ray.y0) / ray.uy);
-        if (ray.uy < 0) exit = std::min(exit, (double(cj) * size - ray.y0) / ray.uy);
-        exit = std::max(exit, s);
-        const float bound = pyr.max[level][std::size_t(cj) * pyr.w[level] + ci];
-        if (ray.min_height(s, exit) > double(bound)) {
-            s = exit + nudge;
-            level = std::min(level + 1, top);
-            continue;
-        }
-        if (level > 0) {
-            --level;
-            continue;
-        }
-        // A level-0 patch the ray may cross: bracket by sub-steps, refine by bisection.
-        constexpr int kSteps = 4;
-        auto below = [&](double t) {
-            const float h = surface(g, ray.x0 + t * ray.ux, ray.y0 + t * ray.uy);
-            return !std::isnan(h) && ray.height_at(t) <= double(h);
-        };
-        double prev = s;
-        if (below(s)) return s;
-        for (int k = 1; k <= kSteps; ++k) {
-            const double t = s + (exit - s) * k / kSteps;
-            if (below(t)) {
-                double lo = prev, hi = t;
-                for (int it = 0; it < 12; ++it) {
-                    const double mid = 0.5 * (lo + hi);
-                    (below(mid) ? hi : lo) = mid;
-                }
-                return hi;
-            }
-            prev = t;
-        }
-        s = exit + nudge;
-        level = std::min(1, top);
-    }
-    return -1.0;
-}
+float surface(const terrain::HeightGrid& g, double x, double y) { return terrain::smooth_surface(g, x, y).z; }
 
 }  // namespace
 
@@ -204,7 +101,7 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     below_terrain_ = inside && !std::isnan(ground) && cam_.z <= double(ground);
     ground_m_ = double(ground);
 
-    const PatchPyramid pyr(g, options_.threads);
+    march_ = std::make_unique<SurfaceMarch>(g, options_.threads);
     const double h = radians(camera.heading_deg), p = radians(camera.pitch_deg);
     const glm::dvec3 forward{std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
     const glm::dvec3 right{std::cos(h), -std::sin(h), 0.0};
@@ -216,6 +113,14 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     frame_ = {cam_, dx, dy, curv, forward, right, up, half, half * aspect};
     pixels_.assign(std::size_t(options_.width) * options_.height, Pixel{});
 
+    // The smooth surface's normal in ENU at texel-centre coordinates (rows run south: -y).
+    auto normal_at = [&](double x, double y) {
+        const terrain::SurfaceSample s = terrain::smooth_surface(g, x, y);
+        const int row = std::clamp(int(std::lround(y)), 0, g.height - 1);
+        const double gx = s.dz_dcol / g.dx_m[std::size_t(row)], gy = -s.dz_drow / g.dy_m[std::size_t(row)];
+        const double len = std::sqrt(gx * gx + gy * gy + 1.0);
+        return std::isfinite(len) ? glm::vec3(float(-gx / len), float(-gy / len), float(1.0 / len)) : glm::vec3(0, 0, 1);
+    };
     parallel_rows(options_.height, options_.threads, options_.width * 400LL, [&](int j0, int j1) {
         for (int j = j0; j < j1; ++j)
             for (int i = 0; i < options_.width; ++i) {
@@ -228,14 +133,17 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                 const double hl = std::hypot(d.x, d.y);
                 if (below_terrain_) {
                     px_out.x = float(cam_.x), px_out.y = float(cam_.y);
+                    px_out.normal = normal_at(cam_.x, cam_.y);
                     continue;
                 }
                 if (hl < 1e-9) {  // straight down (or up)
-                    if (d.z < 0 && inside)
+                    if (d.z < 0 && inside) {
                         px_out.x = float(cam_.x), px_out.y = float(cam_.y), px_out.distance = float(cam_.z - ground);
+                        px_out.normal = normal_at(cam_.x, cam_.y);
+                    }
                     continue;
                 }
-                Ray ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, curv};
+                const SurfaceRay ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, curv};
                 // Clip to the grid's box of patches.
                 double s0 = 0, s1 = std::numeric_limits<double>::infinity();
                 auto clip = [&](double origin, double u, double lo, double hi) {
@@ -250,9 +158,10 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                 clip(ray.x0, ray.ux, 0.0, g.width - 1.0);
                 clip(ray.y0, ray.uy, 0.0, g.height - 1.0);
                 if (!(s1 >= s0)) continue;
-                const double s = march(g, pyr, ray, s0, s1, nudge);
+                const double s = march_->first_hit(ray, s0, s1, nudge);
                 if (s < 0) continue;
                 px_out.x = float(ray.x0 + s * ray.ux), px_out.y = float(ray.y0 + s * ray.uy);
+                px_out.normal = normal_at(px_out.x, px_out.y);
                 const double distance = s / hl;
                 px_out.distance = float(distance);
                 px_out.transmittance =
@@ -292,12 +201,17 @@ std::size_t PerspectiveView::hit_count() const {
     return std::size_t(std::count_if(pixels_.begin(), pixels_.end(), [](const Pixel& p) { return p.x >= 0; }));
 }
 
-void PerspectiveView::compose(const glm::vec3* radiance, const light::SkyTable& sky, const glm::vec3& sun_dir,
-                              const glm::vec3& sun_radiance, double sun_cos_radius,
+void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun_term, const light::SkyTable& sky,
+                              const glm::vec3& sun_dir, const glm::vec3& sun_radiance, double sun_cos_radius,
                               std::vector<glm::vec3>& image) const {
     image.resize(pixels_.size());
     const terrain::HeightGrid& g = grid_;
-    parallel_rows(options_.height, options_.threads, options_.width * 30LL, [&](int j0, int j1) {
+    // Per-pixel sun shadows while the sun gives light.
+    const bool pixel_shadows = options_.pixel_sun_shadows && sun_term && sun_term->unshadowed_weight &&
+                               glm::dot(sun_term->irradiance_over_pi, glm::vec3(1.0f)) > 0.0f;
+    const double sun_radius = std::acos(std::clamp(sun_cos_radius, -1.0, 1.0));
+    const double curv = visibility::curvature_factor(options_.curvature);
+    parallel_rows(options_.height, options_.threads, options_.width * (pixel_shadows ? 400LL : 30LL), [&](int j0, int j1) {
         for (std::size_t k = std::size_t(j0) * options_.width; k < std::size_t(j1) * options_.width; ++k) {
             const Pixel& p = pixels_[k];
             if (p.x < 0) {
@@ -319,10 +233,29 @@ void PerspectiveView::compose(const glm::vec3* radiance, const light::SkyTable& 
             const int c0 = terrain::valid_bilinear_corner(p.x, g.width, fx);
             const int r0 = terrain::valid_bilinear_corner(p.y, g.height, fy);
             const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
-            auto at = [&](int c, int r) { return radiance[std::size_t(r) * g.width + c]; };
-            const glm::vec3 top = at(c0, r0) * (1 - fx) + at(c1, r0) * fx;
-            const glm::vec3 bottom = at(c0, r1) * (1 - fx) + at(c1, r1) * fx;
-            glm::vec3 c = top * (1 - fy) + bottom * fy;
+            const std::size_t corner[4] = {std::size_t(r0) * g.width + c0, std::size_t(r0) * g.width + c1,
+                                           std::size_t(r1) * g.width + c0, std::size_t(r1) * g.width + c1};
+            const float weight[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+            glm::vec3 c(0.0f);
+            if (sun_term) {
+                // The rest of each corner's radiance, bilinear, plus the sun's diffuse term with
+                // the bilinear weight and this pixel's normal.
+                const TexelSunTerm& st = *sun_term;
+                const glm::vec3 s = st.direction;
+                glm::vec3 w(0.0f);
+                for (int q = 0; q < 4; ++q) {
+                    const std::size_t t = corner[q];
+                    const float cos_t = std::max(0.0f, st.nx[t] * s.x + st.ny[t] * s.y + st.nz[t] * s.z);
+                    c += weight[q] * glm::max(radiance[t] - st.weight[t] * st.irradiance_over_pi * cos_t, glm::vec3(0.0f));
+                    w += weight[q] * (pixel_shadows ? st.unshadowed_weight[t] : st.weight[t]);
+                }
+                const float cos_p = std::max(0.0f, glm::dot(p.normal, s));
+                if (pixel_shadows && cos_p > 0)
+                    w *= float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
+                c += w * st.irradiance_over_pi * cos_p;
+            } else {
+                for (int q = 0; q < 4; ++q) c += weight[q] * radiance[corner[q]];
+            }
             if (p.transmittance < 1) {
                 // Air light: the sky just above the horizon in the ray's azimuth.
                 const float hl = std::hypot(p.dir.x, p.dir.y);

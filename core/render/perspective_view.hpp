@@ -1,16 +1,21 @@
 #pragma once
 // A camera view of the shaded terrain: each pixel's ray is marched over the height field once
 // (the camera does not move while the light changes), then every frame only looks up the
-// per-texel radiance at the hit (bilinear) or the sky where the ray misses.
+// per-texel radiance at the hit (bilinear) or the sky where the ray misses. The surface is the
+// smooth one through the texel centres (core/terrain/smooth_surface.hpp), and the sun's
+// diffuse term is shaded with each pixel's own normal there: a close view shows the relief at
+// the DEM's resolution instead of a bilinear blur of per-texel shading.
 //
 // Frame: the DEM's local metric grid around the camera (east/north metres from the per-row
 // spacing, heights above the DEM datum), with the Earth's curvature (and standard refraction,
 // R_eff = R / (1 - 0.13)) dropping terrain at horizontal distance s by s^2 / (2 R_eff).
-// Marching: a max pyramid over the bilinear patches between texel centres (level 0 = the
-// highest of each patch's 4 corners, then 2x2 maxima, terrain::downsample_2x2) lets a ray skip
-// any cell it passes above; inside a level-0 patch the crossing is bracketed by sub-steps
-// and refined by bisection.
+// Marching: surface_march.hpp (a max pyramid over the patches lets a ray skip any cell it
+// passes above; inside a patch the crossing is bracketed by sub-steps and refined by bisection).
+// Sun shadows (PerspectiveOptions::pixel_sun_shadows): each frame marches a ray from every hit
+// towards the sun over the same surface for the visible share of the disc, so a shadow's edge
+// falls where it does at the pixel, not where a bilinear blend of the texels' puts it.
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +27,7 @@
 
 #include "core/geo/georef.hpp"
 #include "core/light/sky_table.hpp"
+#include "core/render/surface_march.hpp"
 #include "core/terrain/height_grid.hpp"
 
 namespace ts::render {
@@ -42,12 +48,29 @@ std::string format_camera(const Camera& c);
 // down to the centre). docs/rendering.md shows it.
 Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef);
 
+// The diffuse sun term of a frame's per-texel radiance, kept apart so that each pixel shades it
+// with its own normal: per texel the weight w = albedo x the visible fraction of the sun's disc
+// (0 where the radiance has no such term: water), the term w E_sun/pi max(0, n.s) with the
+// texel's normal n (the one the radiance was shaded with). With `unshadowed_weight` (albedo x
+// what shadows other than the grid's own terrain leave of the disc: the meshes') a view with
+// pixel_sun_shadows finds the terrain's shadow per pixel instead of blending the texels'.
+struct TexelSunTerm {
+    const glm::vec3* weight = nullptr;  // per texel
+    const glm::vec3* unshadowed_weight = nullptr;  // per texel, may be null
+    const float *nx = nullptr, *ny = nullptr, *nz = nullptr;
+    glm::vec3 direction{0, 0, 1};        // towards the sun (ENU)
+    glm::vec3 irradiance_over_pi{0.0f};  // E_sun / pi
+};
+
 struct PerspectiveOptions {
     int width = 960, height = 540;
     // Aerial perspective: transmittance exp(-distance / haze_distance_m) towards the sky's
     // horizon radiance in the ray's azimuth; 0 turns haze off.
     double haze_distance_m = 250000.0;
     bool curvature = true;
+    // Sun shadows found per pixel by a ray towards the sun (the header) rather than blended
+    // from the texels' visible fractions, whose edges are a texel wide and stair-stepped.
+    bool pixel_sun_shadows = true;
     int threads = 0;
 };
 
@@ -68,9 +91,12 @@ public:
     double ground_height_m() const { return ground_m_; }
 
     // Composes a frame: per-texel radiance (width*height of the grid) sampled at the hits, the
-    // sky (and the sun's disc) elsewhere. `image` is resized to width*height once.
-    void compose(const glm::vec3* texel_radiance, const light::SkyTable& sky, const glm::vec3& sun_dir,
-                 const glm::vec3& sun_radiance, double sun_cos_radius, std::vector<glm::vec3>& image) const;
+    // sky (and the sun's disc) elsewhere. With `sun_term` the radiance's diffuse sun term is
+    // taken out at the texels and shaded with the pixel's normal instead. `image` is resized to
+    // width*height once.
+    void compose(const glm::vec3* texel_radiance, const TexelSunTerm* sun_term, const light::SkyTable& sky,
+                 const glm::vec3& sun_dir, const glm::vec3& sun_radiance, double sun_cos_radius,
+                 std::vector<glm::vec3>& image) const;
 
     // The camera's frame, for drawing other geometry into the same picture (mesh_view.hpp):
     // position in (texel-centre col, row, height m), the ENU metres per texel at its row, the
@@ -85,6 +111,8 @@ public:
     // Distance in metres along pixel k's ray to the terrain (infinity where it misses).
     float terrain_distance(std::size_t k) const { return pixels_[k].distance; }
     glm::vec3 ray_direction(std::size_t k) const { return pixels_[k].dir; }
+    // The smooth surface's unit normal (ENU) where pixel k's ray hits ((0, 0, 1) on a miss).
+    glm::vec3 surface_normal(std::size_t k) const { return pixels_[k].normal; }
     // A surface's radiance `c` at `distance` along a ray `dir` seen through the haze.
     glm::vec3 haze(const glm::vec3& c, const glm::vec3& dir, double distance, const light::SkyTable& sky) const;
 
@@ -94,6 +122,7 @@ private:
         float transmittance = 1;     // haze
         float distance = std::numeric_limits<float>::infinity();  // to the hit along the ray, metres
         glm::vec3 dir{0, 0, 1};      // ray direction (ENU)
+        glm::vec3 normal{0, 0, 1};   // the smooth surface's at the hit (ENU)
     };
     const terrain::HeightGrid& grid_;
     PerspectiveOptions options_;
@@ -102,6 +131,7 @@ private:
     double ground_m_ = 0;
     std::vector<Pixel> pixels_;
     Frame frame_;
+    std::unique_ptr<SurfaceMarch> march_;
 };
 
 }  // namespace ts::render

@@ -207,7 +207,38 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     }
     renderer_->render(*sky_, sun, texel_radiance_);
     stretch(texel_radiance_);
-    target_->compose(texel_radiance_, *sky_, image);
+    if (map) {
+        target_->compose(texel_radiance_, nullptr, *sky_, image);
+    } else {
+        // A camera shades the sun's diffuse term with each pixel's normal (perspective_view.hpp).
+        const MaterialRaster& m = state_->materials();
+        const NormalField& nf = state_->normals();
+        const std::vector<float>& vis = renderer_->sun_visibility();
+        const std::vector<float>& terrain_vis = renderer_->terrain_sun_visibility();
+        sun_weight_.resize(vis.size());
+        unshadowed_weight_.resize(vis.size());
+        for (std::size_t t = 0; t < vis.size(); ++t) {
+            const float v = vis[t] == vis[t] ? vis[t] : 0.0f;
+            const glm::vec3 albedo(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]);
+            sun_weight_[t] = albedo * v;
+            // What the meshes' shadows leave of the terrain's (all of it where the terrain
+            // hides the sun: there a pixel ray that sees it has no better guess).
+            const float vt = terrain_vis[t];
+            unshadowed_weight_[t] = vt > 0.01f ? albedo * std::min(v / vt, 1.0f) : albedo;
+        }
+        // Water's radiance is a mirror over a dark body: it keeps its sun terms.
+        for (std::uint32_t t : state_->water_index()) sun_weight_[t] = unshadowed_weight_[t] = glm::vec3(0.0f);
+        TexelSunTerm term;
+        term.weight = sun_weight_.data();
+        term.unshadowed_weight = unshadowed_weight_.data();
+        term.nx = nf.x.data(), term.ny = nf.y.data(), term.nz = nf.z.data();
+        term.direction = glm::vec3(sun_direction(sun));
+        // As the frame's: no sun term while the disc is below the horizon or dark.
+        const light::SunDisc disc = sky_->sun();
+        const bool sun_up = sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
+        term.irradiance_over_pi = sun_up ? disc.irradiance * float(1.0 / std::numbers::pi) : glm::vec3(0.0f);
+        target_->compose(texel_radiance_, &term, *sky_, image);
+    }
     if (mesh_view_) {
         const auto* camera = dynamic_cast<const CameraTarget*>(target_.get());
         const light::SkySh sky_sh = light::project_sky_sh(*sky_);

@@ -149,6 +149,8 @@ private:
     std::unique_ptr<FrameRenderer> renderer_;
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
+    // Perspective views, per texel: TexelSunTerm::weight and unshadowed_weight.
+    std::vector<glm::vec3> sun_weight_, unshadowed_weight_;
     ReliefContrastApplied last_relief_;
     std::vector<std::unique_ptr<MeshLighting>> mesh_lighting_;
     std::unique_ptr<MeshView> mesh_view_;

@@ -56,7 +56,8 @@ void GridTarget::mark_outside(LinearImage& image) const {
         if (outside_[k]) image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
 }
 
-void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky&, LinearImage& image) {
+void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm*, const light::Sky&,
+                         LinearImage& image) {
     const int w = width(), h = height();
     image.width = w, image.height = h;
     image.alpha.clear();
@@ -114,7 +115,8 @@ ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int t
     for (std::size_t n : covered_rows) covered_ += n;
 }
 
-void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky&, LinearImage& image) {
+void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm*, const light::Sky&,
+                           LinearImage& image) {
     const int w = width(), h = height();
     image.width = w, image.height = h;
     image.rgb.resize(std::size_t(w) * std::size_t(h));
@@ -144,12 +146,13 @@ ViewDirections CameraTarget::view_directions() const {
     return v;
 }
 
-void CameraTarget::compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) {
+void CameraTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term,
+                           const light::Sky& sky, LinearImage& image) {
     sky_table_.update(sky);
     const light::SunDisc disc = sky.sun();
     const double r = disc.angular_radius_rad;
     const glm::vec3 sun_radiance = disc.irradiance / float(std::numbers::pi * r * r);
-    view_.compose(texel_radiance.data(), sky_table_, glm::vec3(disc.direction), sun_radiance, std::cos(r), image.rgb);
+    view_.compose(texel_radiance.data(), sun_term, sky_table_, glm::vec3(disc.direction), sun_radiance, std::cos(r), image.rgb);
     image.width = view_.width(), image.height = view_.height();
     image.alpha.clear();
 }

@@ -42,8 +42,10 @@ public:
     virtual const geo::Georef* georef() const { return nullptr; }
     // True when the picture is the texel raster itself (the frame renders straight into it).
     virtual bool is_texel_grid() const { return false; }
-    // The picture from one frame's per-texel radiance and its sky.
-    virtual void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) = 0;
+    // The picture from one frame's per-texel radiance and its sky. `sun_term` (may be null) is
+    // the radiance's diffuse sun term for targets that shade it per pixel (a camera).
+    virtual void compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term,
+                         const light::Sky& sky, LinearImage& image) = 0;
 };
 
 class GridTarget final : public RenderTarget {
@@ -57,7 +59,8 @@ public:
     int height() const override { return georef_.height(); }
     const geo::Georef* georef() const override { return &georef_; }
     bool is_texel_grid() const override { return same_size_; }
-    void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) override;
+    void compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term, const light::Sky& sky,
+                 LinearImage& image) override;
     // On a picture that is the texel grid itself (rendered straight into it): outside texels
     // transparent and black. Nothing when there are none.
     void mark_outside(LinearImage& image) const;
@@ -76,7 +79,8 @@ public:
     int width() const override { return georef_.width(); }
     int height() const override { return georef_.height(); }
     const geo::Georef* georef() const override { return &georef_; }
-    void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) override;
+    void compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term, const light::Sky& sky,
+                 LinearImage& image) override;
     // Pixels that show the DEM.
     std::size_t covered_pixels() const { return covered_; }
 
@@ -96,7 +100,8 @@ public:
     int width() const override { return view_.width(); }
     int height() const override { return view_.height(); }
     ViewDirections view_directions() const override;
-    void compose(const std::vector<glm::vec3>& texel_radiance, const light::Sky& sky, LinearImage& image) override;
+    void compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term, const light::Sky& sky,
+                 LinearImage& image) override;
     const PerspectiveView& view() const { return view_; }
     const Camera& camera() const { return camera_; }
     // The sky as the last compose() tabulated it (the haze over meshes drawn into the picture).

@@ -330,10 +330,12 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
     return state;
 }
 
-void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out) {
+void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out,
+                                  std::vector<float>* terrain_only) {
     out.resize(texels_);
     if (!sun_up) {
         std::fill(out.begin(), out.end(), 0.0f);
+        if (terrain_only) *terrain_only = out;
         return;
     }
     if (options_.sun_method == visibility::SunMethod::sweep) {
@@ -350,6 +352,7 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
         so.threads = options_.threads;
         out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
     }
+    if (terrain_only) *terrain_only = out;
     if (!blockers_.empty()) {
         if (!blocker_sun_)
             blocker_sun_ = std::make_unique<visibility::BlockerSunShadow>(

@@ -160,9 +160,13 @@ public:
     const std::vector<float>& kept_diffuse_transfer() const { return kept_transfer_; }
 
     // The sun's visible fraction per texel (0 everywhere when `sun_up` is false) into `out`
-    // (texels() entries): the terrain's, times the mesh blockers' in their footprints. The
-    // sweep is built on the first call and kept.
-    void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out);
+    // (texels() entries): the terrain's, times the mesh blockers' in their footprints (and an
+    // outer shadow's); `terrain_only`, when given, gets the terrain's alone. The sweep is built
+    // on the first call and kept.
+    void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out,
+                        std::vector<float>* terrain_only = nullptr);
+    // Whether anything but the grid's own terrain shades the sun (meshes, an outer shadow).
+    bool has_other_sun_shadows() const { return !blockers_.empty() || bool(options_.outer_sun_shadow); }
 
     // Mesh blockers: the state's copy of them, and the bound on the sky term of the texels
     // they change (null without blockers). FrameRenderer applies it after the diffuse pass.

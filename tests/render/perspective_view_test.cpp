@@ -57,7 +57,7 @@ TEST(PerspectiveView, HitsLandWhereTheFlatPlaneIs) {
         for (int c = 0; c < s.w; ++c) rad[std::size_t(r * s.w + c)] = glm::vec3(float(r), float(c), 0);
     light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
     std::vector<glm::vec3> img;
-    v.compose(rad.data(), sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
+    v.compose(rad.data(), nullptr, sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
     // The camera sits at texel-centre (31.5, 31.5); the hit is 10 texels north. Tolerance:
     // the bisection's resolution (1/16 of a sub-step) and float positions.
     EXPECT_NEAR(img[4].x, 21.5f, 0.05f);
@@ -81,9 +81,95 @@ TEST(PerspectiveView, ARidgeHidesWhatIsBehindIt) {
         for (int c = 0; c < s.w; ++c) rad[std::size_t(r * s.w + c)] = glm::vec3(float(r), 0, 0);
     light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
     std::vector<glm::vec3> img;
-    v.compose(rad.data(), sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
+    v.compose(rad.data(), nullptr, sky, {0, 0, 1}, {0, 0, 0}, 1.0, img);
     EXPECT_GT(img[0].x, 19.0f);  // on the ridge's south face (rows 20..21), not beyond it
     EXPECT_LT(img[0].x, 21.5f);
+}
+
+// A frame's per-texel radiance as FrameRenderer makes it: a sky part plus the sun's diffuse term
+// w E/pi max(0, n.s) with the texel's normal.
+struct SunFrame {
+    std::vector<glm::vec3> radiance, weight, unshadowed;
+    std::vector<float> nx, ny, nz;
+    TexelSunTerm term;
+    SunFrame(const terrain::HeightGrid& g, const glm::vec3& sun, const std::vector<float>& texel_visibility) {
+        const std::size_t n = std::size_t(g.width) * g.height;
+        nx.assign(n, 0.0f), ny.assign(n, 0.0f), nz.assign(n, 1.0f);
+        const glm::vec3 sky_part(0.1f), albedo(0.5f);
+        for (std::size_t t = 0; t < n; ++t) {
+            weight.push_back(albedo * texel_visibility[t]);
+            unshadowed.push_back(albedo);
+            radiance.push_back(sky_part + weight[t] * std::max(0.0f, sun.z));
+        }
+        term.weight = weight.data();
+        term.unshadowed_weight = unshadowed.data();
+        term.nx = nx.data(), term.ny = ny.data(), term.nz = nz.data();
+        term.direction = sun;
+        term.irradiance_over_pi = glm::vec3(1.0f);
+    }
+};
+
+TEST(PerspectiveView, AFlatPlaneLooksTheSameShadedPerPixel) {
+    Scene s;
+    PerspectiveOptions o;
+    o.width = 16, o.height = 9;
+    o.curvature = false;
+    o.haze_distance_m = 0;
+    const PerspectiveView v(s.grid, s.georef, s.above_centre(300, -60), o);
+    const glm::vec3 sun = glm::normalize(glm::vec3(0.3f, -0.5f, 0.6f));
+    const SunFrame frame(s.grid, sun, std::vector<float>(std::size_t(s.w * s.h), 1.0f));
+    light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
+    std::vector<glm::vec3> per_texel, per_pixel;
+    v.compose(frame.radiance.data(), nullptr, sky, sun, {0, 0, 0}, 0.99999, per_texel);
+    v.compose(frame.radiance.data(), &frame.term, sky, sun, {0, 0, 0}, 0.99999, per_pixel);
+    ASSERT_EQ(v.hit_count(), per_pixel.size());
+    for (std::size_t k = 0; k < per_pixel.size(); ++k) {
+        EXPECT_NEAR(per_pixel[k].x, per_texel[k].x, 1e-5f);
+        EXPECT_GT(per_pixel[k].x, 0.1f);
+    }
+}
+
+TEST(PerspectiveView, PixelShadowsAreSharpWhereBlendedTexelsAreNot) {
+    // A plateau 50 m high west of column 30 shades the plain east of it under a sun in the
+    // west 45 degrees up (to column ~35); the texels' visible fractions, blended, make a ramp
+    // a texel wide, the pixel rays a step. Seen from above, count the pixels in between.
+    Scene s;
+    for (int r = 0; r < s.h; ++r)
+        for (int c = 0; c <= 30; ++c) s.z[std::size_t(r * s.w + c)] = 150.0f;
+    s.grid = terrain::HeightGrid::uniform(s.w, s.h, s.z, 10.0, 10.0);
+    PerspectiveOptions o;
+    o.width = 96, o.height = 64;
+    o.curvature = false;
+    o.haze_distance_m = 0;
+    Camera c = s.above_centre(500, -90);
+    c.lon_deg += 0.0004;  // ~3 texels east: the camera over the shadow's edge
+    c.fov_deg = 20;
+    const PerspectiveView v(s.grid, s.georef, c, o);
+    const float e = std::sqrt(0.5f);
+    const glm::vec3 sun(-e, 0, e);
+    // The texels' visible fractions: shaded up to column 35, lit from 36 (a hard texel step).
+    std::vector<float> vis(std::size_t(s.w * s.h), 1.0f);
+    for (int r = 0; r < s.h; ++r)
+        for (int col = 31; col <= 35; ++col) vis[std::size_t(r * s.w + col)] = 0.0f;
+    const SunFrame frame(s.grid, sun, vis);
+    light::SkyTable sky(light::SkyGrid::whole_sphere(8, 4));
+    auto in_between = [&](bool per_pixel) {
+        PerspectiveOptions po = o;
+        po.pixel_sun_shadows = per_pixel;
+        const PerspectiveView view(s.grid, s.georef, c, po);
+        std::vector<glm::vec3> img;
+        view.compose(frame.radiance.data(), &frame.term, sky, sun, {0, 0, 0}, std::cos(0.004654), img);
+        int count = 0, dark = 0;
+        for (const glm::vec3& p : img) {
+            count += p.x > 0.12f && p.x < 0.43f;  // between shaded (0.1) and lit (0.1 + 0.5 e)
+            dark += p.x <= 0.12f;
+        }
+        EXPECT_GT(dark, 100) << per_pixel;
+        return count;
+    };
+    const int blended = in_between(false), sharp = in_between(true);
+    EXPECT_GT(blended, 3 * sharp);
+    EXPECT_LT(sharp, 2 * o.height);  // at most a pixel or two across the edge, per row
 }
 
 TEST(PerspectiveView, CameraParsing) {

@@ -211,6 +211,23 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                                glm::dot(sun_term->irradiance_over_pi, glm::vec3(1.0f)) > 0.0f;
     const double sun_radius = std::acos(std::clamp(sun_cos_radius, -1.0, 1.0));
     const double curv = visibility::curvature_factor(options_.curvature);
+    // 1 or 0 where the terrain leaves the sun wholly visible or wholly hidden at the 4 corners
+    // of patch (c0, r0), whose surface the pixel is on; -1 where a shadow's edge or penumbra
+    // crosses it (the pixel then marches its ray). A shadow that slips between four texel
+    // centres is narrower than a texel: below what the DEM resolves.
+    auto uniform_visibility = [&](int c0, int r0) {
+        const float* tv = sun_term->terrain_visibility;
+        if (!tv) return -1.0f;
+        bool lit = false, dark = false;
+        for (int r = r0; r <= std::min(r0 + 1, g.height - 1); ++r)
+            for (int c = c0; c <= std::min(c0 + 1, g.width - 1); ++c) {
+                const float v = tv[std::size_t(r) * g.width + c];
+                if (v >= 0.999f) lit = true;
+                else if (v <= 0.001f) dark = true;
+                else return -1.0f;  // penumbra, or NaN
+            }
+        return lit == dark ? -1.0f : lit ? 1.0f : 0.0f;
+    };
     parallel_rows(options_.height, options_.threads, options_.width * (pixel_shadows ? 400LL : 30LL), [&](int j0, int j1) {
         for (std::size_t k = std::size_t(j0) * options_.width; k < std::size_t(j1) * options_.width; ++k) {
             const Pixel& p = pixels_[k];
@@ -250,8 +267,11 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                     w += weight[q] * (pixel_shadows ? st.unshadowed_weight[t] : st.weight[t]);
                 }
                 const float cos_p = std::max(0.0f, glm::dot(p.normal, s));
-                if (pixel_shadows && cos_p > 0)
-                    w *= float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
+                if (pixel_shadows && cos_p > 0) {
+                    const float uniform = uniform_visibility(c0, r0);
+                    w *= uniform >= 0 ? uniform
+                                      : float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
+                }
                 c += w * st.irradiance_over_pi * cos_p;
             } else {
                 for (int q = 0; q < 4; ++q) c += weight[q] * radiance[corner[q]];

@@ -57,6 +57,9 @@ Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef
 struct TexelSunTerm {
     const glm::vec3* weight = nullptr;  // per texel
     const glm::vec3* unshadowed_weight = nullptr;  // per texel, may be null
+    // Per texel, with unshadowed_weight: the visible share the terrain alone leaves. A pixel
+    // whose patch's 4 texels are all fully lit or all fully shaded takes that without a ray.
+    const float* terrain_visibility = nullptr;
     const float *nx = nullptr, *ny = nullptr, *nz = nullptr;
     glm::vec3 direction{0, 0, 1};        // towards the sun (ENU)
     glm::vec3 irradiance_over_pi{0.0f};  // E_sun / pi

@@ -231,6 +231,7 @@ void Scene::render(const SunState& sun, LinearImage& image) {
         TexelSunTerm term;
         term.weight = sun_weight_.data();
         term.unshadowed_weight = unshadowed_weight_.data();
+        term.terrain_visibility = terrain_vis.data();
         term.nx = nf.x.data(), term.ny = nf.y.data(), term.nz = nf.z.data();
         term.direction = glm::vec3(sun_direction(sun));
         // As the frame's: no sun term while the disc is below the horizon or dark.

@@ -97,7 +97,7 @@ double SurfaceMarch::horizon_tangent(const SurfaceRay& ray_in, double s_begin, d
     ray.kz = floor_tan;
     const int top = int(max_.size()) - 1;
     int level = top;
-    double s = s_begin;
+    double s = s_begin, last_sample = -1;
     for (int guard = 0; guard < 1 << 22 && s <= s_end; ++guard) {
         const Cell cell = cell_at(ray, level, s, s_end);
         if (ray.min_height(s, cell.exit) > double(cell.bound)) {
@@ -112,7 +112,9 @@ double SurfaceMarch::horizon_tangent(const SurfaceRay& ray_in, double s_begin, d
         constexpr int kSteps = 4;
         for (int k = 0; k <= kSteps; ++k) {
             const double t = s + (cell.exit - s) * k / kSteps;
-            if (t <= 0) continue;
+            // The previous patch's last sample stands for this one's first.
+            if (t <= 0 || t - last_sample < 2 * nudge) continue;
+            last_sample = t;
             const float h = terrain::smooth_surface(grid_, ray.x0 + t * ray.ux, ray.y0 + t * ray.uy).z;
             if (std::isnan(h)) continue;
             const double tangent = (double(h) - ray.z0 - ray.curv * t * t) / t;

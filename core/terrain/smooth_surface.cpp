@@ -13,6 +13,15 @@ namespace {
 // 2x2 corners is a void. Outer heights that are voids or off the grid are extrapolated
 // linearly from the two inner ones on their line.
 bool fill_patch(const HeightGrid& g, int col, int row, float p[4][4]) {
+    if (col >= 1 && row >= 1 && col + 2 < g.width && row + 2 < g.height) {
+        // Inside the grid (the common case): 16 loads; any void sends it the slow way.
+        float sum = 0;
+        for (int j = 0; j < 4; ++j) {
+            const float* line = &g.z[g.index(col - 1, row - 1 + j)];
+            for (int i = 0; i < 4; ++i) sum += p[j][i] = line[i];
+        }
+        if (!std::isnan(sum)) return true;
+    }
     auto get = [&](int c, int r) {
         return c >= 0 && r >= 0 && c < g.width && r < g.height ? g.at(c, r) : std::numeric_limits<float>::quiet_NaN();
     };

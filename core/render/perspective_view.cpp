@@ -269,8 +269,10 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                 const float cos_p = std::max(0.0f, glm::dot(p.normal, s));
                 if (pixel_shadows && cos_p > 0) {
                     const float uniform = uniform_visibility(c0, r0);
-                    w *= uniform >= 0 ? uniform
-                                      : float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
+                    float v = uniform >= 0 ? uniform
+                                           : float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
+                    if (st.blockers && v > 0) v *= float(st.blockers->visible(p.x, p.y, surface(g, p.x, p.y)));
+                    w *= v;
                 }
                 c += w * st.irradiance_over_pi * cos_p;
             } else {

@@ -27,6 +27,7 @@
 
 #include "core/geo/georef.hpp"
 #include "core/light/sky_table.hpp"
+#include "core/render/pixel_sun_blockers.hpp"
 #include "core/render/surface_march.hpp"
 #include "core/terrain/height_grid.hpp"
 
@@ -51,12 +52,13 @@ Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef
 // The diffuse sun term of a frame's per-texel radiance, kept apart so that each pixel shades it
 // with its own normal: per texel the weight w = albedo x the visible fraction of the sun's disc
 // (0 where the radiance has no such term: water), the term w E_sun/pi max(0, n.s) with the
-// texel's normal n (the one the radiance was shaded with). With `unshadowed_weight` (albedo x
-// what shadows other than the grid's own terrain leave of the disc: the meshes') a view with
-// pixel_sun_shadows finds the terrain's shadow per pixel instead of blending the texels'.
+// texel's normal n (the one the radiance was shaded with). With `unshadowed_weight` (albedo:
+// the weight without any shadow) a view with pixel_sun_shadows finds the terrain's shadow per
+// pixel instead of blending the texels', and the meshes' with `blockers`.
 struct TexelSunTerm {
     const glm::vec3* weight = nullptr;  // per texel
     const glm::vec3* unshadowed_weight = nullptr;  // per texel, may be null
+    const PixelSunBlockers* blockers = nullptr;    // the meshes' sun shadows, set to this sun
     // Per texel, with unshadowed_weight: the visible share the terrain alone leaves. A pixel
     // whose patch's 4 texels are all fully lit or all fully shaded takes that without a ray.
     const float* terrain_visibility = nullptr;

@@ -18,6 +18,7 @@
 #include "core/terrain/outside_terrain.hpp"
 #include "core/util/error.hpp"
 #include "core/util/quantity_error.hpp"
+#include "core/visibility/earth_curvature.hpp"
 
 namespace ts::render {
 namespace {
@@ -219,19 +220,26 @@ void Scene::render(const SunState& sun, LinearImage& image) {
         unshadowed_weight_.resize(vis.size());
         for (std::size_t t = 0; t < vis.size(); ++t) {
             const float v = vis[t] == vis[t] ? vis[t] : 0.0f;
-            const glm::vec3 albedo(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]);
-            sun_weight_[t] = albedo * v;
-            // What the meshes' shadows leave of the terrain's (all of it where the terrain
-            // hides the sun: there a pixel ray that sees it has no better guess).
-            const float vt = terrain_vis[t];
-            unshadowed_weight_[t] = vt > 0.01f ? albedo * std::min(v / vt, 1.0f) : albedo;
+            unshadowed_weight_[t] = glm::vec3(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]);
+            sun_weight_[t] = unshadowed_weight_[t] * v;
         }
         // Water's radiance is a mirror over a dark body: it keeps its sun terms.
         for (std::uint32_t t : state_->water_index()) sun_weight_[t] = unshadowed_weight_[t] = glm::vec3(0.0f);
         TexelSunTerm term;
         term.weight = sun_weight_.data();
-        term.unshadowed_weight = unshadowed_weight_.data();
-        term.terrain_visibility = terrain_vis.data();
+        // Per-pixel shadows: the terrain's by rays, the meshes' at each hit. (A scene's state has
+        // no outer shadow, the terrain beyond a window, which pixel rays could not see.)
+        if (!state_->has_outer_sun_shadow()) {
+            term.unshadowed_weight = unshadowed_weight_.data();
+            term.terrain_visibility = terrain_vis.data();
+            if (!state_->blockers().empty()) {
+                if (!pixel_blockers_)
+                    pixel_blockers_ = std::make_unique<PixelSunBlockers>(
+                        *grid_, state_->blockers(), visibility::curvature_factor(options_.renderer.curvature));
+                pixel_blockers_->set_sun(sun_direction(sun));
+                term.blockers = pixel_blockers_.get();
+            }
+        }
         term.nx = nf.x.data(), term.ny = nf.y.data(), term.nz = nf.z.data();
         term.direction = glm::vec3(sun_direction(sun));
         // As the frame's: no sun term while the disc is below the horizon or dark.

@@ -167,6 +167,7 @@ public:
                         std::vector<float>* terrain_only = nullptr);
     // Whether anything but the grid's own terrain shades the sun (meshes, an outer shadow).
     bool has_other_sun_shadows() const { return !blockers_.empty() || bool(options_.outer_sun_shadow); }
+    bool has_outer_sun_shadow() const { return bool(options_.outer_sun_shadow); }
 
     // Mesh blockers: the state's copy of them, and the bound on the sky term of the texels
     // they change (null without blockers). FrameRenderer applies it after the diffuse pass.

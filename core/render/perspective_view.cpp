@@ -168,6 +168,8 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                     options_.haze_distance_m > 0 ? float(std::exp(-distance / options_.haze_distance_m)) : 1.0f;
             }
     });
+    // Only the per-frame sun rays need the pyramid again.
+    if (!options_.pixel_sun_shadows) march_.reset();
 }
 
 std::vector<glm::vec3> PerspectiveView::view_directions() const {
@@ -207,7 +209,7 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
     image.resize(pixels_.size());
     const terrain::HeightGrid& g = grid_;
     // Per-pixel sun shadows while the sun gives light.
-    const bool pixel_shadows = options_.pixel_sun_shadows && sun_term && sun_term->unshadowed_weight &&
+    const bool pixel_shadows = options_.pixel_sun_shadows && march_ && sun_term && sun_term->terrain_visibility &&
                                glm::dot(sun_term->irradiance_over_pi, glm::vec3(1.0f)) > 0.0f;
     const double sun_radius = std::acos(std::clamp(sun_cos_radius, -1.0, 1.0));
     const double curv = visibility::curvature_factor(options_.curvature);
@@ -217,7 +219,6 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
     // centres is narrower than a texel: below what the DEM resolves.
     auto uniform_visibility = [&](int c0, int r0) {
         const float* tv = sun_term->terrain_visibility;
-        if (!tv) return -1.0f;
         bool lit = false, dark = false;
         for (int r = r0; r <= std::min(r0 + 1, g.height - 1); ++r)
             for (int c = c0; c <= std::min(c0 + 1, g.width - 1); ++c) {
@@ -262,9 +263,12 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                 glm::vec3 w(0.0f);
                 for (int q = 0; q < 4; ++q) {
                     const std::size_t t = corner[q];
+                    const bool water = st.water && st.water[t];
+                    const glm::vec3 albedo = water ? glm::vec3(0.0f) : glm::vec3(st.albedo_r[t], st.albedo_g[t], st.albedo_b[t]);
+                    const float v = st.visibility[t] == st.visibility[t] ? st.visibility[t] : 0.0f;
                     const float cos_t = std::max(0.0f, st.nx[t] * s.x + st.ny[t] * s.y + st.nz[t] * s.z);
-                    c += weight[q] * glm::max(radiance[t] - st.weight[t] * st.irradiance_over_pi * cos_t, glm::vec3(0.0f));
-                    w += weight[q] * (pixel_shadows ? st.unshadowed_weight[t] : st.weight[t]);
+                    c += weight[q] * glm::max(radiance[t] - albedo * (v * cos_t) * st.irradiance_over_pi, glm::vec3(0.0f));
+                    w += weight[q] * (pixel_shadows ? albedo : albedo * v);
                 }
                 const float cos_p = std::max(0.0f, glm::dot(p.normal, s));
                 if (pixel_shadows && cos_p > 0) {

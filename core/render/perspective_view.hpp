@@ -14,6 +14,7 @@
 // Sun shadows (PerspectiveOptions::pixel_sun_shadows): each frame marches a ray from every hit
 // towards the sun over the same surface for the visible share of the disc, so a shadow's edge
 // falls where it does at the pixel, not where a bilinear blend of the texels' puts it.
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -50,21 +51,21 @@ std::string format_camera(const Camera& c);
 Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef);
 
 // The diffuse sun term of a frame's per-texel radiance, kept apart so that each pixel shades it
-// with its own normal: per texel the weight w = albedo x the visible fraction of the sun's disc
-// (0 where the radiance has no such term: water), the term w E_sun/pi max(0, n.s) with the
-// texel's normal n (the one the radiance was shaded with). With `unshadowed_weight` (albedo:
-// the weight without any shadow) a view with pixel_sun_shadows finds the terrain's shadow per
-// pixel instead of blending the texels', and the meshes' with `blockers`.
+// with its own normal: per texel w E_sun/pi max(0, n.s), w = albedo x the visible share of the
+// sun's disc, n the texel's normal (as FrameRenderer shaded it; water, a mirror over a dark
+// body, has no such term). Pointers to the frame's per-texel arrays, none copied.
 struct TexelSunTerm {
-    const glm::vec3* weight = nullptr;  // per texel
-    const glm::vec3* unshadowed_weight = nullptr;  // per texel, may be null
-    const PixelSunBlockers* blockers = nullptr;    // the meshes' sun shadows, set to this sun
-    // Per texel, with unshadowed_weight: the visible share the terrain alone leaves. A pixel
-    // whose patch's 4 texels are all fully lit or all fully shaded takes that without a ray.
-    const float* terrain_visibility = nullptr;
+    const float *albedo_r = nullptr, *albedo_g = nullptr, *albedo_b = nullptr;
+    const std::uint8_t* water = nullptr;  // 1 = water; may be null (none)
+    const float* visibility = nullptr;    // the sun's visible share as the frame had it (NaN: none)
     const float *nx = nullptr, *ny = nullptr, *nz = nullptr;
     glm::vec3 direction{0, 0, 1};        // towards the sun (ENU)
     glm::vec3 irradiance_over_pi{0.0f};  // E_sun / pi
+    // For a view with pixel_sun_shadows: the share the terrain alone leaves (null: blend
+    // `visibility` instead). A pixel whose patch's 4 texels are all fully lit or all fully
+    // shaded takes that without a ray; and the meshes' shadows at the hit (may be null).
+    const float* terrain_visibility = nullptr;
+    const PixelSunBlockers* blockers = nullptr;
 };
 
 struct PerspectiveOptions {

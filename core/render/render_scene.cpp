@@ -214,24 +214,20 @@ void Scene::render(const SunState& sun, LinearImage& image) {
         // A camera shades the sun's diffuse term with each pixel's normal (perspective_view.hpp).
         const MaterialRaster& m = state_->materials();
         const NormalField& nf = state_->normals();
-        const std::vector<float>& vis = renderer_->sun_visibility();
-        const std::vector<float>& terrain_vis = renderer_->terrain_sun_visibility();
-        sun_weight_.resize(vis.size());
-        unshadowed_weight_.resize(vis.size());
-        for (std::size_t t = 0; t < vis.size(); ++t) {
-            const float v = vis[t] == vis[t] ? vis[t] : 0.0f;
-            unshadowed_weight_[t] = glm::vec3(m.albedo_r[t], m.albedo_g[t], m.albedo_b[t]);
-            sun_weight_[t] = unshadowed_weight_[t] * v;
-        }
-        // Water's radiance is a mirror over a dark body: it keeps its sun terms.
-        for (std::uint32_t t : state_->water_index()) sun_weight_[t] = unshadowed_weight_[t] = glm::vec3(0.0f);
         TexelSunTerm term;
-        term.weight = sun_weight_.data();
+        term.albedo_r = m.albedo_r.data(), term.albedo_g = m.albedo_g.data(), term.albedo_b = m.albedo_b.data();
+        term.water = m.water.empty() ? nullptr : m.water.data();
+        term.visibility = renderer_->sun_visibility().data();
+        term.nx = nf.x.data(), term.ny = nf.y.data(), term.nz = nf.z.data();
+        term.direction = glm::vec3(sun_direction(sun));
+        // As the frame's: no sun term while the disc is below the horizon or dark.
+        const light::SunDisc disc = sky_->sun();
+        const bool sun_up = sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
+        term.irradiance_over_pi = sun_up ? disc.irradiance * float(1.0 / std::numbers::pi) : glm::vec3(0.0f);
         // Per-pixel shadows: the terrain's by rays, the meshes' at each hit. (A scene's state has
         // no outer shadow, the terrain beyond a window, which pixel rays could not see.)
         if (!state_->has_outer_sun_shadow()) {
-            term.unshadowed_weight = unshadowed_weight_.data();
-            term.terrain_visibility = terrain_vis.data();
+            term.terrain_visibility = renderer_->terrain_sun_visibility().data();
             if (!state_->blockers().empty()) {
                 if (!pixel_blockers_)
                     pixel_blockers_ = std::make_unique<PixelSunBlockers>(
@@ -240,12 +236,6 @@ void Scene::render(const SunState& sun, LinearImage& image) {
                 term.blockers = pixel_blockers_.get();
             }
         }
-        term.nx = nf.x.data(), term.ny = nf.y.data(), term.nz = nf.z.data();
-        term.direction = glm::vec3(sun_direction(sun));
-        // As the frame's: no sun term while the disc is below the horizon or dark.
-        const light::SunDisc disc = sky_->sun();
-        const bool sun_up = sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
-        term.irradiance_over_pi = sun_up ? disc.irradiance * float(1.0 / std::numbers::pi) : glm::vec3(0.0f);
         target_->compose(texel_radiance_, &term, *sky_, image);
     }
     if (mesh_view_) {

@@ -149,8 +149,6 @@ private:
     std::unique_ptr<FrameRenderer> renderer_;
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
-    // Perspective views, per texel: TexelSunTerm::weight and unshadowed_weight.
-    std::vector<glm::vec3> sun_weight_, unshadowed_weight_;
     std::unique_ptr<PixelSunBlockers> pixel_blockers_;  // perspective views with meshes
     ReliefContrastApplied last_relief_;
     std::vector<std::unique_ptr<MeshLighting>> mesh_lighting_;

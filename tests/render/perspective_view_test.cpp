@@ -87,22 +87,18 @@ TEST(PerspectiveView, ARidgeHidesWhatIsBehindIt) {
 }
 
 // A frame's per-texel radiance as FrameRenderer makes it: a sky part plus the sun's diffuse term
-// w E/pi max(0, n.s) with the texel's normal.
+// albedo v E/pi max(0, n.s) with the texel's normal (E/pi = 1 here).
 struct SunFrame {
-    std::vector<glm::vec3> radiance, weight, unshadowed;
-    std::vector<float> nx, ny, nz;
+    std::vector<glm::vec3> radiance;
+    std::vector<float> albedo, visibility, nx, ny, nz;
     TexelSunTerm term;
-    SunFrame(const terrain::HeightGrid& g, const glm::vec3& sun, const std::vector<float>& texel_visibility) {
+    SunFrame(const terrain::HeightGrid& g, const glm::vec3& sun, const std::vector<float>& texel_visibility)
+        : visibility(texel_visibility) {
         const std::size_t n = std::size_t(g.width) * g.height;
-        nx.assign(n, 0.0f), ny.assign(n, 0.0f), nz.assign(n, 1.0f);
-        const glm::vec3 sky_part(0.1f), albedo(0.5f);
-        for (std::size_t t = 0; t < n; ++t) {
-            weight.push_back(albedo * texel_visibility[t]);
-            unshadowed.push_back(albedo);
-            radiance.push_back(sky_part + weight[t] * std::max(0.0f, sun.z));
-        }
-        term.weight = weight.data();
-        term.unshadowed_weight = unshadowed.data();
+        nx.assign(n, 0.0f), ny.assign(n, 0.0f), nz.assign(n, 1.0f), albedo.assign(n, 0.5f);
+        for (std::size_t t = 0; t < n; ++t) radiance.push_back(glm::vec3(0.1f + albedo[t] * visibility[t] * sun.z));
+        term.albedo_r = term.albedo_g = term.albedo_b = albedo.data();
+        term.visibility = visibility.data();
         term.nx = nx.data(), term.ny = ny.data(), term.nz = nz.data();
         term.direction = sun;
         term.irradiance_over_pi = glm::vec3(1.0f);
@@ -159,12 +155,14 @@ TEST(PerspectiveView, PixelShadowsAreSharpWhereBlendedTexelsAreNot) {
         po.pixel_sun_shadows = per_pixel;
         const PerspectiveView view(s.grid, s.georef, c, po);
         std::vector<glm::vec3> img;
-        view.compose(frame.radiance.data(), &frame.term, sky, sun, {0, 0, 0}, std::cos(0.004654), img);
+        TexelSunTerm term = frame.term;
+        term.terrain_visibility = vis.data();  // read by per-pixel shadows only
+        view.compose(frame.radiance.data(), &term, sky, sun, {0, 0, 0}, std::cos(0.004654), img);
         if (per_pixel) {
-            // Given the texels' visibility, pixels far from any shadow edge take it without a
-            // ray: the same picture.
-            TexelSunTerm term = frame.term;
-            term.terrain_visibility = vis.data();
+            // Pixels whose texels agree take their visibility without a ray: against marching
+            // every pixel (all texels marked as in a penumbra), the same picture.
+            const std::vector<float> penumbra(vis.size(), 0.5f);
+            term.terrain_visibility = penumbra.data();
             view.compose(frame.radiance.data(), &term, sky, sun, {0, 0, 0}, std::cos(0.004654), marched);
             for (std::size_t k = 0; k < img.size(); ++k) EXPECT_NEAR(marched[k].x, img[k].x, 1e-4f) << k;
         }

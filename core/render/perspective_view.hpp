@@ -11,9 +11,10 @@
 // R_eff = R / (1 - 0.13)) dropping terrain at horizontal distance s by s^2 / (2 R_eff).
 // Marching: surface_march.hpp (a max pyramid over the patches lets a ray skip any cell it
 // passes above; inside a patch the crossing is bracketed by sub-steps and refined by bisection).
-// Sun shadows (PerspectiveOptions::pixel_sun_shadows): each frame marches a ray from every hit
-// towards the sun over the same surface for the visible share of the disc, so a shadow's edge
-// falls where it does at the pixel, not where a bilinear blend of the texels' puts it.
+// Sun shadows (PerspectiveOptions::pixel_sun_shadows): each frame marches a ray towards the sun
+// over the same surface from every lit hit whose patch's texels the frame's shadows split, for
+// the visible share of the disc, so a shadow's edge falls where it does at the pixel, not where
+// a bilinear blend of the texels' puts it; the meshes' shadows are found at every hit.
 #include <cstdint>
 #include <limits>
 #include <memory>

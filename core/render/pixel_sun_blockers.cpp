@@ -11,14 +11,8 @@ namespace ts::render {
 PixelSunBlockers::PixelSunBlockers(const terrain::HeightGrid& grid, const blockers::SphereBlockers& blockers,
                                    double curvature)
     : grid_(grid), blockers_(blockers), curvature_(curvature), range_(visibility::height_range(grid)) {
-    // As BlockerSunShadow: the corner farthest from the anchor drops most.
-    const double dx = grid.dx_m.empty() ? 0.0 : *std::max_element(grid.dx_m.begin(), grid.dx_m.end());
-    const double dy = grid.dy_m.empty() ? 0.0 : *std::max_element(grid.dy_m.begin(), grid.dy_m.end());
-    for (const blockers::PlacedSpheres& m : blockers.meshes) {
-        const double e = std::max(std::abs(m.anchor.x), std::abs(grid.width - 1 - m.anchor.x)) * dx;
-        const double n = std::max(std::abs(m.anchor.y), std::abs(grid.height - 1 - m.anchor.y)) * dy;
-        max_drop_.push_back((e * e + n * n) * curvature);
-    }
+    for (const blockers::PlacedSpheres& m : blockers.meshes)
+        max_drop_.push_back(visibility::largest_curvature_drop(grid, m, curvature));
 }
 
 void PixelSunBlockers::set_sun(const glm::dvec3& sun) {

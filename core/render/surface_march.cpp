@@ -48,7 +48,8 @@ SurfaceMarch::Cell SurfaceMarch::cell_at(const SurfaceRay& ray, int level, doubl
     return {max_[std::size_t(level)][std::size_t(cj) * w_[std::size_t(level)] + ci], std::max(exit, s)};
 }
 
-double SurfaceMarch::first_hit(const SurfaceRay& ray, double s_begin, double s_end, double nudge) const {
+template <class Patch>
+void SurfaceMarch::walk(const SurfaceRay& ray, double s_begin, double s_end, double nudge, Patch&& patch) const {
     const int top = int(max_.size()) - 1;
     int level = top;
     double s = s_begin;
@@ -63,30 +64,39 @@ double SurfaceMarch::first_hit(const SurfaceRay& ray, double s_begin, double s_e
             --level;
             continue;
         }
-        // A level-0 patch the ray may cross: bracket by sub-steps, refine by bisection.
+        if (patch(s, cell.exit)) return;
+        s = cell.exit + nudge;
+        level = std::min(1, top);
+    }
+}
+
+double SurfaceMarch::first_hit(const SurfaceRay& ray, double s_begin, double s_end, double nudge) const {
+    auto below = [&](double t) {
+        const float h = terrain::smooth_surface(grid_, ray.x0 + t * ray.ux, ray.y0 + t * ray.uy).z;
+        return !std::isnan(h) && ray.height_at(t) <= double(h);
+    };
+    double hit = -1.0;
+    // A patch the ray may cross: bracket by sub-steps, refine by bisection.
+    walk(ray, s_begin, s_end, nudge, [&](double s, double exit) {
         constexpr int kSteps = 4;
-        auto below = [&](double t) {
-            const float h = terrain::smooth_surface(grid_, ray.x0 + t * ray.ux, ray.y0 + t * ray.uy).z;
-            return !std::isnan(h) && ray.height_at(t) <= double(h);
-        };
+        if (below(s)) return hit = s, true;
         double prev = s;
-        if (below(s)) return s;
         for (int k = 1; k <= kSteps; ++k) {
-            const double t = s + (cell.exit - s) * k / kSteps;
+            const double t = s + (exit - s) * k / kSteps;
             if (below(t)) {
                 double lo = prev, hi = t;
                 for (int it = 0; it < 12; ++it) {
                     const double mid = 0.5 * (lo + hi);
                     (below(mid) ? hi : lo) = mid;
                 }
-                return hi;
+                hit = hi;
+                return true;
             }
             prev = t;
         }
-        s = cell.exit + nudge;
-        level = std::min(1, top);
-    }
-    return -1.0;
+        return false;
+    });
+    return hit;
 }
 
 double SurfaceMarch::horizon_tangent(const SurfaceRay& ray_in, double s_begin, double s_end, double floor_tan,
@@ -95,23 +105,11 @@ double SurfaceMarch::horizon_tangent(const SurfaceRay& ray_in, double s_begin, d
     // below it cannot raise the horizon.
     SurfaceRay ray = ray_in;
     ray.kz = floor_tan;
-    const int top = int(max_.size()) - 1;
-    int level = top;
-    double s = s_begin, last_sample = -1;
-    for (int guard = 0; guard < 1 << 22 && s <= s_end; ++guard) {
-        const Cell cell = cell_at(ray, level, s, s_end);
-        if (ray.min_height(s, cell.exit) > double(cell.bound)) {
-            s = cell.exit + nudge;
-            level = std::min(level + 1, top);
-            continue;
-        }
-        if (level > 0) {
-            --level;
-            continue;
-        }
+    double last_sample = -1;
+    walk(ray, s_begin, s_end, nudge, [&](double s, double exit) {
         constexpr int kSteps = 4;
         for (int k = 0; k <= kSteps; ++k) {
-            const double t = s + (cell.exit - s) * k / kSteps;
+            const double t = s + (exit - s) * k / kSteps;
             // The previous patch's last sample stands for this one's first.
             if (t <= 0 || t - last_sample < 2 * nudge) continue;
             last_sample = t;
@@ -120,12 +118,11 @@ double SurfaceMarch::horizon_tangent(const SurfaceRay& ray_in, double s_begin, d
             const double tangent = (double(h) - ray.z0 - ray.curv * t * t) / t;
             if (tangent > ray.kz) {
                 ray.kz = tangent;
-                if (tangent >= ceiling_tan) return tangent;
+                if (tangent >= ceiling_tan) return true;
             }
         }
-        s = cell.exit + nudge;
-        level = std::min(1, top);
-    }
+        return false;
+    });
     return ray.kz;
 }
 

@@ -49,6 +49,11 @@ private:
         double exit;
     };
     Cell cell_at(const SurfaceRay& ray, int level, double s, double s_end) const;
+    // Walks the ray from s_begin to s_end down the pyramid, skipping every cell it passes
+    // above, and calls patch(s, exit) for each level-0 patch it may touch (between s and exit);
+    // patch returns true to stop. The ray is read at every step: patch may raise it.
+    template <class Patch>
+    void walk(const SurfaceRay& ray, double s_begin, double s_end, double nudge, Patch&& patch) const;
 
     const terrain::HeightGrid& grid_;
     std::vector<std::vector<float>> max_;

@@ -61,4 +61,12 @@ HeightRange height_range(const terrain::HeightGrid& g) {
     return {lo, hi};
 }
 
+double largest_curvature_drop(const terrain::HeightGrid& g, const blockers::PlacedSpheres& mesh, double curvature) {
+    const double dx = g.dx_m.empty() ? 0.0 : *std::max_element(g.dx_m.begin(), g.dx_m.end());
+    const double dy = g.dy_m.empty() ? 0.0 : *std::max_element(g.dy_m.begin(), g.dy_m.end());
+    const double e = std::max(std::abs(mesh.anchor.x), std::abs(g.width - 1 - mesh.anchor.x)) * dx;
+    const double n = std::max(std::abs(mesh.anchor.y), std::abs(g.height - 1 - mesh.anchor.y)) * dy;
+    return (e * e + n * n) * curvature;
+}
+
 }  // namespace ts::visibility

@@ -44,4 +44,9 @@ struct HeightRange {
 };
 HeightRange height_range(const terrain::HeightGrid& g);
 
+// The largest curvature drop of any texel in the mesh's anchor frame (curvature: 1 / (2 R_eff)
+// or 0): the grid's corner farthest from the anchor, its distances from the rows' largest
+// spacing, so it bounds a geographic grid's too. sun_footprint's z_low is lowered by it.
+double largest_curvature_drop(const terrain::HeightGrid& g, const blockers::PlacedSpheres& mesh, double curvature);
+
 }  // namespace ts::visibility

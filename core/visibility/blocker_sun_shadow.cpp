@@ -15,15 +15,8 @@ namespace ts::visibility {
 BlockerSunShadow::BlockerSunShadow(const terrain::HeightGrid& grid, const blockers::SphereBlockers& blockers,
                                    double curvature, int threads)
     : grid_(grid), blockers_(blockers), curvature_(curvature), threads_(threads), range_(height_range(grid)) {
-    // The corner farthest from the anchor has the largest drop (distances from the grid's rows'
-    // largest spacing, so it is an upper bound on geographic grids too).
-    const double dx = grid.dx_m.empty() ? 0.0 : *std::max_element(grid.dx_m.begin(), grid.dx_m.end());
-    const double dy = grid.dy_m.empty() ? 0.0 : *std::max_element(grid.dy_m.begin(), grid.dy_m.end());
-    for (const blockers::PlacedSpheres& m : blockers.meshes) {
-        const double e = std::max(std::abs(m.anchor.x), std::abs(grid.width - 1 - m.anchor.x)) * dx;
-        const double n = std::max(std::abs(m.anchor.y), std::abs(grid.height - 1 - m.anchor.y)) * dy;
-        max_drop_.push_back((e * e + n * n) * curvature);
-    }
+    for (const blockers::PlacedSpheres& m : blockers.meshes)
+        max_drop_.push_back(largest_curvature_drop(grid, m, curvature));
 }
 
 TexelRect BlockerSunShadow::footprint(std::size_t k, double azimuth_deg, double elevation_deg) const {

@@ -21,8 +21,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build=$1 crop=$2 out=$3 sky=$4 albedo=$5 bounces=$6 samples=$7 azimuth=${8:-135} elevation=${9:-20}
 threads=${THREADS:-2}
 mkdir -p "$out"
-tag="${sky}_e${elevation}_a${albedo}_b${bounces}"
-spec="$sky:albedo=$albedo"
+# SKY may carry its own parameters (physical:aureole=0): the albedo joins them.
+tag="$(echo "$sky" | tr ':,=' '___')_e${elevation}_a${albedo}_b${bounces}"
+case "$sky" in *:*) spec="$sky,albedo=$albedo" ;; *) spec="$sky:albedo=$albedo" ;; esac
 
 "$build/tests/light/sky_equirect_dump" "$spec" "$azimuth" "$elevation" 1024 "$out/sky_$tag" >/dev/null
 

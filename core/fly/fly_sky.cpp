@@ -28,7 +28,7 @@ std::vector<glm::vec4> sky_buffer(const light::SkyTable& table) {
 glm::vec3 sun_disc_radiance(const light::SunDisc& sun) {
     const double r = sun.angular_radius_rad;
     const double solid_angle = 2.0 * kPi * (1.0 - std::cos(r));
-    return sun.irradiance / float(solid_angle);
+    return sun.disc_irradiance() / float(solid_angle);
 }
 
 }  // namespace ts::fly

@@ -212,7 +212,7 @@ PhysicalSky::NodeRadiance PhysicalSky::integrate(const glm::dvec3& view) const {
     return out;
 }
 
-Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
+PhysicalSky::NodeRadiance PhysicalSky::node_at(const glm::dvec3& dir) const {
     // Written so that a NaN direction reads node 0 instead of converting NaN to an index.
     const double z = dir.z > 0.0 ? std::min(dir.z, 1.0) : 0.0;
     const double elevation = std::asin(z);
@@ -234,7 +234,52 @@ Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
     n.mie = (node(0, 0).mie * (1 - fb) + node(0, 1).mie * fb) * (1 - fa) + (node(1, 0).mie * (1 - fb) + node(1, 1).mie * fb) * fa;
     n.multiple = (node(0, 0).multiple * (1 - fb) + node(0, 1).multiple * fb) * (1 - fa) +
                  (node(1, 0).multiple * (1 - fb) + node(1, 1).multiple * fb) * fa;
-    return with_phases(n, glm::normalize(glm::dvec3(dir.x, dir.y, z)));
+    return n;
+}
+
+Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
+    const double z = dir.z > 0.0 ? std::min(dir.z, 1.0) : 0.0;
+    return with_phases(node_at(dir), glm::normalize(glm::dvec3(dir.x, dir.y, z)));
+}
+
+Rgb PhysicalSky::lighting_radiance(const glm::dvec3& dir) const {
+    if (!(dir.z > 0.0)) return ground_;
+    const double z = std::min(dir.z, 1.0);
+    return with_phases(node_at(dir), glm::normalize(glm::dvec3(dir.x, dir.y, z)), aureole_phase_cap_);
+}
+
+void PhysicalSky::light_aureole_with_sun(double max_half_angle_deg) {
+    const double sun_elevation = std::asin(std::clamp(sun_dir_.z, -1.0, 1.0));
+    const double cap = std::min(max_half_angle_deg * kPi / 180.0, sun_elevation);
+    const bool disc_up = sun_.irradiance.x > 0 || sun_.irradiance.y > 0 || sun_.irradiance.z > 0;
+    if (!(cap > sun_.angular_radius_rad) || !disc_up) return;
+    const double edge = mie_phase(std::cos(cap));
+    // The cap's Mie light above the edge's phase on a horizontal surface, over the sun's
+    // sine: the irradiance a beam from the sun needs to give flat ground the same light. (The
+    // cap's light grows towards the horizon, so its centroid sits below the sun: projected on
+    // the sun's direction it gave flat ground 1.3% more light at 20 degrees.) Rings dense near
+    // the sun (g = cap v^2), where the phase peaks.
+    const glm::dvec3 s = sun_dir_;
+    const glm::dvec3 t1 = sun_north_;
+    const glm::dvec3 t2 = glm::cross(s, t1);
+    constexpr int kRings = 48, kAround = 48;
+    glm::dvec3 e(0.0);
+    for (int i = 0; i < kRings; ++i) {
+        const double v = (i + 0.5) / kRings;
+        const double g = cap * v * v, dg = 2.0 * cap * v / kRings;
+        const double excess = mie_phase(std::cos(g)) - edge;
+        const double d_omega = std::sin(g) * dg * (2.0 * kPi / kAround);
+        for (int j = 0; j < kAround; ++j) {
+            const double psi = 2.0 * kPi * (j + 0.5) / kAround;
+            const glm::dvec3 w = s * std::cos(g) + (t1 * std::cos(psi) + t2 * std::sin(psi)) * std::sin(g);
+            if (w.z <= 0.0) continue;
+            e += glm::dvec3(node_at(w).mie) * (excess * d_omega * w.z);
+        }
+    }
+    e /= s.z;
+    sun_.aureole = glm::max(Rgb(e), Rgb(0.0f));
+    sun_.irradiance += sun_.aureole;
+    aureole_phase_cap_ = edge;
 }
 
 Rgb PhysicalSky::sky_radiance_integrated(const glm::dvec3& dir) const {
@@ -242,10 +287,10 @@ Rgb PhysicalSky::sky_radiance_integrated(const glm::dvec3& dir) const {
     return with_phases(integrate(v), v);
 }
 
-Rgb PhysicalSky::with_phases(const NodeRadiance& n, const glm::dvec3& unit_view) const {
+Rgb PhysicalSky::with_phases(const NodeRadiance& n, const glm::dvec3& unit_view, double mie_phase_cap) const {
     const double cos_gamma = std::clamp(glm::dot(unit_view, sun_dir_), -1.0, 1.0);
     const Rgb l = n.rayleigh * static_cast<float>(rayleigh_phase(cos_gamma)) +
-                  n.mie * static_cast<float>(mie_phase(cos_gamma)) + n.multiple;
+                  n.mie * static_cast<float>(std::min(mie_phase(cos_gamma), mie_phase_cap)) + n.multiple;
     return glm::max(l, Rgb(0.0f));
 }
 

@@ -40,7 +40,19 @@ public:
                 Scattering scattering);
 
     Rgb radiance(const glm::dvec3& dir) const override;
+    // radiance() without the aureole that sun() carries (light_aureole_with_sun).
+    Rgb lighting_radiance(const glm::dvec3& dir) const override;
     SunDisc sun() const override { return sun_; }
+
+    // Lights the aerosol's circumsolar aureole with the sun's disc: the Mie radiance within
+    // min(max_half_angle_deg, the sun's elevation) of the sun, above its value at that angle,
+    // leaves lighting_radiance() and joins sun().irradiance (SunDisc::aureole says how much).
+    // Why: order-4 SH spread a peak that holds ~30% of the sun's irradiance over 90 degrees, so
+    // texels in the sun's cast shadow still saw much of it (docs/lighting.md, "The aureole
+    // lit with the sun"). The cap stays above the horizon, so a surface that sees all of it gets
+    // exactly its irradiance through the sun's cosine; one that sees part gets the sun's share.
+    // 0 keeps the whole dome in lighting_radiance(). Call once, before use.
+    void light_aureole_with_sun(double max_half_angle_deg);
     std::string describe() const override;
 
     // The dome alone for z > 0 (clamped to the horizon below).
@@ -60,8 +72,11 @@ private:
         Rgb multiple{0.0f};  // radiance scattered more than once (isotropic)
     };
     NodeRadiance integrate(const glm::dvec3& view) const;
-    // A direction's radiance from its two integrals and the phase functions at its angle to the sun.
-    Rgb with_phases(const NodeRadiance& n, const glm::dvec3& unit_view) const;
+    // The table's integrals towards `dir` (z clamped to the horizon), interpolated.
+    NodeRadiance node_at(const glm::dvec3& dir) const;
+    // A direction's radiance from its two integrals and the phase functions at its angle to the
+    // sun; the Mie phase capped at `mie_phase_cap`.
+    Rgb with_phases(const NodeRadiance& n, const glm::dvec3& unit_view, double mie_phase_cap = 1e300) const;
     glm::dvec3 view_direction(double elevation_rad, double relative_azimuth_rad) const;
 
     double turbidity_;
@@ -74,6 +89,7 @@ private:
     std::array<Rgb, atmosphere::kWavelengths> weight_{};  // extraterrestrial sun x colour matching -> linear RGB
     std::vector<NodeRadiance> table_;            // elevation-major
     SunDisc sun_;
+    double aureole_phase_cap_ = 1e300;  // the Mie phase at the aureole's edge once it is lit with the sun
     Rgb sky_horizontal_{0.0f};
     Rgb ground_{0.0f};
 };

@@ -13,8 +13,12 @@ std::unique_ptr<Sky> make_sky(const SkyOptions& options, const glm::dvec3& sun_d
         case SkyOptions::Kind::clear:
             return std::make_unique<PreethamSky>(options.turbidity, options.ground_albedo, sun_direction_enu);
         case SkyOptions::Kind::physical:
-            return std::make_unique<PhysicalSky>(options.turbidity, options.ground_albedo, sun_direction_enu,
-                                                 options.multiple_scattering ? Scattering::multiple : Scattering::single);
+        {
+            auto sky = std::make_unique<PhysicalSky>(options.turbidity, options.ground_albedo, sun_direction_enu,
+                                                     options.multiple_scattering ? Scattering::multiple : Scattering::single);
+            sky->light_aureole_with_sun(options.aureole_deg);
+            return sky;
+        }
         case SkyOptions::Kind::overcast:
             return std::make_unique<OvercastSky>(options.overcast_brightness, options.ground_albedo, sun_direction_enu);
         case SkyOptions::Kind::hdr:

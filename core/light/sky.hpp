@@ -20,10 +20,13 @@ using Rgb = glm::vec3;
 // What `--sky` asks for. Grammar (parse_sky_options):
 //   clear[:turbidity=T,albedo=A]   Preetham et al.'s analytic clear sky (preetham_sky.hpp;
 //                                  turbidity 1.7..10, ground albedo 0..1)
-//   physical[:turbidity=T,albedo=A,scattering=multiple|single]
+//   physical[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG]
 //                                  clear sky scattered in a spherical atmosphere
 //                                  (physical_sky.hpp), same parameters; light scattered once
-//                                  only with scattering=single (as Blender's Nishita sky)
+//                                  only with scattering=single (as Blender's Nishita sky);
+//                                  the circumsolar aureole within `aureole` degrees (default
+//                                  30, 0 = none) lights with the sun (PhysicalSky::
+//                                  light_aureole_with_sun)
 //   overcast[:brightness=B]        CIE standard overcast sky, zenith 3x the horizon
 //   PATH.exr | PATH.hdr | hdr:PATH[,rotation=DEG,scale=S]
 //                                  equirectangular HDR map (read through OpenImageIO)
@@ -34,6 +37,7 @@ struct SkyOptions {
     double ground_albedo = 0.2;
     double overcast_brightness = 1.0;  // scales the overcast zenith luminance
     bool multiple_scattering = true;   // physical: light scattered more than once as well
+    double aureole_deg = 30.0;         // physical: PhysicalSky::light_aureole_with_sun's largest cap
     std::string hdr_path;
     double hdr_rotation_deg = 0.0;  // azimuth (clockwise from north) of the map's centre column
     double hdr_scale = 1.0;
@@ -48,6 +52,11 @@ struct SunDisc {
     glm::dvec3 direction{0.0, 0.0, 1.0};  // unit, ENU
     double angular_radius_rad = 0.004654;
     Rgb irradiance{0.0f};
+    // Of `irradiance`, the sky's circumsolar aureole that a sky lights with the disc
+    // (PhysicalSky::light_aureole_with_sun): it shades as the disc does; pictures of the sky
+    // and mirrors draw the disc with irradiance - aureole, as the sky's radiance() has it.
+    Rgb aureole{0.0f};
+    Rgb disc_irradiance() const { return irradiance - aureole; }
 };
 
 class Sky {
@@ -57,6 +66,9 @@ public:
     // sun's disc excluded. Below the horizon: light from the ground (albedo x irradiance / pi)
     // or 0, as the model says.
     virtual Rgb radiance(const glm::dvec3& dir) const = 0;
+    // The radiance that shades: radiance() without what sun() carries of the sky (its
+    // `aureole`). The SH projections and the exact references integrate this one.
+    virtual Rgb lighting_radiance(const glm::dvec3& dir) const { return radiance(dir); }
     virtual SunDisc sun() const = 0;
     virtual std::string describe() const = 0;  // one line for logs and --help examples
 };

@@ -16,7 +16,7 @@ namespace ts::light {
 namespace {
 
 const char* const kGrammar =
-    "expected clear[:turbidity=T,albedo=A], physical[:turbidity=T,albedo=A,scattering=multiple|single], overcast[:brightness=B,albedo=A], PATH.exr, PATH.hdr or "
+    "expected clear[:turbidity=T,albedo=A], physical[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG], overcast[:brightness=B,albedo=A], PATH.exr, PATH.hdr or "
     "hdr:PATH[,rotation=DEG,scale=S]";
 
 QuantityError sky_error(const std::string& problem) {
@@ -150,6 +150,9 @@ SkyOptions parse_sky_options(std::string_view text) {
             const std::string v = lower(kv.value);
             if (v != "multiple" && v != "single") throw sky_error("scattering must be multiple or single, got '" + kv.value + "'");
             o.multiple_scattering = v == "multiple";
+        } else if (kv.key == "aureole" && o.kind == SkyOptions::Kind::physical) {
+            o.aureole_deg = parse_number("aureole", kv.value);
+            check_range("aureole", o.aureole_deg, 0.0, 90.0);
         } else if (kv.key == "brightness" && o.kind == SkyOptions::Kind::overcast) {
             o.overcast_brightness = parse_number("brightness", kv.value);
             if (!(o.overcast_brightness > 0.0) || o.overcast_brightness > 1000.0) {

@@ -58,7 +58,7 @@ void for_each_ring(const Sky& sky, const HemisphereRule& rule, OnRing&& on_ring)
             ring = RingSums{};
             ring.z = d.z;
         }
-        ring.add(d, glm::dvec3(sky.radiance(d)) * w);
+        ring.add(d, glm::dvec3(sky.lighting_radiance(d)) * w);
     });
     if (!std::isnan(ring.z)) on_ring(ring);
 }

@@ -136,7 +136,7 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
         const float f = view_.water_fresnel[k];
         glm::vec3 reflected = sky_table_.lookup(r) * view_.water_vis[k];
         const float v = sun_vis_[t] == sun_vis_[t] ? sun_vis_[t] : 0.0f;
-        if (sun_up && glm::dot(r, s) >= cos_disc) reflected += v * e_sun / solid_angle;
+        if (sun_up && glm::dot(r, s) >= cos_disc) reflected += v * disc.disc_irradiance() / solid_angle;
         const float cos_s = std::max(0.0f, s.z);
         // The body's irradiance / pi: the fused pass left it in out[t] (albedo 1 for water).
         const glm::vec3 body = fused ? out[t] : diffuse_rgb_[t] + v * cos_s * e_diffuse;

@@ -163,7 +163,7 @@ ReferenceSample ReferenceShader::shade(std::size_t k, const light::Sky& sky, con
                     const double cos_n = std::max(0.0, an * ct + bn * st);
                     // Solid angle element cos(theta) dtheta dphi.
                     const double weight = 0.5 * h * gl.weights[q] * ct * dphi;
-                    const glm::dvec3 radiance(sky.radiance(w));
+                    const glm::dvec3 radiance(sky.lighting_radiance(w));
                     e_sky += radiance * (cos_n * weight);
                     if (ks > 0) {
                         const double cos_r = glm::dot(w, r);
@@ -204,7 +204,7 @@ ReferenceSample ReferenceShader::shade(std::size_t k, const light::Sky& sky, con
         const bool r_visible = r.z >= 1.0 - 1e-12 || r_el > m.horizon(col, row, z0, std::atan2(r.y, r.x));
         glm::dvec3 reflected = r_visible ? glm::dvec3(sky.radiance(r)) : glm::dvec3(0.0);
         const double rad = disc.angular_radius_rad;
-        if (sun_up && glm::dot(r, sdir) >= std::cos(rad)) reflected += frac * e_sun / (kPi * rad * rad);
+        if (sun_up && glm::dot(r, sdir) >= std::cos(rad)) reflected += frac * glm::dvec3(disc.disc_irradiance()) / (kPi * rad * rad);
         radiance = f * reflected + (1 - f) * double(kWaterAlbedo) * (e_sky + frac * cos_ns * e_sun) / kPi;
     }
     res.radiance = glm::vec3(radiance);

@@ -151,7 +151,7 @@ void CameraTarget::compose(const std::vector<glm::vec3>& texel_radiance, const T
     sky_table_.update(sky);
     const light::SunDisc disc = sky.sun();
     const double r = disc.angular_radius_rad;
-    const glm::vec3 sun_radiance = disc.irradiance / float(std::numbers::pi * r * r);
+    const glm::vec3 sun_radiance = disc.disc_irradiance() / float(std::numbers::pi * r * r);
     view_.compose(texel_radiance.data(), sun_term, sky_table_, glm::vec3(disc.direction), sun_radiance, std::cos(r), image.rgb);
     image.width = view_.width(), image.height = view_.height();
     image.alpha.clear();

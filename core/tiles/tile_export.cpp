@@ -46,6 +46,7 @@ std::string sky_fingerprint(const light::SkyOptions& sky) {
     std::string out = std::to_string(int(sky.kind)) + "_" + number(sky.turbidity);
     if (sky.ground_albedo != defaults.ground_albedo) out += "_albedo" + number(sky.ground_albedo);
     if (sky.kind == light::SkyOptions::Kind::physical && !sky.multiple_scattering) out += "_single";
+    if (sky.kind == light::SkyOptions::Kind::physical) out += "_aureole" + number(sky.aureole_deg);
     if (sky.kind == light::SkyOptions::Kind::overcast && sky.overcast_brightness != defaults.overcast_brightness)
         out += "_brightness" + number(sky.overcast_brightness);
     if (sky.kind == light::SkyOptions::Kind::hdr) {

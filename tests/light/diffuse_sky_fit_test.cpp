@@ -8,6 +8,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "core/light/physical_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_sh.hpp"
 #include "core/sh/sh_basis.hpp"
@@ -33,7 +34,7 @@ double open_irradiance(const Sky& sky, const glm::dvec3& n) {
     double e = 0;
     for_each_sky_node({128, 512}, true, [&](const glm::dvec3& d, double w) {
         const double c = glm::dot(n, d);
-        if (c > 0) e += w * c * sky.radiance(d).g;
+        if (c > 0) e += w * c * sky.lighting_radiance(d).g;
     });
     return e / kPi;
 }
@@ -89,6 +90,36 @@ TEST(DiffuseSkySh, BeatsTheProjectionOnSlopesUnderALowClearSun) {
         const double mean = sum / count;
         const double rms_proj = std::sqrt(se_proj / count) / mean, rms_fit = std::sqrt(se_fit / count) / mean;
         EXPECT_LT(rms_fit, 0.75 * rms_proj) << "sun " << elevation << ": fit " << rms_fit << ", projection " << rms_proj;
+    }
+}
+
+TEST(DiffuseSkySh, HoldsOnAPhysicalSkyOnceItsAureoleLightsWithTheSun) {
+    // The physical sky's aureole peaks at three times Preetham's: left in the dome, the fit
+    // missed slopes by up to 5.7% (facing away from a sun 20 degrees up). Lit with the sun
+    // (PhysicalSky::light_aureole_with_sun), what stays in the dome is smoother. Measured, RMS
+    // over slopes up to 60 degrees: 2.3% -> 1.4% at 20 degrees, 1.7% -> 0.2% at 45; worst 2.9%
+    // and 0.3%. At 5 degrees the cap is 5 degrees wide and changes little.
+    for (double elevation : {20.0, 45.0}) {
+        const double e = radians(elevation);
+        double rms[2] = {0, 0}, worst = 0;
+        for (int lit = 0; lit < 2; ++lit) {
+            PhysicalSky sky(3.0, 0.3, {std::cos(e), 0.0, std::sin(e)});
+            sky.light_aureole_with_sun(lit ? 30.0 : 0.0);
+            const SkySh fit = project_diffuse_sky_sh(sky);
+            double se = 0;
+            int count = 0;
+            for (double slope = 0; slope <= 60; slope += 30)
+                for (double az = 0; az < 360; az += slope == 0 ? 360 : 90) {
+                    const glm::dvec3 n = normal_at(slope, az);
+                    const double exact = open_irradiance(sky, n);
+                    const double err = sh_irradiance(fit, n) / exact - 1;
+                    se += err * err, ++count;
+                    if (lit) worst = std::max(worst, std::abs(err));
+                }
+            rms[lit] = std::sqrt(se / count);
+        }
+        EXPECT_LT(rms[1], 0.7 * rms[0]) << "sun " << elevation;
+        EXPECT_LT(worst, elevation < 30 ? 0.032 : 0.006) << "sun " << elevation;
     }
 }
 

@@ -15,6 +15,7 @@
 #include "core/light/physical_sky.hpp"
 #include "core/light/preetham_sky.hpp"
 #include "core/light/sky_color.hpp"
+#include "core/light/sky_quadrature.hpp"
 #include "core/light/sun_transmittance.hpp"
 #include "core/util/angles.hpp"
 
@@ -266,6 +267,40 @@ TEST(PhysicalSky, GroundIsAlbedoTimesIrradianceOverPi) {
     const double share = luminance(sky.sky_horizontal_irradiance()) / luminance(e);
     EXPECT_GT(share, 0.15);
     EXPECT_LT(share, 0.40);
+}
+
+TEST(PhysicalSky, TheAureoleLitWithTheSunKeepsLevelGroundsLightAndThePicture) {
+    // light_aureole_with_sun moves the circumsolar peak from the dome that shades into the sun's
+    // beam: level ground gets the same light (within 0.5%; the cap's SH-free integral against
+    // the dome's rule), the sky as pictured keeps it, and the disc as drawn is the beam's alone.
+    for (double elevation : {8.0, 20.0, 50.0}) {
+        const glm::dvec3 sun = direction(elevation, 135.0);
+        const PhysicalSky whole(3.0, 0.3, sun);
+        PhysicalSky lit(3.0, 0.3, sun);
+        lit.light_aureole_with_sun(30.0);
+        auto level = [&](const PhysicalSky& sky) {
+            double e = 0.0;
+            for_each_sky_node(HemisphereRule{96, 384}, false, [&](const glm::dvec3& d, double w) {
+                e += luminance(sky.lighting_radiance(d)) * w * d.z;
+            });
+            return e + luminance(sky.sun().irradiance) * sun.z;
+        };
+        EXPECT_NEAR(level(lit), level(whole), 0.005 * level(whole)) << elevation;
+        EXPECT_EQ(whole.sun().aureole, Rgb(0.0f));
+        const double share = luminance(lit.sun().aureole) / luminance(lit.sun().irradiance);
+        EXPECT_GT(share, 0.02) << elevation;  // measured: 0.038, 0.130, 0.104
+        EXPECT_LT(share, 0.25) << elevation;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit.sun().disc_irradiance()[c], whole.sun().irradiance[c], 1e-5f);
+        const glm::dvec3 beside = direction(elevation + 3.0, 140.0), far = direction(60.0, 315.0);
+        EXPECT_EQ(lit.radiance(beside), whole.radiance(beside));
+        // Measured: 0.86, 0.31 and 0.15 of it, 5.8 degrees from the sun (the cap is 8 degrees wide at 8).
+        EXPECT_LT(luminance(lit.lighting_radiance(beside)), 0.9 * luminance(whole.radiance(beside)));
+        EXPECT_EQ(lit.lighting_radiance(far), whole.radiance(far));
+    }
+    // The cap never reaches below the horizon: with the sun at the horizon nothing moves.
+    PhysicalSky low(3.0, 0.3, direction(0.2, 135.0));
+    low.light_aureole_with_sun(30.0);
+    EXPECT_EQ(low.sun().aureole, Rgb(0.0f));
 }
 
 }  // namespace

@@ -53,7 +53,9 @@ int main(int argc, char** argv) {
     std::ofstream(prefix + ".f32", std::ios::binary)
         .write(reinterpret_cast<const char*>(pixels.data()), static_cast<std::streamsize>(pixels.size() * 4));
 
+    // The disc alone: the map holds the whole dome, aureole included.
     const SunDisc sun = sky->sun();
+    const Rgb disc = sun.disc_irradiance();
     std::FILE* json = std::fopen((prefix + ".json").c_str(), "w");
     if (!json) return 1;
     std::fprintf(json,
@@ -61,7 +63,7 @@ int main(int argc, char** argv) {
                  "\"sun_elevation_deg\": %.9g, \"sun_direction_enu\": [%.12g, %.12g, %.12g], "
                  "\"sun_angular_radius_rad\": %.9g, \"sun_irradiance_rgb\": [%.9g, %.9g, %.9g]}\n",
                  sky->describe().c_str(), width, height, azimuth, elevation, sun.direction.x, sun.direction.y,
-                 sun.direction.z, sun.angular_radius_rad, sun.irradiance.r, sun.irradiance.g, sun.irradiance.b);
+                 sun.direction.z, sun.angular_radius_rad, disc.r, disc.g, disc.b);
     std::fclose(json);
     std::printf("wrote %s.f32 and %s.json\n", prefix.c_str(), prefix.c_str());
     return 0;

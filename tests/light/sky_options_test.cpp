@@ -26,6 +26,10 @@ TEST(SkyOptions, ClearAndOvercast) {
     EXPECT_EQ(o.ground_albedo, 0.3);
     EXPECT_NE(make_sky(o, {0, 0.5, 0.5})->describe().find("single scattering"), std::string::npos);
     EXPECT_THROW(parse_sky_options("physical:scattering=double"), InputError);
+    EXPECT_EQ(parse_sky_options("physical").aureole_deg, 30.0);
+    EXPECT_EQ(parse_sky_options("physical:aureole=0").aureole_deg, 0.0);
+    EXPECT_THROW(parse_sky_options("physical:aureole=-5"), InputError);
+    EXPECT_THROW(parse_sky_options("overcast:aureole=10"), InputError);
     EXPECT_THROW(parse_sky_options("clear:scattering=single"), InputError);
     EXPECT_NE(make_sky(parse_sky_options("clear"), {0, 0.5, 0.5})->describe().find("Preetham"), std::string::npos);
     o = parse_sky_options("overcast:brightness=2");

@@ -395,8 +395,8 @@ void add_relight_command(CLI::App& root) {
         ->check(within(1, 64));
     cmd->add_option("--exposure-boost", a->exposure_boost_ev,
                     "With automatic exposure: how many EV a frame may be brightened beyond the highest sun's frame. "
-                    "Default 3: dawn readable and night dark under the default sky; a physical sky's twilight "
-                    "(--sky physical, 10-13 EV under noon) wants 8-12")
+                    "Default 10: the physical sky's dawn (6 EV under noon) at its own exposure, its twilight (10-13 EV "
+                    "under) a dark blue, the night black; 3 suits Preetham's sky")
         ->check(CLI::Range(0.0, 20.0));
     add_shard_option(*cmd, a->shard);
     cmd->add_option("--mesh-path", a->mesh_path,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders docs/gallery/: the Gresivaudan valley (Grenoble, looking south-east from above the
 # Chartreuse) at dawn, noon and dusk of the June solstice, under an overcast sky and under an HDR
-# environment map, a close-up, into the setting sun under Preetham's sky and the physical one, and as maps
+# environment map, a close-up, into the setting sun under Preetham's sky and the physical one (the default), and as maps
 # (default colours, grey, winter, overcast), from
 # data/grenoble_500px.tif. Each perspective PNG is 640x360, each map 240x240
 # (every file < 200 KB; the perspective views are dithered, docs/rendering.md).
@@ -21,11 +21,11 @@ $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --out "$out/noon.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T18:45:00Z --out "$out/dusk.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky overcast --out "$out/overcast.png"
 $ts render "$dem" "${view[@]}" --time 2025-06-21T11:40:00Z --sky data/sunset_synthetic.hdr --out "$out/hdr.png"
-# Looking west into the setting sun (5 degrees up) from the same place: Preetham's sky, the
-# default, beside the physical one (docs/lighting.md, "Physical clear sky").
+# Looking west into the setting sun (5 degrees up) from the same place: Preetham's sky beside
+# the physical one, the default (docs/lighting.md, "Physical clear sky").
 sunset=(--view perspective --camera 5.62,45.33,3000,300,-3,62 --size 640x360)
-$ts render "$dem" "${sunset[@]}" --time 2025-06-21T18:45:00Z --out "$out/sunset_preetham.png"
-$ts render "$dem" "${sunset[@]}" --time 2025-06-21T18:45:00Z --sky physical --out "$out/sunset_physical.png"
+$ts render "$dem" "${sunset[@]}" --time 2025-06-21T18:45:00Z --sky preetham --out "$out/sunset_preetham.png"
+$ts render "$dem" "${sunset[@]}" --time 2025-06-21T18:45:00Z --out "$out/sunset_physical.png"
 # Close up, low over the Vercors foothills south-west of Grenoble at 07:00 UTC (texels of
 # 160 x 220 m spanning tens of pixels): shaded at the DEM's resolution (docs/rendering.md,
 # "Perspective views at the DEM's resolution").

@@ -2,8 +2,9 @@
 # The stored Blender Cycles references of tests/cli/cycles_reference_cli_test.cpp
 # (docs/accuracy.md, "Against Blender Cycles"): a 64 x 64 crop of the Anatolia SRTM3 tile in a
 # local transverse Mercator at 90 m (1714 m of relief) and Cycles' luminance on it, grey Lambert
-# albedo 0.3, 4 bounces, 1024 samples, under terrashade's clear sky with the sun 20 degrees up
-# at azimuth 135 and under its overcast sky (each sky's ground albedo 0.3). About 1 minute.
+# albedo 0.3, 4 bounces, 1024 samples, under terrashade's clear sky (the physical one), Preetham's
+# sky, both with the sun 20 degrees up at azimuth 135, and its overcast sky (each sky's ground
+# albedo 0.3). About 1.5 minutes.
 # Usage: scripts/make_cycles_reference.sh [BUILD_DIR]   (needs blender, oiiotool, python3-gdal)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -17,7 +18,7 @@ mkdir -p "$dest"
 gdal_translate -q -srcwin 40 552 64 64 -co COMPRESS=DEFLATE -co PREDICTOR=3 "$work/anatolia_tm90.tif" \
   "$dest/anatolia_tm90_64.tif"
 
-for sky in clear overcast; do
+for sky in clear preetham overcast; do
   "$build/tests/light/sky_equirect_dump" "$sky:albedo=0.3" 135 20 1024 "$work/sky_$sky" >/dev/null
   blender -b --factory-startup -P "$root/scripts/cycles_reference.py" -- "$dest/anatolia_tm90_64.tif" \
     "$work/cycles_$sky.tif" --sky map --sky-map "$work/sky_$sky" --albedo 0.3 --bounces 4 --samples 1024 \

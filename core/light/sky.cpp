@@ -10,7 +10,7 @@ namespace ts::light {
 
 std::unique_ptr<Sky> make_sky(const SkyOptions& options, const glm::dvec3& sun_direction_enu) {
     switch (options.kind) {
-        case SkyOptions::Kind::clear:
+        case SkyOptions::Kind::preetham:
             return std::make_unique<PreethamSky>(options.turbidity, options.ground_albedo, sun_direction_enu);
         case SkyOptions::Kind::physical:
         {

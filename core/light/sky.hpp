@@ -18,21 +18,24 @@ namespace ts::light {
 using Rgb = glm::vec3;
 
 // What `--sky` asks for. Grammar (parse_sky_options):
-//   clear[:turbidity=T,albedo=A]   Preetham et al.'s analytic clear sky (preetham_sky.hpp;
-//                                  turbidity 1.7..10, ground albedo 0..1)
-//   physical[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG]
-//                                  clear sky scattered in a spherical atmosphere
-//                                  (physical_sky.hpp), same parameters; light scattered once
-//                                  only with scattering=single (as Blender's Nishita sky);
+//   clear[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG]   (or physical[:...])
+//                                  the clear sky scattered in a spherical atmosphere
+//                                  (physical_sky.hpp; turbidity 1.7..10, ground albedo 0..1);
+//                                  light scattered once only with scattering=single (as
+//                                  Blender's Nishita sky);
 //                                  the circumsolar aureole within `aureole` degrees (default
 //                                  30, 0 = none) lights with the sun (PhysicalSky::
 //                                  light_aureole_with_sun)
+//   preetham[:turbidity=T,albedo=A]
+//                                  Preetham et al.'s analytic clear sky (preetham_sky.hpp),
+//                                  the default clear sky before the physical one
 //   overcast[:brightness=B]        CIE standard overcast sky, zenith 3x the horizon
 //   PATH.exr | PATH.hdr | hdr:PATH[,rotation=DEG,scale=S]
 //                                  equirectangular HDR map (read through OpenImageIO)
 struct SkyOptions {
-    enum class Kind { clear, physical, overcast, hdr };
-    Kind kind = Kind::clear;
+    // The values are kept: tile sets describe their job with them (0 was and is Preetham's).
+    enum class Kind { preetham = 0, physical = 1, overcast = 2, hdr = 3 };
+    Kind kind = Kind::physical;
     double turbidity = 3.0;
     double ground_albedo = 0.2;
     double overcast_brightness = 1.0;  // scales the overcast zenith luminance

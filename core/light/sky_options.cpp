@@ -16,7 +16,8 @@ namespace ts::light {
 namespace {
 
 const char* const kGrammar =
-    "expected clear[:turbidity=T,albedo=A], physical[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG], overcast[:brightness=B,albedo=A], PATH.exr, PATH.hdr or "
+    "expected clear[:turbidity=T,albedo=A,scattering=multiple|single,aureole=DEG] (or physical[:...]), "
+    "preetham[:turbidity=T,albedo=A], overcast[:brightness=B,albedo=A], PATH.exr, PATH.hdr or "
     "hdr:PATH[,rotation=DEG,scale=S]";
 
 QuantityError sky_error(const std::string& problem) {
@@ -131,12 +132,12 @@ SkyOptions parse_sky_options(std::string_view text) {
     const std::string model = lower(text.substr(0, colon));
     const std::string_view rest = colon == std::string_view::npos ? std::string_view() : text.substr(colon + 1);
     if (model == "hdr") return parse_hdr(rest, true);
-    if (model != "clear" && model != "physical" && model != "overcast") return parse_hdr(text, false);
+    if (model != "clear" && model != "physical" && model != "preetham" && model != "overcast") return parse_hdr(text, false);
 
     SkyOptions o;
-    o.kind = model == "clear"      ? SkyOptions::Kind::clear
-             : model == "physical" ? SkyOptions::Kind::physical
-                                   : SkyOptions::Kind::overcast;
+    o.kind = model == "preetham"   ? SkyOptions::Kind::preetham
+             : model == "overcast" ? SkyOptions::Kind::overcast
+                                   : SkyOptions::Kind::physical;
     if (colon == std::string_view::npos) return o;
     if (rest.empty()) throw sky_error("nothing after '" + model + ":'");
     for (const KeyValue& kv : split_parameters(rest)) {

@@ -25,7 +25,10 @@
 namespace ts::render {
 
 struct SequenceExposureOptions {
-    double max_boost_ev = 3.0;  // at most 8x the brightest frame's exposure
+    // At most 1024x the brightest frame's exposure: the physical sky's dawn (6.4 EV under noon
+    // with the sun 1 degree up) at its own exposure, its twilight (12.6 EV under at -5) a dark
+    // blue, the night black (docs/user-guide.md, relight). 8 left that twilight at mean code 5.
+    double max_boost_ev = 10.0;
     int half_window = 2;        // K: frames on each side averaged (0 = every frame its own)
     double tau_s = 900.0;       // the weights' time scale: 15 minutes
 };

@@ -78,8 +78,8 @@ std::string lightable_json(const TileShading& s, const LightableSite& site, cons
     for (int i = 0; i < 9; ++i) flat += (i ? "," : "") + number(flat_transfer[std::size_t(i)]);
     for (std::size_t i = 0; i < stored.size(); ++i) dirs += (i ? "," : "") + std::to_string(stored[i].direction);
     light::SkyOptions clear = s.sky, overcast = s.sky;
-    // The clear sky is the job's clear model (Preetham's unless the physical one was asked for).
-    if (clear.kind != light::SkyOptions::Kind::physical) clear.kind = light::SkyOptions::Kind::clear;
+    // The clear sky is the job's clear model (the physical one unless Preetham's was asked for).
+    if (clear.kind != light::SkyOptions::Kind::preetham) clear.kind = light::SkyOptions::Kind::physical;
     overcast.kind = light::SkyOptions::Kind::overcast;
     const std::string default_sky = s.sky.kind == light::SkyOptions::Kind::overcast ? "overcast" : "clear";
     // The palette as the tiles hold it (fitted to the job's heights): the page's legend.

@@ -9,6 +9,7 @@
 // Bounds: the measured figure plus a small margin (two Cycles seeds at 256 samples differ by
 // 0.2% per texel on the bench crop; these have 1024), so a change of the sky, sun or visibility
 // that moves the picture fails.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -28,10 +29,12 @@ const std::string kReference = std::string(TS_SOURCE_DIR) + "/tests/render/refer
 // Cycles' mesh ends at the crop: its border texels see open ground where the DEM goes on, and
 // terrashade's border normals are one-sided. Compared: the inner 56 x 56.
 constexpr int kBorder = 4;
-// Measured (docs/accuracy.md: clear 0.99935 and 1.83%, overcast 0.99768 and 0.27%, with one
-// bounce, the terrain's transfer projected from its horizons and the sky's SH fitted for diffuse
-// terrain) plus a margin.
-constexpr double kClearMinCorrelation = 0.9985, kClearMaxRelativeRmse = 0.022;
+// Measured (docs/accuracy.md: the physical clear sky 0.99868 and 4.70%, Preetham's 0.99935 and
+// 1.83%, overcast 0.99768 and 0.27%, with one bounce, the terrain's transfer projected from its
+// horizons and the sky's SH fitted for diffuse terrain) plus a margin. The physical sky's dome
+// is harder for SH than Preetham's fit (docs/lighting.md, "The aureole lit with the sun").
+constexpr double kClearMinCorrelation = 0.9983, kClearMaxRelativeRmse = 0.050;
+constexpr double kPreethamMinCorrelation = 0.9985, kPreethamMaxRelativeRmse = 0.022;
 constexpr double kOvercastMinCorrelation = 0.996, kOvercastMaxRelativeRmse = 0.004;
 
 std::vector<double> luminance(const raster::FloatImage& img, double scale) {
@@ -62,9 +65,12 @@ Agreement agreement(const std::vector<double>& cycles, const std::vector<double>
 }
 
 Agreement against_cycles(const std::string& sky, const std::string& reference, const std::string& options = "") {
-    const fs::path out = temp_dir("cycles_reference") / (sky + ".exr");
+    std::string file = sky;
+    std::replace_if(file.begin(), file.end(), [](char c) { return c == ':' || c == '=' || c == ','; }, '_');
+    const fs::path out = temp_dir("cycles_reference") / (file + ".exr");
+    const std::string albedo = sky.find(':') == std::string::npos ? ":albedo=0.3" : ",albedo=0.3";
     const Result r = run_ts("render " + quote(kReference + "anatolia_tm90_64.tif") + " --colors grey:0.3" + options +
-                            " --sky " + sky + ":albedo=0.3 --sun-azimuth 135 --sun-elevation 20" +
+                            " --sky " + sky + albedo + " --sun-azimuth 135 --sun-elevation 20" +
                             " --no-curvature --cpu --threads 2 -o " + quote(out.string()));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     const raster::FloatImage cycles = raster::read_float_image(kReference + reference);
@@ -82,6 +88,12 @@ TEST(CyclesReferenceCli, SunAndClearSkyMatchCycles) {
     const Agreement a = against_cycles("clear", "cycles_clear_e20_a0.3_b4.exr");
     EXPECT_GE(a.correlation, kClearMinCorrelation);
     EXPECT_LE(a.relative_rmse, kClearMaxRelativeRmse);
+    // Its aureole left in the dome's SH lit the sun's cast shadows (measured 0.99788 and 4.87%).
+    const Agreement whole_dome = against_cycles("clear:aureole=0", "cycles_clear_e20_a0.3_b4.exr");
+    EXPECT_GT(a.correlation, whole_dome.correlation + 0.0004);
+    const Agreement preetham = against_cycles("preetham", "cycles_preetham_e20_a0.3_b4.exr");
+    EXPECT_GE(preetham.correlation, kPreethamMinCorrelation);
+    EXPECT_LE(preetham.relative_rmse, kPreethamMaxRelativeRmse);
 }
 
 TEST(CyclesReferenceCli, OvercastSkyMatchesCycles) {

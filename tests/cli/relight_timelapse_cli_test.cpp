@@ -89,10 +89,10 @@ TEST(RelightTimeLapse, AutoExposureFollowsTheDayWithoutFlicker) {
     EXPECT_LT(night, 0.5 * dawn) << "night " << night << " dawn " << dawn;
     // Frames two hours apart keep their own exposure: no bound on their steps here (the dense
     // series below is where flicker would show).
-    // At most 3 EV brighter than the highest sun's exposure.
+    // At most 10 EV brighter than the highest sun's exposure (the default --exposure-boost).
     double highest = rows[0].ev100;
     for (const CsvRow& row : rows) highest = std::max(highest, row.ev100);
-    for (const CsvRow& row : rows) EXPECT_GE(row.ev100, highest - 3.0 - 0.01) << row.file;
+    for (const CsvRow& row : rows) EXPECT_GE(row.ev100, highest - 10.0 - 0.01) << row.file;
 
     // A fixed exposure is the same for every frame.
     const auto fixed = dir.parent_path() / "fixed";
@@ -101,7 +101,9 @@ TEST(RelightTimeLapse, AutoExposureFollowsTheDayWithoutFlicker) {
     ASSERT_EQ(f.exit_code, 0) << f.err;
     for (const CsvRow& row : read_times_csv(fixed / "times.csv")) EXPECT_DOUBLE_EQ(row.ev100, 14.0) << row.file;
 
-    // Every 5 minutes through the evening: steps of at most 0.2 EV from frame to frame.
+    // Every 5 minutes through the evening (the sun from 13 to 3 degrees): the exposure follows
+    // the falling light one way, with no step back (flicker), and by at most 0.3 EV a frame
+    // (measured: up to 0.23 at 18:50, where the physical sky dims fastest).
     const auto dense = dir.parent_path() / "dense";
     const Result d = run(ts_cmd("relight " + quote(kDem) + kCrop +
                                 " --times 2025-06-21T18:00:00Z/2025-06-21T19:00:00Z/PT5M --directions 8 --out " +
@@ -109,32 +111,35 @@ TEST(RelightTimeLapse, AutoExposureFollowsTheDayWithoutFlicker) {
     ASSERT_EQ(d.exit_code, 0) << d.err;
     const std::vector<CsvRow> evening = read_times_csv(dense / "times.csv");
     ASSERT_EQ(evening.size(), 13u);
-    for (std::size_t k = 1; k < evening.size(); ++k)
-        EXPECT_LE(std::abs(evening[k].ev100 - evening[k - 1].ev100), 0.2) << evening[k].time;
+    for (std::size_t k = 1; k < evening.size(); ++k) {
+        EXPECT_LE(evening[k].ev100, evening[k - 1].ev100 + 1e-3) << evening[k].time;
+        EXPECT_LE(evening[k - 1].ev100 - evening[k].ev100, 0.3) << evening[k].time;
+    }
 }
 
-// The physical sky's dawn and twilight are as dark as real ones (6 and 13 EV under noon), beyond
-// the default 3 EV of brightening: --exposure-boost widens it, and only where exposure is automatic.
+// The physical sky's dawn and twilight are as dark as real ones (6 and 13 EV under noon): the
+// default 10 EV of brightening shows the dawn at its own exposure and the twilight a dark blue;
+// --exposure-boost 3 (what suits Preetham's sky) leaves both dark; only automatic exposure takes it.
 TEST(RelightTimeLapse, ExposureBoostLightsAPhysicalTwilight) {
     const auto base = temp_dir("timelapse_boost");
-    const std::string day = " --sky physical" + kDay + " --night include";
+    const std::string day = kDay + " --night include";
     const Result d = run(ts_cmd("relight " + quote(kDem) + kCrop + day + " --out " + quote((base / "default").string())));
     ASSERT_EQ(d.exit_code, 0) << d.err;
-    const Result b = run(ts_cmd("relight " + quote(kDem) + kCrop + day + " --exposure-boost 10 --out " +
-                                quote((base / "boost").string())));
+    EXPECT_NE(d.out.find("at most 10 EV brighter"), std::string::npos) << d.out;
+    const Result b = run(ts_cmd("relight " + quote(kDem) + kCrop + day + " --exposure-boost 3 --out " +
+                                quote((base / "narrow").string())));
     ASSERT_EQ(b.exit_code, 0) << b.err;
-    EXPECT_NE(b.out.find("at most 10 EV brighter"), std::string::npos) << b.out;
-    const std::vector<CsvRow> rows = read_times_csv(base / "boost" / "times.csv");
+    EXPECT_NE(b.out.find("at most 3 EV brighter"), std::string::npos) << b.out;
+    const std::vector<CsvRow> rows = read_times_csv(base / "default" / "times.csv");
     ASSERT_EQ(rows.size(), 10u);
-    // Frame 1: the sun 1 degree up; frame 9: 5 degrees down; frame 5: noon.
-    const double noon = mean_code(base / "boost" / rows[5].file);
-    EXPECT_GT(mean_code(base / "boost" / rows[1].file), 0.8 * noon);
-    EXPECT_LT(mean_code(base / "default" / rows[1].file), 0.5 * noon);
-    EXPECT_GT(mean_code(base / "boost" / rows[9].file), 10.0);  // a blue twilight, not black
-    EXPECT_LT(mean_code(base / "default" / rows[9].file), 2.0);
-    double highest = rows[0].ev100;
-    for (const CsvRow& row : rows) highest = std::max(highest, row.ev100);
-    for (const CsvRow& row : rows) EXPECT_GE(row.ev100, highest - 10.0 - 0.01) << row.file;
+    // Frame 1: the sun 1 degree up; frame 9: 5 degrees down; frame 5: noon. Measured: dawn 131,
+    // noon 128, twilight 25 (with 3 EV: 19 and 0).
+    const double noon = mean_code(base / "default" / rows[5].file);
+    EXPECT_GT(mean_code(base / "default" / rows[1].file), 0.8 * noon);
+    EXPECT_LT(mean_code(base / "narrow" / rows[1].file), 0.5 * noon);
+    EXPECT_GT(mean_code(base / "default" / rows[9].file), 10.0);  // a blue twilight, not black
+    EXPECT_LT(mean_code(base / "narrow" / rows[9].file), 2.0);
+    EXPECT_LT(mean_code(base / "default" / rows[0].file), 2.0);  // the night, 14 degrees down
 
     const Result fixed = run(ts_cmd("relight " + quote(kDem) + kCrop + kDay + " --exposure 14 --exposure-boost 5 --out " +
                                     quote((base / "fixed").string())));

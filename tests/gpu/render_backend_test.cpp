@@ -58,9 +58,12 @@ constexpr double kSharedVsCoreTol = 1e-4;
 constexpr double kShadeTol = 1e-5;
 // Whole frames: GPU backend vs the CPU backend, both fp32 T: 1e-4 relative per channel (the
 // transfer tolerance carried through). Against the default CPU path (fused, T in fp16):
-// its own stated 1e-3, plus the transfer's.
+// its own stated 1e-3 per term, plus the transfer's; relative to the sum, which the terms'
+// cancellation makes smaller than their magnitudes: the physical sky's dome has more in bands
+// 2-3 than Preetham's (measured 1.2e-3 with the sun 25 degrees up, 3.0e-3 at 8; Preetham's
+// 2e-3 at most).
 constexpr double kFrameTol = 1e-4;
-constexpr double kFrameVsFusedTol = 2e-3;
+constexpr double kFrameVsFusedTol = 4e-3;
 
 // A centred 96 x 96 window of the Grenoble DEM (Alps: deep horizons) as a grid of its own.
 const terrain::GridCrop& grenoble_crop() {

@@ -8,8 +8,10 @@ namespace ts::light {
 namespace {
 
 TEST(SkyOptions, ClearAndOvercast) {
+    // The clear sky is the physical one; Preetham's is asked for by name.
     SkyOptions o = parse_sky_options("clear");
-    EXPECT_EQ(o.kind, SkyOptions::Kind::clear);
+    EXPECT_EQ(o.kind, SkyOptions::Kind::physical);
+    EXPECT_EQ(SkyOptions().kind, SkyOptions::Kind::physical);
     EXPECT_EQ(o.turbidity, 3.0);
     o = parse_sky_options("clear:turbidity=5.5,albedo=0.1");
     EXPECT_EQ(o.turbidity, 5.5);
@@ -30,8 +32,10 @@ TEST(SkyOptions, ClearAndOvercast) {
     EXPECT_EQ(parse_sky_options("physical:aureole=0").aureole_deg, 0.0);
     EXPECT_THROW(parse_sky_options("physical:aureole=-5"), InputError);
     EXPECT_THROW(parse_sky_options("overcast:aureole=10"), InputError);
-    EXPECT_THROW(parse_sky_options("clear:scattering=single"), InputError);
-    EXPECT_NE(make_sky(parse_sky_options("clear"), {0, 0.5, 0.5})->describe().find("Preetham"), std::string::npos);
+    EXPECT_EQ(parse_sky_options("Preetham:turbidity=4").kind, SkyOptions::Kind::preetham);
+    EXPECT_NE(make_sky(parse_sky_options("preetham"), {0, 0.5, 0.5})->describe().find("Preetham"), std::string::npos);
+    EXPECT_THROW(parse_sky_options("preetham:scattering=single"), InputError);
+    EXPECT_THROW(parse_sky_options("preetham:aureole=10"), InputError);
     o = parse_sky_options("overcast:brightness=2");
     EXPECT_EQ(o.kind, SkyOptions::Kind::overcast);
     EXPECT_EQ(o.overcast_brightness, 2.0);

@@ -112,7 +112,9 @@ TEST(WindowScene, ACoreShadedOnItsWindowWithTheFarFieldIsTheWholeDemsShading) {
         const char* time;
         double max_rms;  // relative, with the far field
     };
-    for (const Case& k : {Case{"2024-12-21T07:45:00Z", 0.015}, Case{"2024-12-21T11:00:00Z", 0.01}}) {
+    // Measured: 0.0132 and 0.0103 (0.0099 at noon under Preetham's sky, before the physical
+    // sky's beam carried its aureole: the shadow edges weigh 13% more).
+    for (const Case& k : {Case{"2024-12-21T07:45:00Z", 0.015}, Case{"2024-12-21T11:00:00Z", 0.0115}}) {
         const SunState sun = whole.sun_at(light::parse_utc_time(k.time));
         LinearImage want, got, plain;
         whole.render(sun, want);

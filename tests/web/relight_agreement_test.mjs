@@ -23,12 +23,14 @@ const zoom = Number(zoomText);
 const instants = [['2024-06-21T05:30Z', 'clear'], ['2024-06-21T11:30Z', 'clear'], ['2024-06-21T18:30Z', 'clear'],
                   ['2024-06-21T09:00Z', 'overcast']];
 // Bounds in sRGB codes, at the measured values with the default light directions (128) and
-// components (6) at zoom 10: p99 3, 1, 2; the issue's goal is 2. What remains is shadow rims:
-// relief's sun at one azimuth has its own rim error (its far field interpolated between sweep
-// lines placed by the azimuth), which horizons stored at other azimuths cannot share
-// (docs/web-map.md, "Agreement"). LIGHT_ARGS="--light-directions 64 ..." passes options to the
-// lightable run (studies).
-const bounds = {p50: 0, p90: 1, p99: 3, mean: 0.3};
+// components (6) at zoom 10 under the default (physical) clear sky: p99 5, 1, 4, means up to
+// 0.41 (Preetham's sky: 3, 1, 2); the issue's goal is 2. What remains (docs/web-map.md,
+// "Agreement"): the compression (9 components and 512 directions give p99 3), shadow rims
+// (relief's sun at one azimuth has its own rim error, which horizons stored at other azimuths
+// cannot share), and the bounce: the data tiles' transfer bounces off the palette's albedo
+// where relief's bounces off grey 0.18, so shadows relight 0.8 codes too bright.
+// LIGHT_ARGS="--light-directions 64 ..." passes options to the lightable run (studies).
+const bounds = {p50: 0, p90: 1, p99: 5, mean: 0.45};
 
 fs.mkdirSync(tmp, {recursive: true});
 const work = fs.mkdtempSync(path.join(tmp, 'relight-'));

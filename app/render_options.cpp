@@ -82,6 +82,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "the texels' (texel: a texel-wide, stepped edge; cheaper per frame)")
         ->capture_default_str()
         ->check(CLI::IsMember({"pixel", "texel"}));
+    cmd.add_option("--edge-samples", a.edge_samples,
+                   "Perspective: N x N rays across each pixel of the terrain's silhouette, the share that hits "
+                   "weighing the terrain against the sky (1 = one ray: a stair-stepped skyline)")
+        ->capture_default_str()
+        ->check(within(1, 16));
     cmd.add_option("--exp-method", a.exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")
         ->capture_default_str();
     cmd.add_flag("--no-band-correction", a.no_band_correction,
@@ -173,6 +178,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.bounce = a.bounce;
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     o.perspective.pixel_sun_shadows = a.shadow_detail == "pixel";
+    o.perspective.edge_samples = a.edge_samples;
     parse_mesh_specs(a.meshes);  // everything about --mesh that needs no DEM, checked now
     o.blocker_options = blocker_options(a.meshes);
     o.mesh_terrain_shadow = !a.meshes.no_mesh_terrain_shadow;

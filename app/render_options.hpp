@@ -40,6 +40,7 @@ struct RenderArgs {
     DeviceArgs device;                    // --device, --cpu, --verbose (app/compute_device.hpp)
     double haze_km = 250.0;
     std::string shadow_detail = "pixel";  // --shadow-detail pixel|texel (PerspectiveOptions::pixel_sun_shadows)
+    int edge_samples = 4;                 // --edge-samples N (PerspectiveOptions::edge_samples)
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
     std::string terrain_transfer = "exact";  // exact | log-sh

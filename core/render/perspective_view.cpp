@@ -109,10 +109,24 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
                         right.x * forward.y - right.y * forward.x};
     const double half = std::tan(radians(0.5 * camera.fov_deg));
     const double aspect = double(options_.height) / options_.width;
-    const double nudge = 1e-4 * std::min(dx, dy);
     frame_ = {cam_, dx, dy, curv, forward, right, up, half, half * aspect};
     pixels_.assign(std::size_t(options_.width) * options_.height, Pixel{});
 
+    parallel_rows(options_.height, options_.threads, options_.width * 400LL, [&](int j0, int j1) {
+        for (int j = j0; j < j1; ++j)
+            for (int i = 0; i < options_.width; ++i) pixels_[std::size_t(j) * options_.width + i] = trace(i + 0.5, j + 0.5);
+    });
+    antialias_silhouettes();
+    // Only the per-frame sun rays need the pyramid again.
+    if (!options_.pixel_sun_shadows) march_.reset();
+}
+
+PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
+    const terrain::HeightGrid& g = grid_;
+    const Frame& f = frame_;
+    const double dx = f.dx, dy = f.dy;
+    const double half_w = f.half_width, half_h = f.half_height;
+    const bool inside = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
     // The smooth surface's normal in ENU at texel-centre coordinates (rows run south: -y).
     auto normal_at = [&](double x, double y) {
         const terrain::SurfaceSample s = terrain::smooth_surface(g, x, y);
@@ -121,55 +135,90 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
         const double len = std::sqrt(gx * gx + gy * gy + 1.0);
         return std::isfinite(len) ? glm::vec3(float(-gx / len), float(-gy / len), float(1.0 / len)) : glm::vec3(0, 0, 1);
     };
-    parallel_rows(options_.height, options_.threads, options_.width * 400LL, [&](int j0, int j1) {
-        for (int j = j0; j < j1; ++j)
-            for (int i = 0; i < options_.width; ++i) {
-                const double a = (2.0 * (i + 0.5) / options_.width - 1.0) * half;
-                const double b = (1.0 - 2.0 * (j + 0.5) / options_.height) * half * aspect;
-                glm::dvec3 d = forward + a * right + b * up;
-                d /= std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                Pixel& px_out = pixels_[std::size_t(j) * options_.width + i];
-                px_out.dir = glm::vec3(d);
-                const double hl = std::hypot(d.x, d.y);
-                if (below_terrain_) {
-                    px_out.x = float(cam_.x), px_out.y = float(cam_.y);
-                    px_out.normal = normal_at(cam_.x, cam_.y);
-                    continue;
+    const double a = (2.0 * u / options_.width - 1.0) * half_w;
+    const double b = (1.0 - 2.0 * v / options_.height) * half_h;
+    glm::dvec3 d = f.forward + a * f.right + b * f.up;
+    d /= std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    Pixel out;
+    out.dir = glm::vec3(d);
+    const double hl = std::hypot(d.x, d.y);
+    if (below_terrain_) {
+        out.x = float(cam_.x), out.y = float(cam_.y);
+        out.normal = normal_at(cam_.x, cam_.y);
+        return out;
+    }
+    if (hl < 1e-9) {  // straight down (or up)
+        if (d.z < 0 && inside) {
+            out.x = float(cam_.x), out.y = float(cam_.y), out.distance = float(cam_.z - ground_m_);
+            out.normal = normal_at(cam_.x, cam_.y);
+        }
+        return out;
+    }
+    const SurfaceRay ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, f.curvature};
+    // Clip to the grid's box of patches.
+    double s0 = 0, s1 = std::numeric_limits<double>::infinity();
+    auto clip = [&](double origin, double w, double lo, double hi) {
+        if (std::abs(w) < 1e-15) {
+            if (origin < lo || origin > hi) s1 = -1;
+            return;
+        }
+        double ta = (lo - origin) / w, tb = (hi - origin) / w;
+        if (ta > tb) std::swap(ta, tb);
+        s0 = std::max(s0, ta), s1 = std::min(s1, tb);
+    };
+    clip(ray.x0, ray.ux, 0.0, g.width - 1.0);
+    clip(ray.y0, ray.uy, 0.0, g.height - 1.0);
+    if (!(s1 >= s0)) return out;
+    const double s = march_->first_hit(ray, s0, s1, 1e-4 * std::min(dx, dy));
+    if (s < 0) return out;
+    out.x = float(ray.x0 + s * ray.ux), out.y = float(ray.y0 + s * ray.uy);
+    out.normal = normal_at(out.x, out.y);
+    const double distance = s / hl;
+    out.distance = float(distance);
+    out.transmittance = options_.haze_distance_m > 0 ? float(std::exp(-distance / options_.haze_distance_m)) : 1.0f;
+    return out;
+}
+
+void PerspectiveView::antialias_silhouettes() {
+    const int n = options_.edge_samples, w = options_.width, h = options_.height;
+    if (n <= 1 || below_terrain_) return;
+    auto hit = [&](int i, int j) { return pixels_[std::size_t(j) * w + i].x >= 0; };
+    std::vector<std::uint32_t> edge;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const bool c = hit(i, j);
+            if ((i > 0 && hit(i - 1, j) != c) || (i + 1 < w && hit(i + 1, j) != c) || (j > 0 && hit(i, j - 1) != c) ||
+                (j + 1 < h && hit(i, j + 1) != c))
+                edge.push_back(std::uint32_t(j) * std::uint32_t(w) + std::uint32_t(i));
+        }
+    std::vector<Pixel> done(edge.size());
+    parallel_rows(int(edge.size()), options_.threads, 400LL * n * n, [&](int e0, int e1) {
+        for (int e = e0; e < e1; ++e) {
+            const int i = int(edge[std::size_t(e)] % std::uint32_t(w)), j = int(edge[std::size_t(e)] / std::uint32_t(w));
+            Pixel p = pixels_[edge[std::size_t(e)]];
+            int hits = 0;
+            double nearest = std::numeric_limits<double>::infinity();
+            Pixel first;
+            for (int b = 0; b < n; ++b)
+                for (int a = 0; a < n; ++a) {
+                    const double du = (a + 0.5) / n, dv = (b + 0.5) / n;
+                    const Pixel q = trace(i + du, j + dv);
+                    if (q.x < 0) continue;
+                    ++hits;
+                    const double off = (du - 0.5) * (du - 0.5) + (dv - 0.5) * (dv - 0.5);
+                    if (off < nearest) nearest = off, first = q;
                 }
-                if (hl < 1e-9) {  // straight down (or up)
-                    if (d.z < 0 && inside) {
-                        px_out.x = float(cam_.x), px_out.y = float(cam_.y), px_out.distance = float(cam_.z - ground);
-                        px_out.normal = normal_at(cam_.x, cam_.y);
-                    }
-                    continue;
-                }
-                const SurfaceRay ray{cam_.x, cam_.y, d.x / hl / dx, -d.y / hl / dy, cam_.z, d.z / hl, curv};
-                // Clip to the grid's box of patches.
-                double s0 = 0, s1 = std::numeric_limits<double>::infinity();
-                auto clip = [&](double origin, double u, double lo, double hi) {
-                    if (std::abs(u) < 1e-15) {
-                        if (origin < lo || origin > hi) s1 = -1;
-                        return;
-                    }
-                    double ta = (lo - origin) / u, tb = (hi - origin) / u;
-                    if (ta > tb) std::swap(ta, tb);
-                    s0 = std::max(s0, ta), s1 = std::min(s1, tb);
-                };
-                clip(ray.x0, ray.ux, 0.0, g.width - 1.0);
-                clip(ray.y0, ray.uy, 0.0, g.height - 1.0);
-                if (!(s1 >= s0)) continue;
-                const double s = march_->first_hit(ray, s0, s1, nudge);
-                if (s < 0) continue;
-                px_out.x = float(ray.x0 + s * ray.ux), px_out.y = float(ray.y0 + s * ray.uy);
-                px_out.normal = normal_at(px_out.x, px_out.y);
-                const double distance = s / hl;
-                px_out.distance = float(distance);
-                px_out.transmittance =
-                    options_.haze_distance_m > 0 ? float(std::exp(-distance / options_.haze_distance_m)) : 1.0f;
+            // A centre that missed takes the hit nearest it; the pixel's direction stays the centre's.
+            if (p.x < 0 && hits > 0) {
+                const glm::vec3 dir = p.dir;
+                p = first;
+                p.dir = dir;
             }
+            p.coverage = float(hits) / float(n * n);
+            done[std::size_t(e)] = p;
+        }
     });
-    // Only the per-frame sun rays need the pyramid again.
-    if (!options_.pixel_sun_shadows) march_.reset();
+    for (std::size_t e = 0; e < edge.size(); ++e) pixels_[edge[e]] = done[e];
 }
 
 std::vector<glm::vec3> PerspectiveView::view_directions() const {
@@ -229,22 +278,25 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
             }
         return lit == dark ? -1.0f : lit ? 1.0f : 0.0f;
     };
+    // What a ray that misses the terrain sees.
+    auto sky_colour = [&](const glm::vec3& ray_dir) {
+        // Below the horizon a missing ray leaves the DEM: beyond it lies more land in the haze,
+        // which the sky just above the horizon stands for better than the model's dark ground.
+        glm::vec3 dir = ray_dir;
+        if (dir.z < kHorizonLift) {
+            const float hl = std::hypot(dir.x, dir.y);
+            const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
+            dir = hl > 0 ? glm::vec3(dir.x / hl * c_lift, dir.y / hl * c_lift, kHorizonLift) : glm::vec3(1, 0, 0);
+        }
+        glm::vec3 c = sky.lookup(dir);
+        if (glm::dot(ray_dir, sun_dir) >= float(sun_cos_radius)) c += sun_radiance;
+        return c;
+    };
     parallel_rows(options_.height, options_.threads, options_.width * (pixel_shadows ? 400LL : 30LL), [&](int j0, int j1) {
         for (std::size_t k = std::size_t(j0) * options_.width; k < std::size_t(j1) * options_.width; ++k) {
             const Pixel& p = pixels_[k];
             if (p.x < 0) {
-                // Below the horizon a missing ray leaves the DEM: beyond it lies more land in
-                // the haze, which the sky just above the horizon stands for better than the
-                // model's dark ground.
-                glm::vec3 dir = p.dir;
-                if (dir.z < kHorizonLift) {
-                    const float hl = std::hypot(dir.x, dir.y);
-                    const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
-                    dir = hl > 0 ? glm::vec3(dir.x / hl * c_lift, dir.y / hl * c_lift, kHorizonLift) : glm::vec3(1, 0, 0);
-                }
-                glm::vec3 c = sky.lookup(dir);
-                if (glm::dot(p.dir, sun_dir) >= float(sun_cos_radius)) c += sun_radiance;
-                image[k] = c;
+                image[k] = sky_colour(p.dir);
                 continue;
             }
             float fx = 0, fy = 0;
@@ -290,6 +342,8 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                     hl > 0 ? glm::vec3(p.dir.x / hl * c_lift, p.dir.y / hl * c_lift, kHorizonLift) : glm::vec3(0, 0, 1);
                 c = c * p.transmittance + sky.lookup(horizon) * (1 - p.transmittance);
             }
+            // A silhouette pixel: the terrain over the share of its rays that hit it.
+            if (p.coverage < 1) c = c * p.coverage + sky_colour(p.dir) * (1 - p.coverage);
             image[k] = c;
         }
     });

@@ -15,6 +15,10 @@
 // over the same surface from every lit hit whose patch's texels the frame's shadows split, for
 // the visible share of the disc, so a shadow's edge falls where it does at the pixel, not where
 // a bilinear blend of the texels' puts it; the meshes' shadows are found at every hit.
+// Silhouettes (PerspectiveOptions::edge_samples): a pixel whose ray and a neighbour's disagree
+// on hitting the terrain casts a grid of rays across its area; the share that hits weighs the
+// terrain's colour against the sky's. One ray per pixel drew a near-level skyline against a
+// bright sky as a staircase (runs of 40-80 pixels, one-pixel steps).
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -78,6 +82,8 @@ struct PerspectiveOptions {
     // Sun shadows found per pixel by a ray towards the sun (the header) rather than blended
     // from the texels' visible fractions, whose edges are a texel wide and stair-stepped.
     bool pixel_sun_shadows = true;
+    // Rays across each silhouette pixel, N x N (`--edge-samples`; 1 = the centre's alone).
+    int edge_samples = 4;
     int threads = 0;
 };
 
@@ -117,6 +123,8 @@ public:
     const Frame& frame() const { return frame_; }
     // Distance in metres along pixel k's ray to the terrain (infinity where it misses).
     float terrain_distance(std::size_t k) const { return pixels_[k].distance; }
+    // The share of pixel k the terrain covers: 1 or 0, fractional on its silhouette.
+    float terrain_coverage(std::size_t k) const { return pixels_[k].x >= 0 ? pixels_[k].coverage : 0.0f; }
     glm::vec3 ray_direction(std::size_t k) const { return pixels_[k].dir; }
     // The smooth surface's unit normal (ENU) where pixel k's ray hits ((0, 0, 1) on a miss).
     glm::vec3 surface_normal(std::size_t k) const { return pixels_[k].normal; }
@@ -130,7 +138,12 @@ private:
         float distance = std::numeric_limits<float>::infinity();  // to the hit along the ray, metres
         glm::vec3 dir{0, 0, 1};      // ray direction (ENU)
         glm::vec3 normal{0, 0, 1};   // the smooth surface's at the hit (ENU)
+        float coverage = 1;          // share of the pixel's rays that hit (silhouettes; else 1 or ignored)
     };
+    // The camera's ray through continuous pixel coordinates (u, v) (pixel i spans [i, i + 1)).
+    Pixel trace(double u, double v) const;
+    // Silhouette pixels: their coverage, and a hit for a pixel whose centre missed.
+    void antialias_silhouettes();
     const terrain::HeightGrid& grid_;
     PerspectiveOptions options_;
     glm::dvec3 cam_{0.0};  // camera in (texel-centre col, texel-centre row, height m)

@@ -72,6 +72,7 @@ void print_json(const dem::Dem& d, const InfoOptions& opts, const dem::HeightSta
     j["nodata_hole_count"] = kinds.hole_texels;
     j["nodata_holes"] = kinds.holes;
     j["vertical_datum"] = d.vertical_datum;
+    j["credit"] = d.credit;
     std::cout << j.dump(2) << "\n";
 }
 
@@ -102,6 +103,7 @@ void print_text(const dem::Dem& d, const dem::HeightStats& s) {
                     d.vertical_datum.c_str());
     else
         std::printf("  heights      none (every cell is a void)\n");
+    if (!d.credit.empty()) std::printf("  credit       %s\n", d.credit.c_str());
     const double total = double(d.width) * double(d.height);
     std::printf("  voids        %zu of %.0f cells (%.3f %%)\n", s.void_count, total, 100.0 * double(s.void_count) / total);
     if (s.void_count && s.valid_count) {

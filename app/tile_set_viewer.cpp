@@ -35,8 +35,10 @@ std::string insolation_title(const TilesArgs& a, int quantity) {
     return std::string(what[quantity]) + " " + days;
 }
 
-// "elevation data: a.tif" (names are text: escaped, as the attribution may be read as HTML).
-std::string default_attribution(const std::vector<std::string>& files) {
+// "elevation data: " and who made the heights as the DEM says (dem::Dem::credit), else the
+// files' names (text: escaped, as the attribution may be read as HTML).
+std::string default_attribution(const std::vector<std::string>& files, const std::string& credit) {
+    if (!credit.empty()) return "elevation data: " + tiles::html_text(credit);
     std::string names;
     const std::size_t shown = std::min<std::size_t>(files.size(), 3);
     for (std::size_t i = 0; i < shown; ++i) names += (i ? ", " : "") + fs::path(files[i]).filename().string();
@@ -83,7 +85,7 @@ tiles::TileSetInfo tile_set_info(const std::string& name, const std::string& att
     info.name = name.empty() ? fs::path(dem_files.front()).stem().string() + " " + style : name;
     info.description = "terrashade " + style + ", " + std::to_string(job.tile_size) + "-px tiles";
     if (legend) info.description += ": " + legend->title + (legend->unit.empty() ? "" : " (" + legend->unit + ")");
-    info.attribution = attribution.empty() ? default_attribution(dem_files) : attribution;
+    info.attribution = attribution.empty() ? default_attribution(dem_files, dem.credit) : attribution;
     info.bounds = tiles::terrain_footprint(dem);  // the terrain, not a nodata collar
     info.minzoom = job.z0, info.maxzoom = job.z1;
     info.tile_size = job.tile_size;

@@ -12,6 +12,7 @@ struct DemLayout {
     int width = 0, height = 0;
     geo::Georef georef;                 // as mosaic(read_dem(...)) would give
     std::string vertical_datum = "unknown";
+    std::string credit;                 // Dem::credit
     std::string source;                 // the file(s), for messages
 };
 

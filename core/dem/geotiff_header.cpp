@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -93,6 +94,22 @@ std::string vertical_datum_from_gdal_metadata(TIFF* tif) {
     const std::string code = text.substr(at + key.size(), 3);
     if (code == "E96") return "EGM96 geoid";
     if (code == "E08") return "EGM2008 geoid";
+    return {};
+}
+
+// Who made the heights: the copyright tag, else what a Copernicus DEM's DTED metadata says (its
+// heights come from the TanDEM-X mission); empty when the file is silent.
+std::string credit_from_tiff(TIFF* tif) {
+    const char* copyright = nullptr;
+    if (TIFFGetField(tif, TIFFTAG_COPYRIGHT, &copyright) && copyright) {
+        std::string c = copyright;
+        while (!c.empty() && std::isspace(static_cast<unsigned char>(c.back()))) c.pop_back();
+        if (!c.empty()) return c;
+    }
+    const char* xml = nullptr;
+    if (TIFFGetField(tif, TIFFTAG_GDAL_METADATA, &xml) && xml &&
+        std::string(xml).find("name=\"DTED_DigitizingSystem\">TANDEMX") != std::string::npos)
+        return "Copernicus DEM (TanDEM-X) \u00a9 DLR e.V., Airbus Defence and Space, provided under COPERNICUS by the EU and ESA";
     return {};
 }
 
@@ -197,6 +214,7 @@ GeoTiffHeader read_geotiff_header(const raster::TiffFile& file, std::uint64_t ma
     h.layout.vertical_datum = geo.vertical_datum;
     if (h.layout.vertical_datum == "unknown")
         if (std::string v = vertical_datum_from_gdal_metadata(tif); !v.empty()) h.layout.vertical_datum = v;
+    h.layout.credit = credit_from_tiff(tif);
     return h;
 }
 

@@ -52,6 +52,7 @@ DemLayout hgt_layout(int side, const std::string& name, const std::string& sourc
     layout.width = layout.height = side;
     layout.georef = geo::Georef(side, side, t, geo::Crs::wgs84(), /*pixel_is_area=*/false);
     layout.vertical_datum = "EGM96 geoid";
+    layout.credit = "SRTM (NASA, NGA)";
     layout.source = source;
     return layout;
 }

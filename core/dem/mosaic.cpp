@@ -60,6 +60,9 @@ MosaicPlan plan_mosaic(const std::vector<DemLayout>& parts) {
     out.vertical_datum = first.vertical_datum;
     for (std::size_t k = 0; k < parts.size(); ++k) {
         if (parts[k].vertical_datum != out.vertical_datum) out.vertical_datum = "mixed";
+        // Each source credited once.
+        if (!parts[k].credit.empty() && out.credit.find(parts[k].credit) == std::string::npos)
+            out.credit += (out.credit.empty() ? "" : "; ") + parts[k].credit;
         out.source += (k ? " + " : "") + parts[k].source;
         plan.offsets.emplace_back(int(offsets[k].first - min_c), int(offsets[k].second - min_r));
     }

@@ -9,6 +9,7 @@ namespace ts::tiles {
 dem::Dem dem_level(const dem::Dem& dem, int level, int threads) {
     dem::Dem out;
     out.vertical_datum = dem.vertical_datum;
+    out.credit = dem.credit;
     out.source = dem.source;
     out.width = dem.width, out.height = dem.height;
     out.z = dem.z;

@@ -71,7 +71,9 @@ TEST(TilesViewer, TileJsonDescribesTheSetAndTheLegendOfItsQuantity) {
     EXPECT_EQ(tj.at("maxzoom"), 10);
     EXPECT_EQ(tj.at("tile_size"), 256);
     EXPECT_EQ(tj.at("name"), "grenoble_500px insolation");
-    EXPECT_EQ(tj.at("attribution"), "elevation data: grenoble_500px.tif");
+    // The source the DEM's own metadata names (a Copernicus DEM tile's DTED header), not its file.
+    EXPECT_EQ(tj.at("attribution"), "elevation data: Copernicus DEM (TanDEM-X) \u00a9 DLR e.V., Airbus Defence and Space, "
+                                    "provided under COPERNICUS by the EU and ESA");
     // The crop's footprint (to half a 0.002-degree texel), the centre inside it at a zoom of the set.
     const auto& b = tj.at("bounds");
     ASSERT_EQ(b.size(), 4u);

@@ -61,6 +61,7 @@ void write_tiff(const std::filesystem::path& path, const TiffSpec& s, const std:
     TIFFSetField(tif, TIFFTAG_PHOTOMETRIC, s.spp == 3 ? PHOTOMETRIC_RGB : PHOTOMETRIC_MINISBLACK);
     const std::size_t pixel_bytes = std::size_t(s.spp) * std::size_t(s.bits / 8);
     if (!s.nodata.empty()) TIFFSetField(tif, TIFFTAG_GDAL_NODATA, s.nodata.c_str());
+    if (!s.copyright.empty()) TIFFSetField(tif, TIFFTAG_COPYRIGHT, s.copyright.c_str());
     if (s.epsg >= 0) {
         double tie[6] = {0, 0, 0, s.x0, s.y0, 0};
         double scale[3] = {s.cell, s.cell, 0};

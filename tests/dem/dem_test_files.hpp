@@ -35,6 +35,7 @@ struct TiffSpec {
     bool geographic = true;
     bool pixel_is_point = false;
     std::string nodata;  // GDAL_NODATA text, empty for none
+    std::string copyright;  // TIFFTAG_COPYRIGHT, empty for none
     double x0 = 10, y0 = 1, cell = 0.25;
 };
 void write_tiff(const std::filesystem::path& path, const TiffSpec& spec, const std::vector<std::uint8_t>& samples);

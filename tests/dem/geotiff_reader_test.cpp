@@ -29,6 +29,7 @@ TEST(GeoTiffReader, PixelIsPointIsShiftedToEdges) {
     EXPECT_NEAR(ul.x, 4.999861111111112, 1e-12);
     EXPECT_NEAR(ul.y, 46.000138888888884, 1e-12);
     EXPECT_EQ(d.vertical_datum, "EGM2008 geoid");  // from its DTED_VerticalDatum=E08 metadata
+    EXPECT_EQ(d.credit.rfind("Copernicus DEM (TanDEM-X)", 0), 0u) << d.credit;  // DTED_DigitizingSystem=TANDEMX
 }
 
 TEST(GeoTiffReader, NodataValueAndFloatSamplesBecomeVoids) {
@@ -78,6 +79,18 @@ TEST(GeoTiffReader, TiledAndStrippedLayoutsOfEveryTypeReadTheSame) {
     EXPECT_EQ(d.void_count(), 1u);
     EXPECT_TRUE(d.is_void(5, 0));
     EXPECT_EQ(d.at(6, 0), 700.0f);
+}
+
+TEST(GeoTiffReader, TheCopyrightTagIsTheCreditAndSilenceIsNone) {
+    // What maps of it credit by default (docs/tiles.md, "Attribution"); a mosaic credits each once.
+    const fs::path dir = test_files::fresh_dir("tiff_credit");
+    test_files::TiffSpec spec;
+    spec.copyright = "Example Survey 2024, CC-BY 4.0  ";
+    test_files::write_tiff(dir / "a.tif", spec, test_files::as_bytes(std::vector<std::int16_t>(12, 5)));
+    EXPECT_EQ(read_dem(dir / "a.tif").credit, "Example Survey 2024, CC-BY 4.0");
+    spec.copyright.clear();
+    test_files::write_tiff(dir / "b.tif", spec, test_files::as_bytes(std::vector<std::int16_t>(12, 5)));
+    EXPECT_EQ(read_dem(dir / "b.tif").credit, "");
 }
 
 TEST(GeoTiffReader, ProjectedEpsgKeyGivesAProjectedCrs) {

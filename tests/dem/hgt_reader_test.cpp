@@ -23,6 +23,7 @@ TEST(HgtReader, SyntheticTileHasHeightsVoidsAndEdgeGeoref) {
     EXPECT_FALSE(d.georef.pixel_is_area());
     EXPECT_EQ(d.georef.crs().epsg(), 4326);
     EXPECT_EQ(d.vertical_datum, "EGM96 geoid");
+    EXPECT_EQ(d.credit, "SRTM (NASA, NGA)");
     // Centre of the south-west cell on (-77, -12); outer edge half a cell (1/2400 deg) beyond.
     const glm::dvec2 sw = d.georef.pixel_to_lonlat(0.5, 1200.5);
     EXPECT_NEAR(sw.x, -77.0, 1e-12);

@@ -237,15 +237,17 @@ PhysicalSky::NodeRadiance PhysicalSky::node_at(const glm::dvec3& dir) const {
     return n;
 }
 
-Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
+Rgb PhysicalSky::dome(const glm::dvec3& dir, double mie_phase_cap) const {
     const double z = dir.z > 0.0 ? std::min(dir.z, 1.0) : 0.0;
-    return with_phases(node_at(dir), glm::normalize(glm::dvec3(dir.x, dir.y, z)));
+    return with_phases(node_at(dir), glm::normalize(glm::dvec3(dir.x, dir.y, z)), mie_phase_cap);
+}
+
+Rgb PhysicalSky::sky_radiance(const glm::dvec3& dir) const {
+    return dome(dir, 1e300);
 }
 
 Rgb PhysicalSky::lighting_radiance(const glm::dvec3& dir) const {
-    if (!(dir.z > 0.0)) return ground_;
-    const double z = std::min(dir.z, 1.0);
-    return with_phases(node_at(dir), glm::normalize(glm::dvec3(dir.x, dir.y, z)), aureole_phase_cap_);
+    return dir.z > 0.0 ? dome(dir, aureole_phase_cap_) : ground_;
 }
 
 void PhysicalSky::light_aureole_with_sun(double max_half_angle_deg) {

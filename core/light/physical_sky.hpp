@@ -47,7 +47,7 @@ public:
     // Lights the aerosol's circumsolar aureole with the sun's disc: the Mie radiance within
     // min(max_half_angle_deg, the sun's elevation) of the sun, above its value at that angle,
     // leaves lighting_radiance() and joins sun().irradiance (SunDisc::aureole says how much).
-    // Why: order-4 SH spread a peak that holds ~30% of the sun's irradiance over 90 degrees, so
+    // Why: order-4 SH spread a peak that holds 4-13% of the beam (the sun 8-50 degrees up) over 90 degrees, so
     // texels in the sun's cast shadow still saw much of it (docs/lighting.md, "The aureole
     // lit with the sun"). The cap stays above the horizon, so a surface that sees all of it gets
     // exactly its irradiance through the sun's cosine; one that sees part gets the sun's share.
@@ -77,6 +77,8 @@ private:
     // A direction's radiance from its two integrals and the phase functions at its angle to the
     // sun; the Mie phase capped at `mie_phase_cap`.
     Rgb with_phases(const NodeRadiance& n, const glm::dvec3& unit_view, double mie_phase_cap = 1e300) const;
+    // The dome towards `dir` (clamped to the horizon) from the table, the Mie phase capped.
+    Rgb dome(const glm::dvec3& dir, double mie_phase_cap) const;
     glm::dvec3 view_direction(double elevation_rad, double relative_azimuth_rad) const;
 
     double turbidity_;

@@ -130,13 +130,14 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     // Water: Fresnel mirror of the tabulated sky (and the sun's disc) over a dark body.
     const float cos_disc = float(std::cos(disc.angular_radius_rad));
     const float solid_angle = float(std::numbers::pi * disc.angular_radius_rad * disc.angular_radius_rad);
+    const glm::vec3 disc_radiance = disc.disc_irradiance() / solid_angle;
     for (std::size_t k = 0; k < water_index.size(); ++k) {
         const std::size_t t = water_index[k];
         const glm::vec3 r = view_.water_r[k];
         const float f = view_.water_fresnel[k];
         glm::vec3 reflected = sky_table_.lookup(r) * view_.water_vis[k];
         const float v = sun_vis_[t] == sun_vis_[t] ? sun_vis_[t] : 0.0f;
-        if (sun_up && glm::dot(r, s) >= cos_disc) reflected += v * disc.disc_irradiance() / solid_angle;
+        if (sun_up && glm::dot(r, s) >= cos_disc) reflected += v * disc_radiance;
         const float cos_s = std::max(0.0f, s.z);
         // The body's irradiance / pi: the fused pass left it in out[t] (albedo 1 for water).
         const glm::vec3 body = fused ? out[t] : diffuse_rgb_[t] + v * cos_s * e_diffuse;

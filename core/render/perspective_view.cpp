@@ -97,8 +97,8 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     const double dx = g.dx_m[std::size_t(cam_row)], dy = g.dy_m[std::size_t(cam_row)];
     const double curv = visibility::curvature_factor(options_.curvature);
     const float ground = surface(g, std::clamp(cam_.x, 0.0, double(g.width - 1)), std::clamp(cam_.y, 0.0, double(g.height - 1)));
-    const bool inside = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
-    below_terrain_ = inside && !std::isnan(ground) && cam_.z <= double(ground);
+    camera_inside_ = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
+    below_terrain_ = camera_inside_ && !std::isnan(ground) && cam_.z <= double(ground);
     ground_m_ = double(ground);
 
     march_ = std::make_unique<SurfaceMarch>(g, options_.threads);
@@ -126,7 +126,6 @@ PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
     const Frame& f = frame_;
     const double dx = f.dx, dy = f.dy;
     const double half_w = f.half_width, half_h = f.half_height;
-    const bool inside = cam_.x >= 0 && cam_.y >= 0 && cam_.x <= g.width - 1 && cam_.y <= g.height - 1;
     // The smooth surface's normal in ENU at texel-centre coordinates (rows run south: -y).
     auto normal_at = [&](double x, double y) {
         const terrain::SurfaceSample s = terrain::smooth_surface(g, x, y);
@@ -148,7 +147,7 @@ PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
         return out;
     }
     if (hl < 1e-9) {  // straight down (or up)
-        if (d.z < 0 && inside) {
+        if (d.z < 0 && camera_inside_) {
             out.x = float(cam_.x), out.y = float(cam_.y), out.distance = float(cam_.z - ground_m_);
             out.normal = normal_at(cam_.x, cam_.y);
         }

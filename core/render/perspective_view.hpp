@@ -147,6 +147,7 @@ private:
     const terrain::HeightGrid& grid_;
     PerspectiveOptions options_;
     glm::dvec3 cam_{0.0};  // camera in (texel-centre col, texel-centre row, height m)
+    bool camera_inside_ = false;  // over the grid's box of texel centres
     bool below_terrain_ = false;
     double ground_m_ = 0;
     std::vector<Pixel> pixels_;

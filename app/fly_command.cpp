@@ -21,6 +21,7 @@
 #include "app/job_memory.hpp"
 #include "app/options/colors_option.hpp"
 #include "app/options/bounce_option.hpp"
+#include "app/options/sky_light_option.hpp"
 #include "app/options/directions_option.hpp"
 #include "app/options/max_error_option.hpp"
 #include "app/options/mesh_forward_option.hpp"
@@ -95,6 +96,7 @@ struct FlyArgs {
     std::string record = "fly_recording.csv";
     int directions = 16;
     render::BounceSettings bounce;
+    SkyLightArgs sky_light;
     double pixel_error = 2.0;
     double lod_quantile = 0.99;
     int patch_quads = 16;
@@ -316,6 +318,7 @@ void run_fly(const FlyArgs& a) {
     settings.sky = a.sky;
     settings.directions = a.directions;
     settings.bounce = a.bounce;
+    settings.sky_light = sky_light_settings(a.sky_light);
     settings.lod.pixel_error = a.pixel_error;
     settings.lod.patch_quads = a.patch_quads;
     settings.lod.error_quantile = a.lod_quantile;
@@ -457,6 +460,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
     add_directions_option(*cmd, args->directions, &args->directions_given);  // once per DEM
     add_bounce_options(*cmd, args->bounce);
+    add_sky_light_options(*cmd, args->sky_light);
     cmd->add_option("--pixel-error", args->pixel_error, "terrain LOD: screen-space geometric error goal in pixels")
         ->capture_default_str()
         ->each([a = args.get()](const std::string&) { a->pixel_error_given = true; });

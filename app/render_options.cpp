@@ -96,6 +96,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "visibility's exponential, whose floor lets ~10% of the blocked sky through; docs/rendering.md)")
         ->capture_default_str()
         ->check(CLI::IsMember({"exact", "log-sh"}));
+    add_sky_light_options(cmd, a.sky_light);
     add_device_options(cmd, a.device);
     cmd.add_option("--sun-shadows", a.sun_shadows,
                    "Per-frame sun shadows: sweep (fast, shadow heights along the sweep lines) or exact (the "
@@ -173,6 +174,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.band_correction = !a.no_band_correction;
     o.renderer.terrain_transfer = a.terrain_transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
                                                                  : render::RendererOptions::TerrainTransfer::exact;
+    o.renderer.sky_light = sky_light_settings(a.sky_light, a.terrain_transfer != "log-sh");
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.renderer.bounce = a.bounce;

@@ -14,6 +14,7 @@
 #include "app/io_plan.hpp"
 #include "app/mesh_options.hpp"
 #include "app/options/colors_option.hpp"
+#include "app/options/sky_light_option.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::app {
@@ -44,6 +45,7 @@ struct RenderArgs {
     std::string exp_method = "scaling_squaring";
     bool no_band_correction = false;
     std::string terrain_transfer = "exact";  // exact | log-sh
+    SkyLightArgs sky_light;                  // --sky-light, --sky-sectors (app/options/sky_light_option.hpp)
     std::string sun_shadows = "sweep";  // --sun-shadows sweep|exact (RendererOptions::sun_method)
     render::BounceSettings bounce;        // --bounces, --bounce-directions, --bounce-radius
     int threads = 0;

@@ -99,6 +99,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         "insolation: the colour ramp's ends LO,HI in the quantity's unit (default: from open flat ground's value; "
         "docs/tiles.md)"));
     add_bounce_options(cmd, a.bounce);  // relief, color, lightable
+    add_sky_light_options(cmd, a.sky_light);  // relief, color
     add_threads_option(cmd, a.threads);
     add_verbose_flag(cmd, a.verbose);
 }
@@ -223,6 +224,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.directions = a.directions;
     s.bounce = a.bounce;
     render::check_bounce_settings(s.bounce);
+    // The browser relights lightable tiles through SH, with the sky the SH path takes.
+    s.sky_light = sky_light_settings(a.sky_light, !s.style->data_tile());
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);

@@ -8,6 +8,7 @@
 
 #include "app/options/colors_option.hpp"
 #include "app/options/insolation_options.hpp"
+#include "app/options/sky_light_option.hpp"
 
 #include "core/dem/dem.hpp"
 #include "core/tiles/tile_export.hpp"
@@ -26,6 +27,7 @@ struct TilesArgs {
     std::string exaggeration = "auto";
     int directions = 16;
     render::BounceSettings bounce;  // --bounces, --bounce-directions, --bounce-radius
+    SkyLightArgs sky_light;         // --sky-light, --sky-sectors (relief, color)
     int block_texels = 2048;
     int block_halo = 256;
     std::string far_field = "balanced";

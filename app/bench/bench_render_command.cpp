@@ -203,7 +203,9 @@ void run_window(const BenchRenderOptions& o, const std::string& name, const dem:
     const double horizons_s = t0.milliseconds() / 1000.0;
 
     const std::vector<StudySun> suns = study_suns(o, dem);
-    const light::SkyOptions sky_options = light::parse_sky_options(o.sky);
+    // The sky the default renderer takes (its aureole stays in the sky over the horizons); the
+    // log-SH rows, which light through SH, are measured under the same sky.
+    const light::SkyOptions sky_options = render::sky_for(light::parse_sky_options(o.sky), render::SkyLightSettings{});
     std::vector<SunReference> refs;
     for (const StudySun& s : suns) {
         SunReference r;

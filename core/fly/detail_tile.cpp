@@ -100,6 +100,7 @@ DetailTile::DetailTile(DetailTileKey key, const DetailTileLayout& layout, const 
     so.colors = render::fit_colors(options.colors, overview.points);
     so.renderer.directions = options.directions;
     so.renderer.bounce = options.bounce;
+    so.renderer.sky_light = options.sky_light;
     so.renderer.threads = options.threads;
     const visibility::ReceiverWindow window{window_col0_, window_row0_, w.width, w.height};
     const visibility::ReceiverWindow core{col0_, row0_, samples_x_, samples_y_};

@@ -20,6 +20,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/render/bounce_transfer.hpp"
+#include "core/render/horizon_sky_light.hpp"
 #include "core/dem/dem.hpp"
 #include "core/dem/dem_source.hpp"
 #include "core/fly/terrain_overview.hpp"
@@ -57,6 +58,7 @@ struct DetailShadingOptions {
     int halo = 64;           // level-0 texels read around a tile for its shading
     int directions = 16;     // horizon azimuths
     render::BounceSettings bounce;  // light bounced off the terrain
+    render::SkyLightSettings sky_light;  // the sky's light over the horizons or through SH
     std::string sky = "clear";
     render::ColorDesign colors;  // percent stops fitted to the overview's heights, so tiles agree
     int threads = 0;

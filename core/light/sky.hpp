@@ -41,6 +41,7 @@ struct SkyOptions {
     double overcast_brightness = 1.0;  // scales the overcast zenith luminance
     bool multiple_scattering = true;   // physical: light scattered more than once as well
     double aureole_deg = 30.0;         // physical: PhysicalSky::light_aureole_with_sun's largest cap
+    bool aureole_given = false;        // the spec named aureole= (else a renderer may pick its own)
     std::string hdr_path;
     double hdr_rotation_deg = 0.0;  // azimuth (clockwise from north) of the map's centre column
     double hdr_scale = 1.0;

@@ -153,6 +153,7 @@ SkyOptions parse_sky_options(std::string_view text) {
             o.multiple_scattering = v == "multiple";
         } else if (kv.key == "aureole" && o.kind == SkyOptions::Kind::physical) {
             o.aureole_deg = parse_number("aureole", kv.value);
+            o.aureole_given = true;
             check_range("aureole", o.aureole_deg, 0.0, 90.0);
         } else if (kv.key == "brightness" && o.kind == SkyOptions::Kind::overcast) {
             o.overcast_brightness = parse_number("brightness", kv.value);

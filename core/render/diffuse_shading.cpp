@@ -95,6 +95,7 @@ struct FrameConstants {
     float r[16], g[16], b[16];
     float s[3], e[3];
     float y[16], e_sun[3];  // the sun's direction in SH, Y_i(s), and E_sun (the bounce's sun part)
+    const glm::vec3* sky_add = nullptr;  // per texel, added to <T, L> before its clamp (or none)
 };
 
 template <class Load, class BlockT>
@@ -113,6 +114,13 @@ template <class Load, class BlockT>
             g += x * c.g[i];
             bl += x * c.b[i];
         }
+        const std::size_t t = b * kLanes;
+        const std::size_t n = std::min<std::size_t>(kLanes, texels - t);
+        if (c.sky_add)
+            for (std::size_t k = 0; k < n; ++k) {
+                const glm::vec3 a = c.sky_add[t + k];
+                r[k] += a.x, g[k] += a.y, bl[k] += a.z;
+            }
         // Irradiance is never negative; a sky concentrated in a few degrees (the twilight glow
         // just after sunset) rings below 0 in 16 coefficients on slopes facing away from it.
         // Written so that a void's NaN stays NaN.
@@ -134,8 +142,6 @@ template <class Load, class BlockT>
         LoadSingle::load(z, blk.normal[2]);
         Float8 cos_s = x * c.s[0] + y * c.s[1] + z * c.s[2];
         cos_s = cos_s > zero ? cos_s : zero;
-        const std::size_t t = b * kLanes;
-        const std::size_t n = std::min<std::size_t>(kLanes, texels - t);
         Float8 v = zero;
         if (n == kLanes) std::memcpy(&v, vis + t, sizeof v);
         else
@@ -306,6 +312,12 @@ void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const floa
 void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis,
                            const glm::vec3& sun_dir, const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh,
                            glm::vec3* out, int threads) const {
+    shade(light_sh, sun_vis, sun_dir, e_diffuse, sun_sh, nullptr, out, threads);
+}
+
+void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis,
+                           const glm::vec3& sun_dir, const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh,
+                           const glm::vec3* sky_add, glm::vec3* out, int threads) const {
     const std::size_t texels = storage_->texels;
     if (texels == 0) return;
     if (!sun_vis || !out) throw std::invalid_argument("DiffuseShading::shade: null input or output array");
@@ -317,6 +329,7 @@ void DiffuseShading::shade(const std::array<glm::vec3, 16>& light_sh, const floa
     }
     for (int k = 0; k < 3; ++k) c.s[k] = sun_dir[k], c.e[k] = e_diffuse[k], c.e_sun[k] = e_diffuse[k] * kPiF;
     for (int i = 0; i < 16; ++i) c.y[i] = sun_sh[std::size_t(i)];
+    c.sky_add = sky_add;
     std::visit(
         [&](const auto& blocks) {
             const std::size_t count = blocks.size();

@@ -60,6 +60,11 @@ public:
     // (ignored without a bounce transfer).
     void shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis, const glm::vec3& sun_dir,
                const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh, glm::vec3* out, int threads) const;
+    // With more sky irradiance / pi per texel, `sky_add` [texels] (HorizonSkyLight's), added to
+    // <T, L> before the clamp at 0: then T holds what the sky light over the horizons leaves out.
+    void shade(const std::array<glm::vec3, 16>& light_sh, const float* sun_vis, const glm::vec3& sun_dir,
+               const glm::vec3& e_diffuse, const std::array<float, 16>& sun_sh, const glm::vec3* sky_add,
+               glm::vec3* out, int threads) const;
 
 private:
     struct Storage;

@@ -76,11 +76,19 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     const BlockerSkyClamp* clamp = state_.blocker_sky_clamp();
     // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
     // the backend's <T_d, L> then a second SoA loop otherwise.
+    const HorizonSkyLight* horizon_sky = state_.horizon_sky();
+    if (horizon_sky) {
+        sky_add_.resize(texels);
+        horizon_sky->irradiance_over_pi(sky, sky_add_.data(), threads);
+    }
+    const glm::vec3* sky_add = horizon_sky ? sky_add_.data() : nullptr;
     if (fused) {
-        fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, sun_sh, out.data(), threads);
+        fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, sun_sh, sky_add, out.data(), threads);
         if (clamp) clamp->apply(sky_sh, out.data(), threads);
     } else {
         state_.diffuse_field()->shade(sky_sh, diffuse_rgb_.data());
+        if (sky_add)
+            for (std::size_t t = 0; t < texels; ++t) diffuse_rgb_[t] += sky_add[t];
         if (clamp) clamp->apply(sky_sh, diffuse_rgb_.data(), threads);
         const MaterialRaster& m = state_.materials();
         const NormalField& nf = state_.normals();

@@ -67,6 +67,7 @@ private:
     light::DiffuseSkyProjector diffuse_sky_;  // the sky's SH for <T_d, L>, its fit kept per rule
     // Per-frame scratch, allocated once.
     std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
+    std::vector<glm::vec3> sky_add_;  // the sky light over the horizons, E / pi (when the state has it)
     std::vector<float> sun_vis_, terrain_sun_vis_;  // terrain_sun_vis_: only with other sun shadows
     light::SkyTable sky_table_{light::SkyGrid::whole_sphere(128, 64)};
     FrameTimings timings_;

@@ -49,6 +49,11 @@ geo::Georef extent_georef(const ExtentRequest& e, const geo::Georef& dem_georef)
 }
 
 Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), options_(options) {
+    // The log-SH terrain transfer has no horizons to integrate the sky over; the sky follows
+    // the sky light (its aureole in the sun's beam only for SH).
+    if (options_.renderer.terrain_transfer != RendererOptions::TerrainTransfer::exact)
+        options_.renderer.sky_light.mode = SkyLightSettings::Mode::sh;
+    options_.sky = sky_for(options_.sky, options_.renderer.sky_light);
     grid_ = std::make_unique<terrain::HeightGrid>(terrain::metric_view(dem_));
     // Meshes first: one off the DEM is an input error found before any heavy work.
     if (!options_.meshes.empty()) {

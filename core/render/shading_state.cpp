@@ -173,6 +173,12 @@ void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
     for (int i = 0; i < 16; ++i)
         for (std::size_t j = 0; j < m; ++j) t_rect[std::size_t(i) * n + at[j]] = t_blocked[std::size_t(i) * m + j];
     bound_changed(rect, changed, t_blocked.data(), t_terrain.data());
+    if (horizon_sky_) {
+        // The diffuse pass shades what the sky light over the horizons leaves out.
+        std::vector<float> own(16 * n);
+        gather(terrain_transfer_.data(), texels_, index, own.data());
+        for (std::size_t i = 0; i < own.size(); ++i) t_rect[i] -= own[i];
+    }
     if (diffuse_) diffuse_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
     else diffuse_field_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
 }
@@ -223,6 +229,12 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             horizon_transfer({&vis.horizons, &s.normals_, s.bounce_coefficients(), options.threads}, t_diffuse.data());
         else
             s.diffuse_transfer(log_sh, texels, nullptr, t_diffuse.data());
+        // The sky light over the horizons replaces the terrain's own <T, L>: kept to subtract.
+        std::vector<float> t_sky_part;
+        if (options.sky_light.mode == SkyLightSettings::Mode::horizons && s.exact_terrain()) {
+            s.horizon_sky_ = std::make_unique<HorizonSkyLight>(vis.horizons, s.normals_, options.sky_light, options.threads);
+            t_sky_part = t_diffuse;
+        }
         // With blockers: the texels they changed, with their terrain-only transfer.
         std::vector<std::uint32_t> changed;
         std::vector<float> t_terrain;
@@ -288,8 +300,16 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             gather(t_diffuse.data(), texels, changed, t_blocked.data());
             s.bound_changed({0, 0, grid.width, grid.height}, changed, t_blocked.data(), t_terrain.data());
         }
+        // What the diffuse pass shades: T_d, or with the sky light over the horizons what that
+        // leaves out (the bounce, the blockers' change).
+        std::vector<float> t_shaded;
+        if (!t_sky_part.empty()) {
+            t_shaded = t_diffuse;
+            for (std::size_t i = 0; i < t_shaded.size(); ++i) t_shaded[i] -= t_sky_part[i];
+        }
+        const float* t_shade = t_sky_part.empty() ? t_diffuse.data() : t_shaded.data();
         if (backend) {
-            s.diffuse_field_ = backend->keep_transfer(t_diffuse.data(), texels);
+            s.diffuse_field_ = backend->keep_transfer(t_shade, texels);
         } else {
             // Water texels get albedo 1 here: their fused result is then the body's irradiance / pi
             // (sky + sun), which the water pass weights by (1 - F) kWaterAlbedo.
@@ -298,7 +318,7 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
                 if (s.materials_.water[t]) albedo[0][t] = albedo[1][t] = albedo[2][t] = 1.0f;
             DiffuseShading::Inputs di;
             di.texels = texels;
-            di.transfer = t_diffuse.data();
+            di.transfer = t_shade;
             // Band correction scales band 3 by 0: only bands 0..2 (9 coefficients) carry light.
             di.coefficients = options.band_correction ? 9 : 16;
             di.normal[0] = s.normals_.x.data(), di.normal[1] = s.normals_.y.data(), di.normal[2] = s.normals_.z.data();

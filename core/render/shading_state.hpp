@@ -28,6 +28,7 @@
 #include "core/render/blocker_sky_clamp.hpp"
 #include "core/render/bounce_transfer.hpp"
 #include "core/render/diffuse_shading.hpp"
+#include "core/render/horizon_sky_light.hpp"
 #include "core/material/material.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/sh/exp_method.hpp"
@@ -80,6 +81,11 @@ struct RendererOptions {
     // clamped cosine. It removes the log-lobe's low bias under a low sun (docs/accuracy.md).
     // One-time cost: one exponentiation and a scaling pass.
     bool band_correction = true;
+    // The terrain's sky light: integrated over each texel's horizons in sectors of azimuth
+    // (horizons, the default; with the exact terrain transfer only: the log-SH one falls back
+    // to sh), the bounce and the mesh blockers still in SH; or all through SH, <T_d, L> (sh).
+    // horizon_sky_light.hpp. The sky a frame takes should be sky_for(sky, sky_light).
+    SkyLightSettings sky_light;
     // Where horizons and log-SH are computed (core/visibility/visibility_backend.hpp; must
     // outlive the state). nullptr: the CPU.
     visibility::VisibilityBackend* visibility = nullptr;
@@ -173,6 +179,9 @@ public:
     // they change (null without blockers). FrameRenderer applies it after the diffuse pass.
     const blockers::SphereBlockers& blockers() const { return blockers_; }
     const BlockerSkyClamp* blocker_sky_clamp() const { return sky_clamp_.get(); }
+    // The sky light over the horizons (SkyLightSettings::Mode::horizons), else null: each
+    // frame adds its E / pi to what the diffuse pass makes of T_d - T_terrain.
+    const HorizonSkyLight* horizon_sky() const { return horizon_sky_.get(); }
 
     // Mesh k of the blockers moves to `placed` (a moving mesh, relight --mesh-path): in the
     // bounding rectangle of its old and new sky footprints the terrain's log-SH is restored,
@@ -231,6 +240,7 @@ private:
     // bounce, what move_mesh starts from.
     std::vector<float> terrain_transfer_;
     std::unique_ptr<BlockerSkyClamp> sky_clamp_;
+    std::unique_ptr<HorizonSkyLight> horizon_sky_;
     std::unique_ptr<visibility::SunShadowSweep> sun_sweep_;
     std::unique_ptr<visibility::BlockerSunShadow> blocker_sun_;
 };

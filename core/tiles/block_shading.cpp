@@ -22,6 +22,7 @@ render::RendererOptions renderer_options(const TileShading& s, ProgressBar* prog
     o.outer_sun_shadow = std::move(outer_sun);
     o.directions = s.directions;
     o.bounce = s.bounce;
+    o.sky_light = s.sky_light;
     // The bounce's gather looks no farther than a block's halo (less the bilinear cell and a
     // texel), so that a block's core gathers the same terrain as the whole level does.
     o.bounce.gather.radius_texels =
@@ -49,7 +50,7 @@ std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::Mat
     const render::ViewShading view = render::compute_view_shading(*state, {});
     render::FrameRenderer frame(*state, view);
     const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
-    const auto sky = light::make_sky(s.sky, render::sun_direction(sun));
+    const auto sky = light::make_sky(render::sky_for(s.sky, s.sky_light), render::sun_direction(sun));
     std::vector<glm::vec3> radiance;
     frame.render(*sky, sun, radiance);
     return radiance;

@@ -115,6 +115,13 @@ std::string describe_job(const TileJob& job) {
                                          std::to_string(s.bounce.gather.directions) + "_" +
                                          number(s.bounce.gather.radius_texels) + "\""
                                    : "";
+    // Only when the sky's light is integrated over the horizons (tiles made before were all SH).
+    const bool rendered = s.style->takes_relief_contrast() || s.style->colours_land();
+    const std::string sky_light =
+        rendered && s.sky_light.mode == render::SkyLightSettings::Mode::horizons
+            ? ",\"sky_light\":\"horizons_" + std::to_string(s.sky_light.sectors) + "_" +
+                  std::to_string(s.sky_light.elevation_steps) + "\""
+            : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -124,7 +131,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + sky_fingerprint(s.sky) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + insolation + light + bounce + "}\n";
+           by_zoom + max_error + dem + colors + insolation + light + bounce + sky_light + "}\n";
 }
 
 LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) {

@@ -9,6 +9,7 @@
 
 #include "core/light/sky.hpp"
 #include "core/render/bounce_transfer.hpp"
+#include "core/render/horizon_sky_light.hpp"
 #include "core/material/palette_materials.hpp"
 
 namespace ts::tiles {
@@ -122,6 +123,9 @@ struct TileShading {
     render::ColorDesign colors;  // color: the land colours, fitted to the whole DEM's heights
     int directions = 16;       // horizon azimuths of the visibility (relief, svf, color, insolation: 64)
     render::BounceSettings bounce;  // light bounced off the terrain (relief, color, lightable)
+    // The sky's light over the horizons or through SH (relief, color; lightable tiles are lit by
+    // the browser through SH: sh there).
+    render::SkyLightSettings sky_light;
     // --max-error (relief, color; > 0): a level shaded in blocks takes each block's directions
     // from the block's own roughness (quality::choose_radiance), so flat blocks get fewer; a
     // level in one block keeps `directions` (the zoom's choice). 0: every block `directions`.

@@ -32,6 +32,7 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
     options.colors = render::fit_colors(s.colors, dem);
     options.renderer.directions = s.directions;
     options.renderer.bounce = s.bounce;
+    options.renderer.sky_light = s.sky_light;
     ProgressBar bar("visibility", std::uint64_t(dem.width) * std::uint64_t(dem.height) * std::uint64_t(s.directions),
                     "rays");
     options.renderer.progress = &bar;
@@ -98,6 +99,7 @@ Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings
     co.shading.halo = settings_.detail_halo;
     co.shading.directions = settings_.directions;
     co.shading.bounce = settings_.bounce;
+    co.shading.sky_light = settings_.sky_light;
     co.shading.sky = settings_.sky;
     co.shading.colors = settings_.colors;  // the cache fits it on the overview, as make_scene does
     cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/render/bounce_transfer.hpp"
+#include "core/render/horizon_sky_light.hpp"
 #include "core/blockers/sphere_blocker.hpp"
 #include "core/blockers/sphere_hierarchy.hpp"
 #include "core/dem/dem.hpp"
@@ -49,6 +50,7 @@ struct FlySettings {
     ts::render::ColorDesign colors;  // --colors, --snow-line (percent stops fitted to the DEM flown)
     int directions = 16;
     ts::render::BounceSettings bounce;  // light bounced off the terrain (--bounces)
+    ts::render::SkyLightSettings sky_light;  // --sky-light, --sky-sectors
     fly::CdlodOptions lod;
     double haze_km = 250.0;
     double fov_deg = 60.0;

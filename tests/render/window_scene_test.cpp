@@ -112,9 +112,11 @@ TEST(WindowScene, ACoreShadedOnItsWindowWithTheFarFieldIsTheWholeDemsShading) {
         const char* time;
         double max_rms;  // relative, with the far field
     };
-    // Measured: 0.0132 and 0.0103 (0.0099 at noon under Preetham's sky, before the physical
-    // sky's beam carried its aureole: the shadow edges weigh 13% more).
-    for (const Case& k : {Case{"2024-12-21T07:45:00Z", 0.015}, Case{"2024-12-21T11:00:00Z", 0.0115}}) {
+    // Measured: 0.0174 and 0.0091 with the sky's light integrated over the horizons (through
+    // SH 0.0132 and 0.0103): under the 3.6 degree sun the sky's brightest part sits on the
+    // horizon next to the sun, where the far field's coarse horizons differ from the whole
+    // DEM's; SH spread that difference over its few coefficients.
+    for (const Case& k : {Case{"2024-12-21T07:45:00Z", 0.020}, Case{"2024-12-21T11:00:00Z", 0.0115}}) {
         const SunState sun = whole.sun_at(light::parse_utc_time(k.time));
         LinearImage want, got, plain;
         whole.render(sun, want);

@@ -5,7 +5,7 @@
 # relief; sun 20 degrees up in the south-east under terrashade's clear sky, and its overcast
 # sky; Cycles with 0 bounces (direct light) against terrashade's --bounces 0, and 4 (the
 # reference) against terrashade's 0, 1 and 2, and 1 with the log-SH terrain transfer
-# (--terrain-transfer log-sh); albedo 0.3 and 0.8. Writes docs/charts/cycles_bench.csv (about 15
+# (--terrain-transfer log-sh) and with the sky's light through SH (--sky-light sh); albedo 0.3 and 0.8. Writes docs/charts/cycles_bench.csv (about 15
 # minutes on 2 cores). CYCLES_WORK=DIR keeps the renders there (scripts/cycles_figure.sh can reuse
 # them with the same DIR).
 # Usage: scripts/cycles_bench.sh [BUILD_DIR] [SAMPLES]
@@ -27,7 +27,7 @@ csv="$root/docs/charts/cycles_bench.csv"
 "$root/scripts/cycles_held_out_dem.sh" "$work/anatolia_tm90.tif"
 gdal_translate -q -srcwin 20 480 160 160 "$work/anatolia_tm90.tif" "$work/crop.tif"
 
-echo "case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias" >"$csv"
+echo "case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,terrashade_sky_light,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias" >"$csv"
 for albedo in 0.3 0.8; do
   for sky in clear overcast; do
     TERRASHADE_BOUNCES=0 "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 0 \
@@ -37,7 +37,10 @@ for albedo in 0.3 0.8; do
         "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
         135 20 | tee -a "$csv"
     done
-    REUSE_CYCLES=1 TERRASHADE_BOUNCES=1 TERRASHADE_TRANSFER=log-sh \
+    REUSE_CYCLES=1 TERRASHADE_BOUNCES=1 TERRASHADE_TRANSFER=log-sh TERRASHADE_SKY_LIGHT=sh \
+      "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
+      135 20 | tee -a "$csv"
+    REUSE_CYCLES=1 TERRASHADE_BOUNCES=1 TERRASHADE_SKY_LIGHT=sh \
       "$root/scripts/cycles_reference.sh" "$build" "$work/crop.tif" "$work/out" "$sky" "$albedo" 4 "$samples" \
       135 20 | tee -a "$csv"
   done

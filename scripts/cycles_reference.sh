@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One case of terrashade against Blender Cycles on the same crop, same sun, same sky, grey
 # Lambert terrain (docs/accuracy.md, "Against Blender Cycles"). Prints one CSV row:
-#   case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias
+#   case,sky,sun_elevation,albedo,bounces,terrashade_bounces,terrashade_transfer,terrashade_sky_light,samples,cycles_s,terrashade_s,correlation,relative_rmse,bias,fitted_scale,relative_rmse_after_fit,cast_shadow_texels,cast_shadow_relative_rmse,cast_shadow_bias
 # (cast_shadow_*: the texels in the terrain's cast shadow from the sun, facing it, on their own;
 # scripts/cycles_compare.py)
 # Usage: scripts/cycles_reference.sh BUILD_DIR CROP.tif OUT_DIR SKY ALBEDO BOUNCES SAMPLES [AZIMUTH ELEVATION]
@@ -12,7 +12,7 @@
 # Units match exactly: Cycles' world is terrashade's own sky radiance (kcd/m^2, dumped per
 # direction), its sun lamp terrashade's sun irradiance; terrashade renders grey:ALBEDO. No fitted
 # factor. Environment: TERRASHADE_BOUNCES, terrashade's --bounces (default 1); TERRASHADE_TRANSFER,
-# its --terrain-transfer (default exact); TERRASHADE_ARGS,
+# its --terrain-transfer (default exact); TERRASHADE_SKY_LIGHT, its --sky-light (default horizons); TERRASHADE_ARGS,
 # more options for terrashade; REUSE_CYCLES=1 keeps a Cycles render already in OUT_DIR (the same
 # case: same tag).
 set -euo pipefail
@@ -37,7 +37,7 @@ fi
 
 t0=$(date +%s.%N)
 "$build/app/terrashade" render "$crop" --colors "grey:$albedo" --bounces "${TERRASHADE_BOUNCES:-1}" \
-  --terrain-transfer "${TERRASHADE_TRANSFER:-exact}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
+  --terrain-transfer "${TERRASHADE_TRANSFER:-exact}" --sky-light "${TERRASHADE_SKY_LIGHT:-horizons}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
   --sun-elevation "$elevation" --no-curvature --cpu --threads "$threads" -o "$out/terrashade_$tag.exr" >/dev/null
 t1=$(date +%s.%N)
 terrashade_s=$(echo "$t1 - $t0" | bc)
@@ -46,4 +46,4 @@ oiiotool "$out/terrashade_$tag.exr" -d float -o "$out/terrashade_$tag.tif"
 json=$(/usr/bin/python3 "$root/scripts/cycles_compare.py" "$out/cycles_$tag.tif" "$out/terrashade_$tag.tif" \
   --dem "$crop" --sun-azimuth "$azimuth" --sun-elevation "$elevation")
 field() { echo "$json" | /usr/bin/python3 -c "import json,sys; print(json.load(sys.stdin).get('$1', ''))"; }
-echo "$tag,$sky,$elevation,$albedo,$bounces,${TERRASHADE_BOUNCES:-1},${TERRASHADE_TRANSFER:-exact},$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit),$(field cast_shadow_texels),$(field cast_shadow_relative_rmse),$(field cast_shadow_bias)"
+echo "$tag,$sky,$elevation,$albedo,$bounces,${TERRASHADE_BOUNCES:-1},${TERRASHADE_TRANSFER:-exact},${TERRASHADE_SKY_LIGHT:-horizons},$samples,$cycles_s,$(printf %.2f "$terrashade_s"),$(field correlation),$(field relative_rmse),$(field bias),$(field fitted_scale),$(field relative_rmse_after_fit),$(field cast_shadow_texels),$(field cast_shadow_relative_rmse),$(field cast_shadow_bias)"

@@ -1,6 +1,7 @@
 #include "core/light/hdr_sky.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +82,10 @@ const SkySh& HdrSky::cached_sh() const {
 const SkySh& HdrSky::cached_diffuse_sh() const {
     std::call_once(diffuse_sh_once_, [this] { diffuse_sh_ = project_diffuse_sky_sh(*this, default_sky_rule(*this)); });
     return diffuse_sh_;
+}
+
+double HdrSky::lighting_detail_rad() const {
+    return std::numbers::pi / std::max(1, image_.height);
 }
 
 std::string HdrSky::describe() const {

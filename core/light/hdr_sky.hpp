@@ -25,6 +25,8 @@ public:
     Rgb radiance(const glm::dvec3& dir) const override;
     SunDisc sun() const override { return sun_; }
     std::string describe() const override;
+    // A pixel: a sun in the map is a pixel or a few.
+    double lighting_detail_rad() const override;
 
     int width() const { return image_.width; }
     int height() const { return image_.height; }

@@ -73,6 +73,9 @@ public:
     // The radiance that shades: radiance() without what sun() carries of the sky (its
     // `aureole`). The SH projections and the exact references integrate this one.
     virtual Rgb lighting_radiance(const glm::dvec3& dir) const { return radiance(dir); }
+    // The angular size (radians) of the finest detail of the lighting radiance that carries
+    // light, for quadratures that sample it (a map's sun in its pixels); 0: smooth.
+    virtual double lighting_detail_rad() const { return 0.0; }
     virtual SunDisc sun() const = 0;
     virtual std::string describe() const = 0;  // one line for logs and --help examples
 };

@@ -60,7 +60,7 @@ private:
     std::size_t texels_ = 0;
     int sectors_ = 0, directions_ = 0, steps_ = 0;
     const NormalField& normals_;
-    std::vector<std::uint16_t> node_;  // [s][texel]: e0_s as the nearest look-up node (0xffff: void)
+    std::vector<std::uint16_t> node_;  // [texel][s]: e0_s as the nearest look-up node (0xffff: void)
 };
 
 }  // namespace ts::render

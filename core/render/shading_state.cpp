@@ -233,7 +233,8 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
         std::vector<float> t_sky_part;
         if (options.sky_light.mode == SkyLightSettings::Mode::horizons && s.exact_terrain()) {
             s.horizon_sky_ = std::make_unique<HorizonSkyLight>(vis.horizons, s.normals_, options.sky_light, options.threads);
-            t_sky_part = t_diffuse;
+            // The planes that carry light (the rest are 0).
+            t_sky_part.assign(t_diffuse.begin(), t_diffuse.begin() + std::ptrdiff_t(s.bounce_coefficients() * texels));
         }
         // With blockers: the texels they changed, with their terrain-only transfer.
         std::vector<std::uint32_t> changed;
@@ -302,12 +303,18 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
         }
         // What the diffuse pass shades: T_d, or with the sky light over the horizons what that
         // leaves out (the bounce, the blockers' change).
+        // (In place unless a lightable tile keeps the whole T_d.)
         std::vector<float> t_shaded;
+        float* t_shade = t_diffuse.data();
         if (!t_sky_part.empty()) {
-            t_shaded = t_diffuse;
-            for (std::size_t i = 0; i < t_shaded.size(); ++i) t_shaded[i] -= t_sky_part[i];
+            if (options.keep_diffuse_transfer) t_shaded = t_diffuse, t_shade = t_shaded.data();
+            for (std::size_t i = 0; i < t_sky_part.size(); ++i) {
+                // What is left is the bounce and the blockers' change; the subtraction's rounding
+                // below 1e-6 goes (fp16 would keep it as slow subnormals).
+                const float v = t_shade[i] - t_sky_part[i];
+                t_shade[i] = std::abs(v) < 1e-6f ? 0.0f : v;
+            }
         }
-        const float* t_shade = t_sky_part.empty() ? t_diffuse.data() : t_shaded.data();
         if (backend) {
             s.diffuse_field_ = backend->keep_transfer(t_shade, texels);
         } else {

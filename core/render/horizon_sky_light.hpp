@@ -1,6 +1,6 @@
 #pragma once
 // The terrain's sky light integrated over its own horizons (`--sky-light horizons`; docs/rendering.md,
-// "Sky light over the horizons"). Per texel, in S sectors of azimuth,
+// "The sky's light over the horizons"). Per texel, in S sectors of azimuth,
 //
 //   E / pi = 1/pi  sum_s  sum_k  n_k  C_s,k(e0_s),
 //   C_s,k(e) = int_{phi in sector s} int_e^{pi/2}  L(w) w_k cos e' de' dphi,   w = (cos e' cos phi, cos e' sin phi, sin e')
@@ -11,7 +11,7 @@
 // Against <T, L> of the same texel (horizon_transfer.hpp) this drops only the SH truncation of
 // the product: an anisotropic sky (the physical sky's bright horizon band) in 9 or 16
 // coefficients times a transfer with a sharp horizon. On the Anatolia crop under a 20 degree sun
-// the sky's part was off by 6.8% RMS that way (docs/accuracy.md).
+// the sky's part was off by 6.8% RMS that way against Blender Cycles (docs/rendering.md).
 //
 // The renderer adds it to <T_d - T_terrain, L>, where T_terrain is the same texel's exact
 // projected transfer: the bounce and the mesh blockers keep their SH terms.
@@ -53,10 +53,11 @@ public:
     int sectors() const { return sectors_; }
     // E / pi of every texel (the sky's units; NaN for void texels) under `sky` into `out` [texels].
     void irradiance_over_pi(const light::Sky& sky, glm::vec3* out, int threads) const;
+
+private:
     // The per-frame table: C_s,k at node m, [(s * (steps + 1) + m) * 3 + k].
     std::vector<glm::vec3> table(const light::Sky& sky) const;
 
-private:
     std::size_t texels_ = 0;
     int sectors_ = 0, directions_ = 0, steps_ = 0;
     const NormalField& normals_;

@@ -108,11 +108,16 @@ void run_render(const RenderCommandArgs& a) {
                 time ? (" at " + light::format_utc_time(*time)).c_str() : "");
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
-    std::printf("visibility %.3f s + transfer %.3f s (%d directions; bounced light %.3f s of it, %d bounce%s), "
+    const render::HorizonSkyLight* horizon_sky = scene->state().horizon_sky();
+    const std::string sky_light = horizon_sky ? "sky light over the horizons in " +
+                                                    std::to_string(horizon_sky->sectors()) + " sectors"
+                                              : std::string("sky light through SH");
+    std::printf("visibility %.3f s + transfer %.3f s (%d directions; bounced light %.3f s of it, %d bounce%s; %s), "
                 "frame %.3f s, on %s\n",
                 scene->state().visibility_seconds(), scene->state().transfer_seconds(), directions,
                 scene->state().bounce_seconds(), scene->state().options().bounce.bounces,
-                scene->state().options().bounce.bounces == 1 ? "" : "s", frame_s, device.name().c_str());
+                scene->state().options().bounce.bounces == 1 ? "" : "s", sky_light.c_str(), frame_s,
+                device.name().c_str());
     if (!raster::written_as(a.out, raster::ImageWriter::exr))
         std::printf("exposure: %s (scale %.4g)\n", exposure.automatic ? "auto" : a.render.exposure.c_str(), scale);
     if (const render::ReliefContrastApplied rc = scene->last_relief_contrast(); rc.k != 1.0) {

@@ -5,10 +5,12 @@
 // per frame: sky SH L (the diffuse fit for T_d, project_diffuse_sky_sh; the projection for T_s,
 // project_sky_sh), sky table (water), sun visibility (the state's sweep),
 // then per texel
-//   L_out = albedo <T_d, L> + ks <T_s, L>
+//   L_out = albedo (E_h / pi + <T_d - T_h, L>) + ks <T_s, L>
 //         + sun_vis E_sun [albedo/pi max(0, n.s) + ks (alpha+1)/(2 pi) max(0, r.s)^alpha [n.s > 0]]
 //   water: F L_sky(r) V(r) + (1 - F) 0.02 <T_d, L> + sun glint F L_sun [r in the disc] + (1 - F) 0.02/pi E_sun n.s
-// (<T_d, L> of texels mesh blockers change: at most the terrain's alone, blocker_sky_clamp.hpp;
+// (E_h / pi the sky's light over the texel's horizons and T_h its own exact transfer, with
+// `--sky-light horizons`, else 0: horizon_sky_light.hpp; <T_d, L> of texels mesh blockers
+// change: at most the terrain's alone, blocker_sky_clamp.hpp;
 // T_d: shading_state.hpp; T_s, r, F, V(r): view_shading.hpp; the BRDFs: docs/rendering.md).
 //
 //   auto state = compute_shading_state(grid, materials, normals, options);   // once

@@ -56,6 +56,16 @@ void gather(const float* from, std::size_t from_n, std::span<const std::uint32_t
         for (std::size_t k = 0; k < n; ++k) to[std::size_t(i) * n + k] = from[std::size_t(i) * from_n + index[k]];
 }
 
+// What the diffuse pass shades with the sky's light over the horizons: the transfer less the
+// terrain's own (the bounce and what blockers change stay). The subtraction's rounding below
+// 1e-6 goes: fp16 would keep it as subnormals, slow to convert.
+void subtract_own_transfer(float* transfer, const float* own, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const float v = transfer[i] - own[i];
+        transfer[i] = std::abs(v) < 1e-6f ? 0.0f : v;
+    }
+}
+
 }  // namespace
 
 void ShadingState::diffuse_transfer(const float* log_sh, std::size_t n, const std::uint32_t* index,
@@ -174,10 +184,9 @@ void ShadingState::update_blocked_rect(const visibility::TexelRect& rect) {
         for (std::size_t j = 0; j < m; ++j) t_rect[std::size_t(i) * n + at[j]] = t_blocked[std::size_t(i) * m + j];
     bound_changed(rect, changed, t_blocked.data(), t_terrain.data());
     if (horizon_sky_) {
-        // The diffuse pass shades what the sky light over the horizons leaves out.
         std::vector<float> own(16 * n);
         gather(terrain_transfer_.data(), texels_, index, own.data());
-        for (std::size_t i = 0; i < own.size(); ++i) t_rect[i] -= own[i];
+        subtract_own_transfer(t_rect.data(), own.data(), own.size());
     }
     if (diffuse_) diffuse_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
     else diffuse_field_->update_rect(grid_.width, rect.col0, rect.row0, w, h, t_rect.data());
@@ -301,19 +310,13 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             gather(t_diffuse.data(), texels, changed, t_blocked.data());
             s.bound_changed({0, 0, grid.width, grid.height}, changed, t_blocked.data(), t_terrain.data());
         }
-        // What the diffuse pass shades: T_d, or with the sky light over the horizons what that
-        // leaves out (the bounce, the blockers' change).
-        // (In place unless a lightable tile keeps the whole T_d.)
+        // What the diffuse pass shades: T_d, or with the sky's light over the horizons what that
+        // leaves out (in place unless a lightable tile keeps the whole T_d).
         std::vector<float> t_shaded;
         float* t_shade = t_diffuse.data();
         if (!t_sky_part.empty()) {
             if (options.keep_diffuse_transfer) t_shaded = t_diffuse, t_shade = t_shaded.data();
-            for (std::size_t i = 0; i < t_sky_part.size(); ++i) {
-                // What is left is the bounce and the blockers' change; the subtraction's rounding
-                // below 1e-6 goes (fp16 would keep it as slow subnormals).
-                const float v = t_shade[i] - t_sky_part[i];
-                t_shade[i] = std::abs(v) < 1e-6f ? 0.0f : v;
-            }
+            subtract_own_transfer(t_shade, t_sky_part.data(), t_sky_part.size());
         }
         if (backend) {
             s.diffuse_field_ = backend->keep_transfer(t_shade, texels);

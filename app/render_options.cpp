@@ -174,7 +174,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.band_correction = !a.no_band_correction;
     o.renderer.terrain_transfer = a.terrain_transfer == "log-sh" ? render::RendererOptions::TerrainTransfer::log_sh
                                                                  : render::RendererOptions::TerrainTransfer::exact;
-    o.renderer.sky_light = sky_light_settings(a.sky_light, a.terrain_transfer != "log-sh");
+    o.renderer.sky_light = sky_light_settings(a.sky_light);
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.renderer.bounce = a.bounce;

@@ -225,7 +225,8 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     s.bounce = a.bounce;
     render::check_bounce_settings(s.bounce);
     // The browser relights lightable tiles through SH, with the sky the SH path takes.
-    s.sky_light = sky_light_settings(a.sky_light, !s.style->data_tile());
+    s.sky_light = sky_light_settings(a.sky_light);
+    if (s.style->data_tile()) s.sky_light.mode = render::SkyLightSettings::Mode::sh;
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);

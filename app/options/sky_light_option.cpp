@@ -19,10 +19,9 @@ void add_sky_light_options(CLI::App& cmd, SkyLightArgs& a) {
         ->check(within(1, 4096));
 }
 
-render::SkyLightSettings sky_light_settings(const SkyLightArgs& a, bool exact_terrain_transfer) {
+render::SkyLightSettings sky_light_settings(const SkyLightArgs& a) {
     render::SkyLightSettings s;
-    s.mode = a.mode == "sh" || !exact_terrain_transfer ? render::SkyLightSettings::Mode::sh
-                                                       : render::SkyLightSettings::Mode::horizons;
+    s.mode = a.mode == "sh" ? render::SkyLightSettings::Mode::sh : render::SkyLightSettings::Mode::horizons;
     s.sectors = a.sectors;
     return s;
 }

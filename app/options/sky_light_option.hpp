@@ -17,7 +17,8 @@ struct SkyLightArgs {
 
 void add_sky_light_options(CLI::App& cmd, SkyLightArgs& args);
 
-// The settings; the log-SH terrain transfer has no horizons to integrate over: sh.
-render::SkyLightSettings sky_light_settings(const SkyLightArgs& args, bool exact_terrain_transfer = true);
+// The settings (render::Scene takes sh for the log-SH terrain transfer, which has no horizons
+// to integrate over).
+render::SkyLightSettings sky_light_settings(const SkyLightArgs& args);
 
 }  // namespace ts::app

@@ -106,7 +106,12 @@ std::vector<glm::vec3> HorizonSkyLight::table(const light::Sky& sky) const {
     // Sector s starts where its first horizon azimuth's share begins: the exact transfer's
     // trapezoid rule gives azimuth d the span phi_d +- pi / D.
     const double phi0 = -kPi / directions_;
+    std::vector<double> cos_a(static_cast<std::size_t>(qa)), sin_a(static_cast<std::size_t>(qa));
     for (int s = 0; s < sectors_; ++s) {
+        for (int a = 0; a < qa; ++a) {
+            const double phi = phi0 + s * width + (a + 0.5) * width / qa;
+            cos_a[std::size_t(a)] = std::cos(phi), sin_a[std::size_t(a)] = std::sin(phi);
+        }
         glm::dvec3 acc[3] = {};
         glm::vec3* col = tab.data() + std::size_t(s) * m_count * 3;
         // Filled from the zenith down: node m_count - 1 is +90 degrees (nothing above it).
@@ -117,8 +122,7 @@ std::vector<glm::vec3> HorizonSkyLight::table(const light::Sky& sky) const {
                     const double e = -kPi / 2 + m * de + k * ds + ds * (0.5 + (q == 0 ? -g : g));
                     const double ce = std::cos(e), se = std::sin(e);
                     for (int a = 0; a < qa; ++a) {
-                        const double phi = phi0 + s * width + (a + 0.5) * width / qa;
-                        const glm::dvec3 w(ce * std::cos(phi), ce * std::sin(phi), se);
+                        const glm::dvec3 w(ce * cos_a[std::size_t(a)], ce * sin_a[std::size_t(a)], se);
                         const glm::dvec3 l = glm::dvec3(sky.lighting_radiance(w)) * (ce * 0.5 * ds * width / qa / kPi);
                         acc[0] += l * w.x;
                         acc[1] += l * w.y;

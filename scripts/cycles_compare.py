@@ -3,7 +3,7 @@
 "Against Blender Cycles"): Pearson correlation of luminance and relative RMSE = RMSE / mean(Cycles).
 
     /usr/bin/python3 scripts/cycles_compare.py CYCLES.tif TERRASHADE.tif [--terrashade-scale S] [--border B]
-        [--dem CROP.tif --sun-azimuth AZ --sun-elevation EL]
+        [--dem CROP.tif --sun-azimuth AZ --sun-elevation EL] [--alternative CYCLES_ALT.tif [--undecided F]]
 
 Both are float RGB rasters of the same size (Cycles' GeoTIFF from scripts/cycles_reference.py,
 terrashade's .exr converted to a float TIFF). --terrashade-scale multiplies terrashade's radiance
@@ -13,7 +13,12 @@ crop, so its border texels see open ground beyond where the DEM has more terrain
 one-sided border normals are not Cycles' triangles there. With --dem and the sun, the texels in
 the terrain's cast shadow (facing the sun, the whole disc below the horizon in its azimuth,
 marched on the DEM) are measured on their own as well: cast_shadow_relative_rmse is their RMSE
-over their mean Cycles radiance. Prints one JSON object.
+over their mean Cycles radiance. With --alternative, a second Cycles render of the same scene
+that differs only in a convention the scene does not decide (scripts/cycles_reference.py
+--terminator-offset 0: whether a texel whose smooth normal faces the sun is shadowed by the facet
+it sits on): texels where the two differ by more than --undecided (default 0.02) of the mean
+Cycles radiance are undecided, and the measures are given again over the rest (*_decided).
+Prints one JSON object.
 """
 import argparse
 import json
@@ -97,22 +102,39 @@ def main():
     p.add_argument("--dem", help="the crop both rendered, to measure the cast shadows on their own")
     p.add_argument("--sun-azimuth", type=float, help="degrees clockwise from north")
     p.add_argument("--sun-elevation", type=float, help="degrees")
+    p.add_argument("--alternative", help="Cycles under the other terminator convention, to find undecided texels")
+    p.add_argument("--undecided", type=float, default=0.02,
+                   help="texels where the two Cycles renders differ by more than this fraction of the mean")
     a = p.parse_args()
     cycles, terrashade = luminance(a.cycles), a.terrashade_scale * luminance(a.terrashade)
     result = compare(cycles, terrashade, a.border)
+    b = a.border
+    inner = np.zeros(cycles.shape, bool)
+    inner[b : cycles.shape[0] - b, b : cycles.shape[1] - b] = True
+    decided = inner.copy()
+    if a.alternative:
+        alternative = luminance(a.alternative)
+        if alternative.shape != cycles.shape:
+            sys.exit(f"cycles_compare: sizes differ, {cycles.shape} and {alternative.shape}")
+        undecided = np.abs(alternative - cycles) > a.undecided * cycles[inner].mean()
+        decided &= ~undecided
+        c, t = cycles[decided], terrashade[decided]
+        result["undecided_texels"] = int((inner & undecided).sum())
+        result["relative_rmse_decided"] = float(np.sqrt(np.mean((t - c) ** 2)) / cycles[inner].mean())
     if a.dem:
         if a.sun_azimuth is None or a.sun_elevation is None:
             sys.exit("cycles_compare: --dem needs --sun-azimuth and --sun-elevation")
-        mask = cast_shadow_mask(a.dem, a.sun_azimuth, a.sun_elevation)
-        b = a.border
-        if b > 0:
-            mask[:b, :] = mask[-b:, :] = False
-            mask[:, :b] = mask[:, -b:] = False
+        mask = cast_shadow_mask(a.dem, a.sun_azimuth, a.sun_elevation) & inner
         c, t = cycles[mask], terrashade[mask]
         result["cast_shadow_texels"] = int(mask.sum())
         if mask.any():
             result["cast_shadow_relative_rmse"] = float(np.sqrt(np.mean((t - c) ** 2)) / c.mean())
             result["cast_shadow_bias"] = float((t - c).mean() / c.mean())
+        if a.alternative and (mask & decided).any():
+            # Over the same mean as the whole cast shadow, so that the two figures compare.
+            d = mask & decided
+            result["cast_shadow_relative_rmse_decided"] = float(
+                np.sqrt(np.mean((terrashade[d] - cycles[d]) ** 2)) / c.mean())
     print(json.dumps({k: round(v, 6) if isinstance(v, float) else v for k, v in result.items()}))
 
 

@@ -16,7 +16,12 @@ Scene, chosen to be what terrashade's map view computes, with nothing approximat
   the relative RMSE (docs/accuracy.md);
 - shading normals set to terrashade's (central differences, one-sided at the border,
   core/terrain/terrain_normals.hpp) as custom split normals; shadows and visibility come from
-  the triangles themselves;
+  the triangles themselves, their rays leaving the surface with Cycles' shadow terminator
+  geometry offset (--terminator-offset, Cycles' default 0.1: a ray leaves from where the smooth
+  normals put the surface, so a texel whose smooth normal faces the sun is not shadowed by the
+  facet it sits on; 0: from the facet itself). Where the two differ the reference itself is
+  undecided (scripts/cycles_compare.py --alternative; docs/accuracy.md, "Where the reference is
+  undecided");
 - a Lambert material (Diffuse BSDF, roughness 0) of grey albedo --albedo;
 - the sky as a world shader: an equirectangular float map (--sky-map PREFIX, PREFIX.f32 and
   PREFIX.json as tests/light/sky_equirect_dump writes them from terrashade's own sky, so the
@@ -68,7 +73,12 @@ def parse_args():
     p.add_argument("--subdivide", type=int, default=4,
                    help="N x N quads per cell on the bilinear surface between the texel centres "
                         "(the surface terrashade's horizons sample); 1 = the plain grid of two triangles per cell")
+    p.add_argument("--terminator-offset", type=float, default=0.1,
+                   help="the terrain's shadow terminator geometry offset, 0..1 (Cycles' default 0.1; 0: "
+                        "shadow rays leave from the facets themselves)")
     args = p.parse_args(argv)
+    if not 0.0 <= args.terminator_offset <= 1.0:
+        p.error("--terminator-offset must be within 0..1")
     if args.sky == "map" and not args.sky_map:
         p.error("--sky map needs --sky-map PREFIX")
     return args
@@ -121,7 +131,7 @@ def bilinear_refine(a, n):
     return (a00 * (1 - fr) * (1 - fc) + a01 * (1 - fr) * fc + a10 * fr * (1 - fc) + a11 * fr * fc)
 
 
-def build_terrain(z, cell, albedo, subdivide=1):
+def build_terrain(z, cell, albedo, subdivide=1, terminator_offset=0.1):
     # Subdivided, the mesh follows the bilinear surface between the texel centres, which is what
     # terrashade's horizons and sun shadows sample; the plain grid's two triangles per cell put
     # the shadow edge up to a few metres elsewhere. The texel centres stay vertices (the camera's
@@ -151,6 +161,8 @@ def build_terrain(z, cell, albedo, subdivide=1):
     mesh.use_auto_smooth = True
     mesh.normals_split_custom_set_from_vertices([tuple(v) for v in normals.reshape(-1, 3)])
     obj = bpy.data.objects.new("terrain", mesh)
+    obj.cycles.shadow_terminator_geometry_offset = terminator_offset
+    obj.cycles.shadow_terminator_offset = 0.0  # the shading offset: none, as Cycles' default
     bpy.context.scene.collection.objects.link(obj)
 
     mat = bpy.data.materials.new("lambert")
@@ -284,7 +296,7 @@ def main():
         bpy.data.objects.remove(obj, do_unlink=True)
     z, cell, gt, wkt = read_dem(args.dem, args.srcwin)
     h, w = z.shape
-    build_terrain(z, cell, args.albedo, args.subdivide)
+    build_terrain(z, cell, args.albedo, args.subdivide, args.terminator_offset)
 
     sun_rgb = [args.sun_irradiance] * 3
     sun_diameter = math.radians(0.533)

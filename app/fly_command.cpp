@@ -318,6 +318,7 @@ void run_fly(const FlyArgs& a) {
     settings.sky = a.sky;
     settings.directions = a.directions;
     settings.bounce = a.bounce;
+    check_bounce_options(settings.bounce);  // before any heavy work
     settings.sky_light = sky_light_settings(a.sky_light);
     settings.lod.pixel_error = a.pixel_error;
     settings.lod.patch_quads = a.patch_quads;

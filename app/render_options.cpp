@@ -178,6 +178,7 @@ render::SceneOptions scene_options(const RenderArgs& a) {
     o.renderer.threads = a.threads;
     o.renderer.sun_method = visibility::parse_sun_method(a.sun_shadows);
     o.renderer.bounce = a.bounce;
+    check_bounce_options(o.renderer.bounce);  // before any heavy work
     o.perspective.haze_distance_m = a.haze_km * 1000.0;
     o.perspective.pixel_sun_shadows = a.shadow_detail == "pixel";
     o.perspective.edge_samples = a.edge_samples;

@@ -223,10 +223,14 @@ tiles::TileJob tile_job(const TilesArgs& a) {
     }
     s.directions = a.directions;
     s.bounce = a.bounce;
-    render::check_bounce_settings(s.bounce);
-    // The browser relights lightable tiles through SH, with the sky the SH path takes.
+    // The browser relights lightable tiles through SH, with the sky the SH path takes, and the
+    // bounce's sun part from T_b's SH (what the data tiles hold).
     s.sky_light = sky_light_settings(a.sky_light);
-    if (s.style->data_tile()) s.sky_light.mode = render::SkyLightSettings::Mode::sh;
+    if (s.style->data_tile()) {
+        s.sky_light.mode = render::SkyLightSettings::Mode::sh;
+        s.bounce.sun = render::BounceSettings::SunPart::sh;
+    }
+    check_bounce_options(s.bounce);
     s.block_texels = a.block_texels;
     s.block_halo_texels = a.block_halo;
     s.far_field = tiles::parse_far_field(a.far_field);

@@ -1,6 +1,7 @@
 #include "app/options/bounce_option.hpp"
 
 #include "app/options/within_range.hpp"
+#include "core/util/error.hpp"
 
 namespace ts::app {
 
@@ -14,10 +15,27 @@ void add_bounce_options(CLI::App& cmd, render::BounceSettings& b) {
                    "Azimuths of the bounced light's gather (a divisor of --directions; more: finer, slower)")
         ->capture_default_str()
         ->check(within(1, 1024));
+    cmd.add_option_function<std::string>(
+           "--bounce-sun",
+           [&b](const std::string& v) {
+               b.sun = v == "sh" ? render::BounceSettings::SunPart::sh : render::BounceSettings::SunPart::gather;
+           },
+           "The bounce's sun part: gather (per frame, from the light and shadow the terrain it sees really "
+           "gets) or sh (through the bounce transfer's SH: smooth, blind to cast shadows; what the browser "
+           "relights with) [gather]")
+        ->check(CLI::IsMember({"gather", "sh"}));
     cmd.add_option("--bounce-radius", b.gather.radius_texels,
                    "How far the bounced light's gather looks, texels (farther terrain is lit like open flat land)")
         ->capture_default_str()
         ->check(within(1, 1024));
+}
+
+void check_bounce_options(const render::BounceSettings& b) {
+    if (b.bounces > 0 && b.sun == render::BounceSettings::SunPart::gather &&
+        b.gather.radius_texels > render::kBounceSunGatherReach)
+        throw InputError("--bounce-radius above " + std::to_string(render::kBounceSunGatherReach) +
+                         " texels needs --bounce-sun sh (the sun's gather keeps the terrain it sees within that)");
+    render::check_bounce_settings(b);
 }
 
 }  // namespace ts::app

@@ -33,6 +33,9 @@ void check_bounce_settings(const BounceSettings& s) {
     if (s.bounces < 0 || s.bounces > 2)
         throw InputError("bounces: " + std::to_string(s.bounces) + ": must be 0, 1 or 2");
     visibility::check_gather_settings(s.gather, "bounced light");
+    if (s.bounces > 0 && s.sun == BounceSettings::SunPart::gather && s.gather.radius_texels > kBounceSunGatherReach)
+        throw InputError("bounced light: the sun's part gathered per frame reaches " +
+                         std::to_string(kBounceSunGatherReach) + " texels at most; a wider gather takes it through SH");
 }
 
 std::array<float, 16> flat_transfer() {
@@ -51,8 +54,9 @@ double blocked_view(const visibility::HorizonSet& horizons, std::size_t texel, c
                                     az.sin_phi.data(), n.x, n.y, n.z);
 }
 
-std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s) {
+std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s, BounceSunGather* sun) {
     check_bounce_settings(s);
+    if (sun) *sun = {};
     if (s.bounces == 0) return {};
     const terrain::HeightGrid& grid = *in.grid;
     const std::size_t texels = std::size_t(grid.width) * std::size_t(grid.height);
@@ -85,13 +89,29 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     const long long work_per_row = (long long)grid.width * (gather ? std::min(s.gather.directions, 64) * 16 : 32);
     const int d_count = in.horizons->directions;
     const AzimuthTable az(d_count);
+    // The sun part's weights, per row (bounce_sun_gather.hpp).
+    if (sun) {
+        sun->bounces = s.bounces;
+        sun->width = grid.width;
+        sun->rows.assign(std::size_t(grid.height), {});
+        sun->begin.assign(texels, 0);
+        sun->scale.assign(texels, 0.0f);
+        sun->far.assign(texels, 0.0f);
+    }
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         std::unique_ptr<visibility::TerrainGatherer> g;
-        if (gather) g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
+        if (gather) {
+            g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
+            g->set_recording(sun != nullptr);
+        }
+        std::size_t last_row_entries = 0;
+        std::vector<float> weights;
         for (int r = r0; r < r1; ++r) {
             if (g) g->set_row(r);
+            if (sun && r > r0) last_row_entries = sun->rows[std::size_t(r - 1)].size();
             for (int c = 0; c < grid.width; ++c) {
                 const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
+                if (sun) sun->begin[t] = std::uint32_t(sun->rows[std::size_t(r)].size());  // voids too
                 if (!valid(t)) continue;
                 double far_sr = 0, coef = 0;
                 if (g) {
@@ -108,6 +128,23 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                 const double far = far_sr / kPiD * in.albedo[t];
                 for (std::size_t i = 0; i < K; ++i)
                     out[i * texels + t] = float((g ? coef * g->seen()[i] : 0.0) + far * flat[i]);
+                if (sun) {
+                    sun->far[t] = float(far);
+                    if (g && !g->seen_texels().empty()) {
+                        const std::vector<std::uint32_t>& seen = g->seen_texels();
+                        weights.resize(seen.size());
+                        for (std::size_t k = 0; k < seen.size(); ++k)
+                            weights[k] = float(coef * g->seen_weights()[k] * in.albedo[seen[k]]);
+                        // What this row will need, from the last row this thread made (rows
+                        // alike), or about what rugged terrain needs (20.7 per texel on Grenoble):
+                        // a regrowth copies the row and touches new pages.
+                        std::vector<BounceSunGather::Entry>& row_entries = sun->rows[std::size_t(r)];
+                        if (row_entries.capacity() == 0)
+                            row_entries.reserve(last_row_entries ? last_row_entries + last_row_entries / 8 + 64
+                                                                 : std::size_t(grid.width) * 24);
+                        sun->set_entries(c, r, seen, weights);
+                    }
+                }
             }
         }
     });

@@ -15,9 +15,11 @@
 // to the D horizons' blocked view cost 0.15 s more on 250k texels, for nothing measurable
 // against Cycles). A second bounce is the same gather of albedo_j T_b,j.
 //
-// The sky part then joins the sky transfer (T_d + T_b: no cost per frame); the sun part is
-// <T_b, E_sun Y(s)> per texel and frame over T_b's bands 0..1, smooth (the neighbours' SH-lit
-// sun), which is all the bounce needs. 0 bounces: no T_b (direct light only).
+// The sky part then joins the sky transfer (T_d + T_b: no cost per frame). The sun part is
+// gathered per frame from the neighbours' own sun and shadows, with the same weights
+// (bounce_sun_gather.hpp; SunPart::gather), or <T_b, E_sun Y(s)> over T_b's bands 0..1
+// (SunPart::sh: smooth, the neighbours' SH-lit sun, as the browser relights). 0 bounces: no T_b
+// (direct light only).
 #include <array>
 #include <cstddef>
 #include <span>
@@ -25,6 +27,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/render/bounce_sun_gather.hpp"
 #include "core/terrain/height_grid.hpp"
 #include "core/terrain/terrain_normals.hpp"
 #include "core/visibility/horizon_set.hpp"
@@ -43,6 +46,10 @@ struct BounceSettings {
     // 8 azimuths out to 32 texels: against Blender Cycles within 0.03% of the radiance of 16 out to
     // 64, at 0.19 s instead of 0.38 s on 250k texels (docs/rendering.md, "Bounced light").
     visibility::TerrainGatherSettings gather{8, 32.0, 1.2};
+    // The sun's part (`--bounce-sun`): gathered per frame (bounce_sun_gather.hpp), or through T_b's
+    // SH. Against Blender Cycles inside cast shadows: docs/rendering.md, "Bounced light".
+    enum class SunPart { gather, sh };
+    SunPart sun = SunPart::gather;
 };
 
 // Throws ts::InputError on bounces outside 0..2 or a bad gather.
@@ -64,7 +71,8 @@ struct BounceInputs {
 std::array<float, 16> flat_transfer();
 
 // T_b [K][texels] (K = in.coefficients); NaN on void texels; empty with 0 bounces. Rows in parallel.
-std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s);
+// With `sun`: also the gather's weights for the sun part per frame (left empty with 0 bounces).
+std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings& s, BounceSunGather* sun = nullptr);
 
 // The blocked part of a receiver's view, in steradians, cosine-weighted (D azimuths, exact):
 // the terrain above its own plane. pi (1 - svf), svf the tilted sky view factor. (Without a

@@ -64,9 +64,13 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));
     const glm::vec3 e_diffuse = sun_up ? e_sun * kInvPi : glm::vec3(0.0f);
-    // The bounce's sun part: the SH basis at the sun (bounce_transfer.hpp).
+    // The bounce's sun part: gathered from the texels' own sun (bounce_sun_gather.hpp), or
+    // through T_b's SH, the SH basis at the sun (bounce_transfer.hpp).
+    const BounceSunGather& bounce_gather = state_.bounce_sun_gather();
+    const bool gather_bounce = !bounce_gather.empty() && sun_up;
+    if (gather_bounce) gather_bounce_sun(s, threads);
     std::array<float, 16> sun_sh{};
-    const std::vector<float>& bounce = state_.bounce_transfer();
+    const std::vector<float>& bounce = bounce_gather.empty() ? state_.bounce_transfer() : no_bounce_;
     if (!bounce.empty() && sun_up) {
         const sh::ShVec y = sh::eval(glm::dvec3(s));
         for (int i = 0; i < 16; ++i) sun_sh[std::size_t(i)] = float(y[std::size_t(i)]);
@@ -76,12 +80,23 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     const BlockerSkyClamp* clamp = state_.blocker_sky_clamp();
     // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
     // the backend's <T_d, L> then a second SoA loop otherwise.
+    // Irradiance / pi added to <T, L>: the sky's light over the horizons, the gathered bounce of the sun.
     const HorizonSkyLight* horizon_sky = state_.horizon_sky();
-    if (horizon_sky) {
+    if (horizon_sky || gather_bounce) {
         sky_add_.resize(texels);
-        horizon_sky->irradiance_over_pi(sky, sky_add_.data(), threads);
+        if (horizon_sky)
+            horizon_sky->irradiance_over_pi(sky, sky_add_.data(), threads);
+        else
+            std::fill(sky_add_.begin(), sky_add_.end(), glm::vec3(0.0f));
+        if (gather_bounce) {
+            const std::size_t width = std::size_t(state_.width());
+            parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
+                for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t)
+                    sky_add_[t] += bounce_sun_[t] * e_diffuse;
+            });
+        }
     }
-    const glm::vec3* sky_add = horizon_sky ? sky_add_.data() : nullptr;
+    const glm::vec3* sky_add = horizon_sky || gather_bounce ? sky_add_.data() : nullptr;
     if (fused) {
         fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, sun_sh, sky_add, out.data(), threads);
         if (clamp) clamp->apply(sky_sh, out.data(), threads);
@@ -152,6 +167,22 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
         out[t] = f * reflected + (1 - f) * kWaterAlbedo * body;
     }
     timings_.shading_s = t0.seconds();
+}
+
+void FrameRenderer::gather_bounce_sun(const glm::vec3& s, int threads) {
+    const std::size_t texels = state_.texels();
+    const NormalField& nf = state_.normals();
+    sun_light_.resize(texels);
+    bounce_sun_.resize(texels);
+    const std::size_t width = std::size_t(state_.width());
+    parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
+        for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t) {
+            const float v = sun_vis_[t];
+            const float cos_s = nf.x[t] * s.x + nf.y[t] * s.y + nf.z[t] * s.z;
+            sun_light_[t] = v == v && cos_s > 0 ? v * cos_s : 0.0f;  // NaN (void) -> no sun
+        }
+    });
+    state_.bounce_sun_gather().apply(sun_light_.data(), s.z, bounce_sun_.data(), bounce_scratch_, threads);
 }
 
 }  // namespace ts::render

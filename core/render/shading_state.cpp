@@ -297,9 +297,10 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             bi.coefficients = s.bounce_coefficients();
             bi.curvature = visibility::curvature_factor(options.curvature);
             bi.threads = options.threads;
-            s.bounce_ = bounce_transfer(bi, options.bounce);
+            const bool gather_sun = options.bounce.sun == BounceSettings::SunPart::gather;
+            s.bounce_ = bounce_transfer(bi, options.bounce, gather_sun ? &s.bounce_sun_ : nullptr);
             const bool any = std::any_of(s.bounce_.begin(), s.bounce_.end(), [](float b) { return b != 0 && b == b; });
-            if (!any) s.bounce_.clear();
+            if (!any) s.bounce_.clear(), s.bounce_sun_ = {};
             s.add_bounce(texels, nullptr, t_diffuse.data());
             s.bounce_s_ = tb.seconds();
         }
@@ -334,7 +335,8 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
             di.normal[0] = s.normals_.x.data(), di.normal[1] = s.normals_.y.data(), di.normal[2] = s.normals_.z.data();
             for (int c = 0; c < 3; ++c) di.albedo[c] = albedo[c].data();
             di.precision = options.shading_precision;
-            di.bounce = s.bounce_.empty() ? nullptr : s.bounce_.data();
+            // The bounce's sun part through SH, unless the frames gather it (bounce_sun_gather.hpp).
+            di.bounce = s.bounce_.empty() || !s.bounce_sun_.empty() ? nullptr : s.bounce_.data();
             s.diffuse_ = std::make_unique<DiffuseShading>(di);
         }
         if (options.keep_diffuse_transfer) s.kept_transfer_ = std::move(t_diffuse);

@@ -162,6 +162,9 @@ public:
     // already added to T_d for the sky; the frames add its sun part. Empty when it is zero everywhere.
     const std::vector<float>& bounce_transfer() const { return bounce_; }
     int bounce_coefficients() const { return options_.band_correction ? 9 : 16; }
+    // The weights that gather the bounce's sun part per frame (BounceSettings::SunPart::gather),
+    // else empty: then the frames take it from T_b's SH.
+    const BounceSunGather& bounce_sun_gather() const { return bounce_sun_; }
     // T_d [16][texels] when RendererOptions::keep_diffuse_transfer, else empty.
     const std::vector<float>& kept_diffuse_transfer() const { return kept_transfer_; }
 
@@ -224,6 +227,7 @@ private:
     NormalField normals_;
     double visibility_s_ = 0, transfer_s_ = 0, bounce_s_ = 0;
     std::vector<float> bounce_;
+    BounceSunGather bounce_sun_;
     std::string visibility_path_ = "cpu";
     std::vector<visibility::VisibilityStage> visibility_stages_;
     std::unique_ptr<DiffuseShading> diffuse_;

@@ -122,6 +122,11 @@ std::string describe_job(const TileJob& job) {
             ? ",\"sky_light\":\"horizons_" + std::to_string(s.sky_light.sectors) + "_" +
                   std::to_string(s.sky_light.elevation_steps) + "\""
             : "";
+    // Only when the bounce's sun part is gathered per frame (tiles made before took it through SH).
+    const std::string bounce_sun =
+        rendered && s.bounce.bounces > 0 && s.bounce.sun == render::BounceSettings::SunPart::gather
+            ? ",\"bounce_sun\":\"gather\""
+            : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -131,7 +136,7 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + sky_fingerprint(s.sky) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + insolation + light + bounce + sky_light + "}\n";
+           by_zoom + max_error + dem + colors + insolation + light + bounce + sky_light + bounce_sun + "}\n";
 }
 
 LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) {

@@ -114,6 +114,8 @@ void TerrainGatherer::set_row(int row) {
 void TerrainGatherer::gather(int col, int row) {
     std::fill(seen_.begin(), seen_.end(), 0.0);
     seen_weight_ = far_weight_ = 0;
+    seen_texels_.clear();
+    seen_weights_.clear();
     const int w = g_.width, h = g_.height, channels = in_.channels;
     const std::size_t t = std::size_t(row) * std::size_t(w) + std::size_t(col);
     const std::size_t plane = in_.horizons->texels();
@@ -144,13 +146,22 @@ void TerrainGatherer::gather(int col, int row) {
             const double h_s = fast_atan(tan_s);
             const double f_s = weight_above(h_s, tan_s, a, nz);
             const double wt = f_max - f_s;
-            const float* vs = values + (std::size_t(row + st->near_row) * std::size_t(w) +
-                                        std::size_t(col + st->near_col)) * std::size_t(channels);
+            const std::size_t j = std::size_t(row + st->near_row) * std::size_t(w) + std::size_t(col + st->near_col);
+            const float* vs = values + j * std::size_t(channels);
             if (std::isnan(vs[0])) {
                 far_weight_ += wt;  // terrain without values (outside a window's receivers)
             } else {
                 for (int q = 0; q < channels; ++q) seen_[std::size_t(q)] += wt * vs[q];
                 seen_weight_ += wt;
+                if (recording_) {
+                    // Samples close to the receiver often read the same nearest texel: one entry.
+                    if (!seen_texels_.empty() && seen_texels_.back() == std::uint32_t(j)) {
+                        seen_weights_.back() += float(wt);
+                    } else {
+                        seen_texels_.push_back(std::uint32_t(j));
+                        seen_weights_.push_back(float(wt));
+                    }
+                }
             }
             tan_max = tan_s, h_max = h_s, f_max = f_s;
             // Within reach of the exact horizon nothing further can add more than the sliver

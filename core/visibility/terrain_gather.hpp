@@ -13,6 +13,7 @@
 // from h to pi/2 per radian of azimuth (sky_above): the cosine-weighted solid angle of that
 // piece of terrain, in units of the sector's width.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -82,6 +83,14 @@ public:
     double seen_weight() const { return seen_weight_; }
     double far_weight() const { return far_weight_; }
 
+    // With recording on, gather() also lists the terrain it saw with values: the texels (grid
+    // indices) and their weights, one entry per texel met in a row (samples near the receiver
+    // share their nearest texel), so that the same sum can be made again
+    // over other per-texel values (the bounce's sun part, per frame: bounce_sun_gather.hpp).
+    void set_recording(bool on) { recording_ = on; }
+    const std::vector<std::uint32_t>& seen_texels() const { return seen_texels_; }
+    const std::vector<float>& seen_weights() const { return seen_weights_; }
+
 private:
     // One sample of a sector's march, relative to the receiver: the bilinear cell's corner and
     // weights for the height, the nearest texel for the values, and the distance terms of the slope.
@@ -98,6 +107,9 @@ private:
     std::vector<Step> steps_;
     std::vector<double> seen_;
     double seen_weight_ = 0, far_weight_ = 0;
+    bool recording_ = false;
+    std::vector<std::uint32_t> seen_texels_;
+    std::vector<float> seen_weights_;
 };
 
 }  // namespace ts::visibility

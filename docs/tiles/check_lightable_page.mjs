@@ -108,7 +108,7 @@ try {
     const style = look === 'colors' ? 'color' : 'relief', colours = look === 'colors' ? 3 : 1;
     const relief = join(scratch, `${style}-${when.slice(11, 16).replace(':', '')}`);
     // The browser lights through SH: against tiles lit the same way (docs/web-map.md, "Agreement").
-    run(['tiles', dem, '--zoom', `${ZOOM}`, '--style', style, '--time', when, '--sky-light', 'sh', '--out', relief]);
+    run(['tiles', dem, '--zoom', `${ZOOM}`, '--style', style, '--time', when, '--sky-light', 'sh', '--bounce-sun', 'sh', '--out', relief]);
     let got = null;
     for (const c of chosen ? [chosen] : candidates) {
       const r = await page.evaluate(([z, x, y]) => window.relitTile(z, x, y), c);

@@ -3,6 +3,7 @@
 // blocked part of the view times that), the bounce counts, and the band correction calibrated
 // on a level texel.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -59,9 +60,13 @@ struct Valley {
     terrain::HeightGrid grid;
     visibility::HorizonSet horizons;
     NormalField normals;
-    Valley() : z(48 * 48) {
+    // `holes`: a few void texels (NaN heights) on the slopes and the floor.
+    explicit Valley(bool holes = false) : z(48 * 48) {
         for (int r = 0; r < 48; ++r)
             for (int c = 0; c < 48; ++c) z[std::size_t(r * 48 + c)] = float(0.6 * 30 * std::abs(c - 23.5));
+        if (holes)
+            for (int k : {10 * 48 + 5, 20 * 48 + 23, 20 * 48 + 24, 30 * 48 + 40, 47 * 48 + 47})
+                z[std::size_t(k)] = std::numeric_limits<float>::quiet_NaN();
         grid = terrain::HeightGrid::uniform(48, 48, z, 30, 30);
         visibility::HorizonOptions o;
         o.directions = 32;
@@ -142,6 +147,72 @@ TEST(BounceTransfer, ASecondBounceAddsAndBlackTerrainBouncesNothing) {
     for (float x : bounce_transfer(v.inputs(t, black), two)) EXPECT_EQ(x, 0.0f);
 }
 
+// The weights recorded for the sun part are T_b's own: summed over any per-texel values they give
+// T_b again (here its coefficients, with a transfer that varies by texel), and the second bounce
+// applies them once more. Voids keep their neighbours' entries apart and get nothing.
+void expect_weights_reproduce_the_bounce_transfer(bool holes) {
+    SCOPED_TRACE(holes ? "with voids" : "without voids");
+    const Valley v(holes);
+    const std::size_t n = v.z.size();
+    std::vector<float> t = v.constant_transfer();
+    for (std::size_t k = 0; k < n; ++k) t[k] *= float(1.0 + 0.3 * std::sin(0.37 * double(k)));  // band 0 varies
+    std::vector<float> albedo(n);
+    for (std::size_t k = 0; k < n; ++k) albedo[k] = float(0.3 + 0.2 * std::cos(0.11 * double(k)));
+    const std::array<float, 16> flat = flat_transfer();
+    for (int bounces : {1, 2}) {
+        BounceSettings s;
+        s.bounces = bounces;
+        BounceSunGather g;
+        const std::vector<float> b = bounce_transfer(v.inputs(t, albedo), s, &g);
+        ASSERT_EQ(g.texels(), n);
+        EXPECT_EQ(g.bounces, bounces);
+        EXPECT_GT(g.entries(), n);  // the valley's texels see its other side
+        // Per frame the values are the transfer's band 0, and the sun's z is flat_0: apply() adds
+        // far_t max(0, s_z) = far_t flat_0, T_b's far term in band 0.
+        std::vector<float> values(t.begin(), t.begin() + std::ptrdiff_t(n)), out(n), scratch;
+        g.apply(values.data(), flat[0], out.data(), scratch, 2);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (std::isnan(b[k])) {
+                ASSERT_EQ(out[k], 0.0f) << "void texel " << k;
+            } else if (bounces == 1) {
+                // The weights in 16 bits against each receiver's largest: ~1e-4 of the sum.
+                ASSERT_NEAR(out[k], b[k], 5e-4 * std::abs(b[k]) + 1e-9) << "texel " << k;
+            } else {  // b1 + sum_j w_tj b1_j: T_b's second pass over its first
+                ASSERT_NEAR(out[k], b[k], 1e-3 * std::abs(b[k]) + 1e-9) << "texel " << k;
+                ASSERT_GE(out[k], scratch[k]);
+            }
+        }
+    }
+}
+
+TEST(BounceSunGather, ItsWeightsAreTheBounceTransfers) {
+    expect_weights_reproduce_the_bounce_transfer(false);
+    expect_weights_reproduce_the_bounce_transfer(true);
+    // With no bounce, no weights.
+    const Valley v;
+    const std::vector<float> t = v.constant_transfer(), albedo(v.z.size(), 0.5f);
+    BounceSettings none;
+    none.bounces = 0;
+    BounceSunGather g;
+    EXPECT_TRUE(bounce_transfer(v.inputs(t, albedo), none, &g).empty());
+    EXPECT_TRUE(g.empty());
+}
+
+// A texel whose whole view of the terrain is in shadow gets only the far ground's sun: what the
+// SH sun part (the neighbours' smooth, SH-lit sun) cannot tell.
+TEST(BounceSunGather, TerrainInShadowBouncesNoSun) {
+    const Valley v;
+    const std::size_t n = v.z.size(), floor = 24 * 48 + 23;
+    const std::vector<float> t = v.constant_transfer(), albedo(n, 0.5f);
+    BounceSunGather g;
+    bounce_transfer(v.inputs(t, albedo), BounceSettings{}, &g);
+    std::vector<float> lit(n, 0.8f), dark(n, 0.0f), out_lit(n), out_dark(n), scratch;
+    g.apply(lit.data(), 0.5f, out_lit.data(), scratch, 1);
+    g.apply(dark.data(), 0.5f, out_dark.data(), scratch, 1);
+    EXPECT_NEAR(out_dark[floor], g.far[floor] * 0.5f, 1e-7);
+    EXPECT_GT(out_lit[floor], out_dark[floor] + 0.01f);
+}
+
 TEST(BounceTransfer, RefusesBadSettings) {
     BounceSettings s;
     s.bounces = 3;
@@ -149,6 +220,11 @@ TEST(BounceTransfer, RefusesBadSettings) {
     s.bounces = 1;
     s.gather.radius_texels = 0;
     EXPECT_THROW(check_bounce_settings(s), InputError);
+    // The sun's gather holds its entries within 126 texels; through SH the radius may be larger.
+    s.gather.radius_texels = 200;
+    EXPECT_THROW(check_bounce_settings(s), InputError);
+    s.sun = BounceSettings::SunPart::sh;
+    EXPECT_NO_THROW(check_bounce_settings(s));
 }
 
 // An open level texel's diffuse transfer is the projected clamped cosine exactly: the band

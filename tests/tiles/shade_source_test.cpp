@@ -102,12 +102,16 @@ TEST(ShadeSource, SvfInBlocksEqualsTheWholeLevel) {
     expect_blocked_equals_whole("svf", FarFieldMethod::exact, {0.0f, 0.0, 0.0});
 }
 
+// The bounce's sun part reads the sun of the terrain a core texel sees, halo texels too, whose
+// shadows from beyond the window a block does not have (the far field shades the core only):
+// measured with this 48-texel halo (tiles: 256) 0.55% and 0.51% of the values differ, by at
+// most 0.0039 and 0.0042 (a code at most), where the SH sun part kept it under 0.5%.
 TEST(ShadeSource, ReliefInBlocksEqualsTheWholeLevel) {
-    expect_blocked_equals_whole("relief", FarFieldMethod::exact, {0.005f, 0.005, 0.001});
+    expect_blocked_equals_whole("relief", FarFieldMethod::exact, {0.005f, 0.008, 0.001});
 }
 
 TEST(ShadeSource, ColorInBlocksEqualsTheWholeLevel) {
-    expect_blocked_equals_whole("color", FarFieldMethod::exact, {0.005f, 0.005, 0.001});
+    expect_blocked_equals_whole("color", FarFieldMethod::exact, {0.005f, 0.008, 0.001});
 }
 
 // The insolation of a block takes its horizons like svf (identical with the exact far field)

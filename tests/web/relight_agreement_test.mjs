@@ -49,9 +49,10 @@ try {
   // Relief's grey, then `color`'s land colours (every channel) from the same data tiles.
   for (const [when, sky, style] of instants.flatMap(([w, s]) => [[w, s, 'relief'], [w, s, 'color']])) {
     const ref_dir = path.join(work, `${style}-${sky}-${when.replace(/:/g, '')}`);
-    // The browser lights the sky through SH: against relief and color tiles lit the same way
-    // (the default, the sky over the horizons, differs by what SH misses: docs/web-map.md).
-    run(['tiles', dem, '--zoom', `${zoom}`, '--style', style, '--time', when, '--sky', sky, '--sky-light', 'sh', ...(process.env.REF_ARGS ? process.env.REF_ARGS.split(' ') : []), '--out', ref_dir]);
+    // The browser lights the sky, and the bounce's sun part, through SH: against relief and color
+    // tiles lit the same way (the defaults, the sky over the horizons and the sun's bounce
+    // gathered from the terrain's own shadows, differ by what SH misses: docs/web-map.md).
+    run(['tiles', dem, '--zoom', `${zoom}`, '--style', style, '--time', when, '--sky', sky, '--sky-light', 'sh', '--bounce-sun', 'sh', ...(process.env.REF_ARGS ? process.env.REF_ARGS.split(' ') : []), '--out', ref_dir]);
     const sun = sunPosition(new Date(when), site);
     const light = lightFor(meta, sun, sky);
     const options = {contrast: meta.relief_contrast, colors: style === 'color' ? meta.colors : null};

@@ -22,7 +22,8 @@ void add_bounce_options(CLI::App& cmd, render::BounceSettings& b) {
            },
            "The bounce's sun part: gather (per frame, from the light and shadow the terrain it sees really "
            "gets) or sh (through the bounce transfer's SH: smooth, blind to cast shadows; what the browser "
-           "relights with) [gather]")
+           "relights with)")
+        ->default_str("gather")
         ->check(CLI::IsMember({"gather", "sh"}));
     cmd.add_option("--bounce-radius", b.gather.radius_texels,
                    "How far the bounced light's gather looks, texels (farther terrain is lit like open flat land)")

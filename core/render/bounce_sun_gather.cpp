@@ -44,11 +44,6 @@ std::size_t BounceSunGather::entries() const {
     return n;
 }
 
-std::size_t BounceSunGather::bytes() const {
-    return entries() * sizeof(Entry) + begin.size() * sizeof(std::uint32_t) + scale.size() * sizeof(float) +
-           far.size() * sizeof(float);
-}
-
 void BounceSunGather::set_entries(int col, int row, const std::vector<std::uint32_t>& texel,
                                   const std::vector<float>& weight) {
     const std::size_t t = std::size_t(row) * std::size_t(width) + std::size_t(col);

@@ -31,7 +31,7 @@ struct BounceSunGather {
     int bounces = 0;  // 1 or 2 (0: empty)
     int width = 0;    // the grid's
     // Per grid row, its texels' entries in order, kept per row as the one-time pass makes them
-    // (rows in parallel), not joined: that copy cost more than the rest of the recording.
+    // (rows in parallel), not joined into one array (a copy of them all).
     std::vector<std::vector<Entry>> rows;
     std::vector<std::uint32_t> begin;  // per texel: where its entries start in its row's
     std::vector<float> scale;          // per texel: w_tj = Entry::weight x scale
@@ -40,7 +40,6 @@ struct BounceSunGather {
     bool empty() const { return begin.empty(); }
     std::size_t texels() const { return begin.size(); }
     std::size_t entries() const;
-    std::size_t bytes() const;
     // Texel t's entries from the gather's list (grid indices and weights; t = (col, row)).
     // Throws std::logic_error on a texel beyond kBounceSunGatherReach.
     void set_entries(int col, int row, const std::vector<std::uint32_t>& texel, const std::vector<float>& weight);

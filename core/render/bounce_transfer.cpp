@@ -104,11 +104,9 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
             g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
             g->set_recording(sun != nullptr);
         }
-        std::size_t last_row_entries = 0;
         std::vector<float> weights;
         for (int r = r0; r < r1; ++r) {
             if (g) g->set_row(r);
-            if (sun && r > r0) last_row_entries = sun->rows[std::size_t(r - 1)].size();
             for (int c = 0; c < grid.width; ++c) {
                 const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
                 if (sun) sun->begin[t] = std::uint32_t(sun->rows[std::size_t(r)].size());  // voids too
@@ -135,13 +133,10 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                         weights.resize(seen.size());
                         for (std::size_t k = 0; k < seen.size(); ++k)
                             weights[k] = float(coef * g->seen_weights()[k] * in.albedo[seen[k]]);
-                        // What this row will need, from the last row this thread made (rows
-                        // alike), or about what rugged terrain needs (20.7 per texel on Grenoble):
-                        // a regrowth copies the row and touches new pages.
+                        // About what rugged terrain needs (20.7 per texel on Grenoble): a row
+                        // with any entries mostly grows once; level rows never allocate.
                         std::vector<BounceSunGather::Entry>& row_entries = sun->rows[std::size_t(r)];
-                        if (row_entries.capacity() == 0)
-                            row_entries.reserve(last_row_entries ? last_row_entries + last_row_entries / 8 + 64
-                                                                 : std::size_t(grid.width) * 24);
+                        if (row_entries.capacity() == 0) row_entries.reserve(std::size_t(grid.width) * 24);
                         sun->set_entries(c, r, seen, weights);
                     }
                 }

@@ -64,39 +64,32 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
 
     const glm::vec3 s = glm::vec3(sun_direction(sun));
     const glm::vec3 e_diffuse = sun_up ? e_sun * kInvPi : glm::vec3(0.0f);
-    // The bounce's sun part: gathered from the texels' own sun (bounce_sun_gather.hpp), or
-    // through T_b's SH, the SH basis at the sun (bounce_transfer.hpp).
-    const BounceSunGather& bounce_gather = state_.bounce_sun_gather();
-    const bool gather_bounce = !bounce_gather.empty() && sun_up;
-    if (gather_bounce) gather_bounce_sun(s, threads);
+    // The bounce's sun part: gathered from the texels' own sun (bounce_sun_gather.hpp, added with
+    // the sky below), or through T_b's SH, the SH basis at the sun (bounce_transfer.hpp).
+    const bool gather_bounce = !state_.bounce_sun_gather().empty();
+    const float* sh_bounce = gather_bounce || state_.bounce_transfer().empty() ? nullptr : state_.bounce_transfer().data();
     std::array<float, 16> sun_sh{};
-    const std::vector<float>& bounce = bounce_gather.empty() ? state_.bounce_transfer() : no_bounce_;
-    if (!bounce.empty() && sun_up) {
+    if (sh_bounce && sun_up) {
         const sh::ShVec y = sh::eval(glm::dvec3(s));
         for (int i = 0; i < 16; ++i) sun_sh[std::size_t(i)] = float(y[std::size_t(i)]);
     }
     const DiffuseShading* fused = state_.fused_diffuse();
     // A mesh blocker only removes light: its texels' sky terms are bounded by the terrain's.
     const BlockerSkyClamp* clamp = state_.blocker_sky_clamp();
-    // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
-    // the backend's <T_d, L> then a second SoA loop otherwise.
     // Irradiance / pi added to <T, L>: the sky's light over the horizons, the gathered bounce of the sun.
     const HorizonSkyLight* horizon_sky = state_.horizon_sky();
-    if (horizon_sky || gather_bounce) {
+    const bool add_bounce = gather_bounce && sun_up;
+    if (horizon_sky || add_bounce) {
         sky_add_.resize(texels);
         if (horizon_sky)
             horizon_sky->irradiance_over_pi(sky, sky_add_.data(), threads);
         else
             std::fill(sky_add_.begin(), sky_add_.end(), glm::vec3(0.0f));
-        if (gather_bounce) {
-            const std::size_t width = std::size_t(state_.width());
-            parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
-                for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t)
-                    sky_add_[t] += bounce_sun_[t] * e_diffuse;
-            });
-        }
+        if (add_bounce) add_gathered_bounce_sun(s, e_diffuse, threads);
     }
-    const glm::vec3* sky_add = horizon_sky || gather_bounce ? sky_add_.data() : nullptr;
+    const glm::vec3* sky_add = horizon_sky || add_bounce ? sky_add_.data() : nullptr;
+    // Diffuse sky + sun for every texel, the pass that dominates a frame: fused on the CPU path,
+    // the backend's <T_d, L> then a second SoA loop otherwise.
     if (fused) {
         fused->shade(sky_sh, sun_vis_.data(), s, e_diffuse, sun_sh, sky_add, out.data(), threads);
         if (clamp) clamp->apply(sky_sh, out.data(), threads);
@@ -125,9 +118,9 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
                 const float cos_s = std::max(0.0f, nx[t] * s.x + ny[t] * s.y + nz[t] * s.z);
                 const float v = vis[t];
                 float sun_w = (v == v ? v : 0.0f) * cos_s;  // NaN (void) -> no sun
-                if (!bounce.empty()) {  // the bounce's sun part, in units of E_sun / pi
+                if (sh_bounce) {  // the bounce's sun part, in units of E_sun / pi
                     float u = 0;
-                    for (std::size_t i = 0; i < k_count; ++i) u += bounce[i * texels_all + t] * sun_sh[i];
+                    for (std::size_t i = 0; i < k_count; ++i) u += sh_bounce[i * texels_all + t] * sun_sh[i];
                     if (u == u) sun_w += u * std::numbers::pi_v<float>;
                 }
                 // The sky's irradiance clamped at 0 as in the fused pass (diffuse_shading.cpp).
@@ -169,12 +162,11 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     timings_.shading_s = t0.seconds();
 }
 
-void FrameRenderer::gather_bounce_sun(const glm::vec3& s, int threads) {
-    const std::size_t texels = state_.texels();
+void FrameRenderer::add_gathered_bounce_sun(const glm::vec3& s, const glm::vec3& e_diffuse, int threads) {
+    const std::size_t texels = state_.texels(), width = std::size_t(state_.width());
     const NormalField& nf = state_.normals();
     sun_light_.resize(texels);
     bounce_sun_.resize(texels);
-    const std::size_t width = std::size_t(state_.width());
     parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
         for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t) {
             const float v = sun_vis_[t];
@@ -183,6 +175,10 @@ void FrameRenderer::gather_bounce_sun(const glm::vec3& s, int threads) {
         }
     });
     state_.bounce_sun_gather().apply(sun_light_.data(), s.z, bounce_sun_.data(), bounce_scratch_, threads);
+    parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
+        for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t)
+            sky_add_[t] += bounce_sun_[t] * e_diffuse;
+    });
 }
 
 }  // namespace ts::render

@@ -154,7 +154,7 @@ void TerrainGatherer::gather(int col, int row) {
                 for (int q = 0; q < channels; ++q) seen_[std::size_t(q)] += wt * vs[q];
                 seen_weight_ += wt;
                 if (recording_) {
-                    // Samples close to the receiver often read the same nearest texel: one entry.
+                    // Consecutive samples that read the same nearest texel make one entry.
                     if (!seen_texels_.empty() && seen_texels_.back() == std::uint32_t(j)) {
                         seen_weights_.back() += float(wt);
                     } else {

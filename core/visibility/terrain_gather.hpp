@@ -84,8 +84,7 @@ public:
     double far_weight() const { return far_weight_; }
 
     // With recording on, gather() also lists the terrain it saw with values: the texels (grid
-    // indices) and their weights, one entry per texel met in a row (samples near the receiver
-    // share their nearest texel), so that the same sum can be made again
+    // indices) and their weights, one entry per texel met in a row, so that the same sum can be made again
     // over other per-texel values (the bounce's sun part, per frame: bounce_sun_gather.hpp).
     void set_recording(bool on) { recording_ = on; }
     const std::vector<std::uint32_t>& seen_texels() const { return seen_texels_; }

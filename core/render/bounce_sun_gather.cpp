@@ -3,77 +3,251 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "core/util/parallel_for.hpp"
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#define TS_BOUNCE_SUN_AVX2 1
+#endif
+
 namespace ts::render {
 namespace {
 
-// out[t] = base_scale base[t] + sum_j w_tj values[j] over the texels of rows [r0, r1).
-void gather_rows(const BounceSunGather& g, const float* values, const float* base, float base_scale, float* out,
-                 int r0, int r1) {
-    const std::size_t w = std::size_t(g.width);
-    const std::ptrdiff_t stride = std::ptrdiff_t(g.width);
-    for (int r = r0; r < r1; ++r) {
-        const BounceSunGather::Entry* entry = g.rows[std::size_t(r)].data();
-        const std::uint32_t row_end = std::uint32_t(g.rows[std::size_t(r)].size());
-        const std::size_t t0 = std::size_t(r) * w;
-        for (std::size_t c = 0; c < w; ++c) {
-            const std::size_t t = t0 + c;
-            const std::uint32_t e = c + 1 < w ? g.begin[t + 1] : row_end;
-            const float* here = values + t;
-            auto term = [&](std::uint32_t k) {
-                return float(entry[k].weight) * here[std::ptrdiff_t(entry[k].dr) * stride + entry[k].dc];
-            };
-            // Four sums: one would wait on each add (the loop is the adds' latency, not the reads).
-            float s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-            std::uint32_t k = g.begin[t];
-            for (; k + 4 <= e; k += 4) s0 += term(k), s1 += term(k + 1), s2 += term(k + 2), s3 += term(k + 3);
-            for (; k < e; ++k) s0 += term(k);
-            out[t] = base[t] * base_scale + ((s0 + s1) + (s2 + s3)) * g.scale[t];
-        }
+constexpr int kChunkLanes = BounceSunGather::kLanes;
+
+// One chunk: out[l] = base_scale base[l] + scale[l] sum_k weight[k][l] here[offset[k] + l], for
+// the chunk's `lanes` receivers. `here` and `base` point at its first receiver; `here` is read
+// for all kChunkLanes lanes at every offset (apply()'s margins), `base` only for the receivers.
+inline void chunk_portable(const std::int32_t* offset, const std::uint16_t* weight, std::uint32_t count,
+                           const float* here, const float* base, float base_scale, const float* scale, float* out,
+                           int lanes) {
+    float sum[kChunkLanes] = {};
+    for (std::uint32_t k = 0; k < count; ++k) {
+        const float* v = here + offset[k];
+        const std::uint16_t* w = weight + std::size_t(k) * kChunkLanes;
+        for (int l = 0; l < kChunkLanes; ++l) sum[l] += float(w[l]) * v[l];
     }
+    for (int l = 0; l < lanes; ++l) out[l] = base[l] * base_scale + sum[l] * scale[l];
+}
+
+#ifdef TS_BOUNCE_SUN_AVX2
+bool bounce_sun_has_avx2() {
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
+// chunk_portable with the 8 lanes in one register: two sums, each offset's values one unaligned
+// load. On Grenoble the bounce's per-frame CPU time is half that of per-receiver entries
+// (docs/rendering.md, "How the weights are kept").
+[[gnu::target("avx2,fma")]] void chunk_avx2(const std::int32_t* offset, const std::uint16_t* weight,
+                                            std::uint32_t count, const float* here, const float* base, float base_scale,
+                                            const float* scale, float* out, int lanes) {
+    __m256 s0 = _mm256_setzero_ps(), s1 = _mm256_setzero_ps();
+#define TS_BOUNCE_TERM(K, SUM)                                                                            \
+    SUM = _mm256_fmadd_ps(_mm256_cvtepi32_ps(_mm256_cvtepu16_epi32(_mm_loadu_si128(                       \
+                              reinterpret_cast<const __m128i*>(weight + std::size_t(K) * kChunkLanes)))), \
+                          _mm256_loadu_ps(here + offset[K]), SUM)
+    std::uint32_t k = 0;
+    for (; k + 2 <= count; k += 2) {
+        TS_BOUNCE_TERM(k, s0);
+        TS_BOUNCE_TERM(k + 1, s1);
+    }
+    if (k < count) TS_BOUNCE_TERM(k, s0);
+#undef TS_BOUNCE_TERM
+    const __m256 sum = _mm256_add_ps(s0, s1);
+    if (lanes == kChunkLanes) {
+        _mm256_storeu_ps(out, _mm256_fmadd_ps(_mm256_loadu_ps(base), _mm256_set1_ps(base_scale),
+                                              _mm256_mul_ps(sum, _mm256_loadu_ps(scale))));
+        return;
+    }
+    alignas(32) float part[kChunkLanes];
+    _mm256_store_ps(part, sum);
+    for (int l = 0; l < lanes; ++l) out[l] = base[l] * base_scale + part[l] * scale[l];
+}
+#endif
+
+// n values between zero margins. A frame overwrites all n: the margins are zeroed once per layout.
+float* with_margins(std::vector<float>& buffer, std::size_t n, std::size_t margin) {
+    if (buffer.size() != n + 2 * margin) buffer.assign(n + 2 * margin, 0.0f);
+    return buffer.data() + margin;
 }
 
 }  // namespace
 
-std::size_t BounceSunGather::entries() const {
+BounceSunGather::BounceSunGather(int bounces, int width, int height)
+    : bounces_(bounces),
+      width_(width),
+      rows_(std::size_t(height)),
+      scale_(std::size_t(width) * std::size_t(height), 0.0f),
+      far_(std::size_t(width) * std::size_t(height), 0.0f) {
+    const std::size_t chunks = (std::size_t(width) + kChunkLanes - 1) / kChunkLanes;
+    for (Row& r : rows_) r.chunk_begin.assign(chunks + 1, 0);
+}
+
+std::size_t BounceSunGather::slots() const {
     std::size_t n = 0;
-    for (const std::vector<Entry>& r : rows) n += r.size();
+    for (const Row& r : rows_) n += r.offset.size();
     return n;
 }
 
-void BounceSunGather::set_entries(int col, int row, const std::vector<std::uint32_t>& texel,
-                                  const std::vector<float>& weight) {
-    const std::size_t t = std::size_t(row) * std::size_t(width) + std::size_t(col);
-    std::vector<Entry>& out = rows[std::size_t(row)];
-    float top = 0;
-    for (float x : weight) top = std::max(top, x);
-    scale[t] = top / 65535.0f;
-    if (top <= 0) return;
+std::size_t BounceSunGather::entries() const {
+    std::size_t n = 0;
+    for (const Row& r : rows_)
+        for (std::uint16_t w : r.weight) n += w != 0;
+    return n;
+}
+
+namespace {
+// (dc, dr) within the reach as one index.
+constexpr int kKeySide = 2 * kBounceSunGatherReach + 1;
+}  // namespace
+
+BounceSunGather::Writer::Writer(BounceSunGather& g)
+    : g_(g), slot_of_(std::size_t(kKeySide) * kKeySide), stamp_(std::size_t(kKeySide) * kKeySide, 0) {}
+
+void BounceSunGather::Writer::add_far(int col, int row, float far) {
+    g_.far_[std::size_t(row) * std::size_t(g_.width_) + std::size_t(col)] = far;
+}
+
+void BounceSunGather::Writer::add(int col, int row, const std::vector<std::uint32_t>& texel,
+                                  const std::vector<float>& weight, float far) {
+    add_far(col, row, far);
+    if (row != row_) {
+        finish();
+        row_ = row;
+        begin_.assign(g_.rows_[std::size_t(row)].chunk_begin.size(), 0);
+    }
+    if (col / kChunkLanes != chunk_) flush(), chunk_ = col / kChunkLanes;
+    const std::uint32_t w = std::uint32_t(g_.width_);
+    const int lane = col % kChunkLanes;
     for (std::size_t k = 0; k < texel.size(); ++k) {
-        const long long dc = (long long)(texel[k] % std::uint32_t(width)) - col;
-        const long long dr = (long long)(texel[k] / std::uint32_t(width)) - row;
-        if (std::max(std::llabs(dc), std::llabs(dr)) > kBounceSunGatherReach)
+        const int dc = int(texel[k] % w) - col, dr = int(texel[k] / w) - row;
+        if (std::max(std::abs(dc), std::abs(dr)) > kBounceSunGatherReach)
             throw std::logic_error("BounceSunGather: an entry beyond the gather's reach");
-        out.push_back({std::int8_t(dc), std::int8_t(dr), std::uint16_t(std::lround(weight[k] / top * 65535.0f))});
+        key_[lane].push_back((dr + kBounceSunGatherReach) * kKeySide + dc + kBounceSunGatherReach);
+        weight_[lane].push_back(weight[k]);
     }
 }
 
-void BounceSunGather::apply(const float* sun, float sun_z, float* out, std::vector<float>& scratch,
-                            int threads) const {
+// The chunk's offsets are the union of its receivers' (in the order first seen); each receiver's
+// weights are summed per offset, then stored in 16 bits against its largest.
+void BounceSunGather::Writer::flush() {
+    if (chunk_ < 0) return;
+    ++epoch_;
+    keys_.clear();
+    sums_.clear();
+    for (int l = 0; l < kChunkLanes; ++l)
+        for (std::size_t k = 0; k < key_[l].size(); ++k) {
+            const std::size_t key = std::size_t(key_[l][k]);
+            if (stamp_[key] != epoch_) {
+                stamp_[key] = epoch_, slot_of_[key] = std::uint32_t(keys_.size());
+                keys_.push_back(key_[l][k]);
+                sums_.resize(sums_.size() + kChunkLanes, 0.0f);
+            }
+            sums_[std::size_t(slot_of_[key]) * kChunkLanes + std::size_t(l)] += weight_[l][k];
+        }
+    const std::size_t first = offset_.size();
+    for (int key : keys_) {
+        const long long dr = key / kKeySide - kBounceSunGatherReach, dc = key % kKeySide - kBounceSunGatherReach;
+        const long long o = dr * g_.width_ + dc;
+        offset_.push_back(std::int32_t(o));
+        reach_ = std::max(reach_, std::llabs(o));
+    }
+    weight16_.resize(offset_.size() * kChunkLanes, 0);
+    for (int l = 0; l < kChunkLanes; ++l) {
+        if (key_[l].empty()) continue;
+        float top = 0;
+        for (std::size_t k = 0; k < keys_.size(); ++k) top = std::max(top, sums_[k * kChunkLanes + std::size_t(l)]);
+        const std::size_t t = std::size_t(row_) * std::size_t(g_.width_) + std::size_t(chunk_ * kChunkLanes + l);
+        g_.scale_[t] = top / 65535.0f;
+        // The march's weights can come out below 0 by rounding (1e-16..1e-14 on level ground): 0.
+        if (top > 0)
+            for (std::size_t k = 0; k < keys_.size(); ++k)
+                weight16_[(first + k) * kChunkLanes + std::size_t(l)] =
+                    std::uint16_t(std::max(0.0f, sums_[k * kChunkLanes + std::size_t(l)] / top) * 65535.0f + 0.5f);
+        key_[l].clear();
+        weight_[l].clear();
+    }
+    // Chunks without receivers in between keep no offsets: their begins follow the last one's end.
+    for (std::size_t c = std::size_t(chunk_) + 1; c < begin_.size(); ++c) begin_[c] = std::uint32_t(offset_.size());
+    chunk_ = -1;
+}
+
+// The row's weights into the gather, at their size: a row grows in the writer's buffers.
+void BounceSunGather::Writer::finish() {
+    flush();
+    if (row_ < 0) return;
+    Row& row = g_.rows_[std::size_t(row_)];
+    row.offset.assign(offset_.begin(), offset_.end());
+    row.weight.assign(weight16_.begin(), weight16_.end());
+    row.chunk_begin = begin_;
+    row.reach = reach_;
+    offset_.clear();
+    weight16_.clear();
+    reach_ = 0;
+    row_ = -1;
+}
+
+void BounceSunGather::gather_rows(const float* values, const float* base, float base_scale, float* out, int r0, int r1,
+                                  bool vector_units) const {
+    const std::size_t w = std::size_t(width_);
+#ifdef TS_BOUNCE_SUN_AVX2
+    const bool avx2 = vector_units && bounce_sun_has_avx2();
+#else
+    (void)vector_units;
+#endif
+    for (int r = r0; r < r1; ++r) {
+        const Row& row = rows_[std::size_t(r)];
+        for (std::size_t c = 0, chunk = 0; c < w; c += kChunkLanes, ++chunk) {
+            const std::size_t t = std::size_t(r) * w + c;
+            const std::uint32_t k0 = row.chunk_begin[chunk], count = row.chunk_begin[chunk + 1] - k0;
+            const int lanes = int(std::min<std::size_t>(kChunkLanes, w - c));
+            const std::int32_t* offset = row.offset.data() + k0;
+            const std::uint16_t* weight = row.weight.data() + std::size_t(k0) * kChunkLanes;
+#ifdef TS_BOUNCE_SUN_AVX2
+            if (avx2) {
+                chunk_avx2(offset, weight, count, values + t, base + t, base_scale, scale_.data() + t, out + t, lanes);
+                continue;
+            }
+#endif
+            chunk_portable(offset, weight, count, values + t, base + t, base_scale, scale_.data() + t, out + t, lanes);
+        }
+    }
+}
+
+void BounceSunGather::apply(const float* sun, float sun_z, float* out, Scratch& scratch, int threads,
+                            bool vector_units) const {
     const std::size_t n = texels();
-    if (n == 0 || width <= 0) return;
-    const int row_count = int(n / std::size_t(width));
-    const long long work = (long long)(entries() / std::size_t(row_count) + std::size_t(width));
+    if (n == 0 || width_ <= 0) return;
+    long long reach = 0;
+    for (const Row& r : rows_) reach = std::max(reach, r.reach);
+    // A chunk's lanes read its offsets from every receiver, and up to kChunkLanes past a row's last.
+    const std::size_t margin = std::size_t(reach) + kChunkLanes;
+    const int row_count = int(rows_.size());
+    const long long work = (long long)(slots() / std::size_t(row_count)) * kChunkLanes + width_;
+    // The values, finite (NaN: 0), between zero margins (the lanes' reads beyond the grid).
+    if (scratch.texels != n || scratch.margin != margin) {
+        scratch.values.clear(), scratch.first.clear();
+        scratch.texels = n, scratch.margin = margin;
+    }
+    float* values = with_margins(scratch.values, n, margin);
+    parallel_rows(row_count, threads, width_ * 2LL, [&](int r0, int r1) {
+        for (std::size_t t = std::size_t(r0) * std::size_t(width_), e = std::size_t(r1) * std::size_t(width_); t < e;
+             ++t)
+            values[t] = sun[t] == sun[t] ? sun[t] : 0.0f;
+    });
     const float flat_sun = std::max(0.0f, sun_z);
-    float* first = bounces >= 2 ? (scratch.resize(n), scratch.data()) : out;
+    float* first = bounces_ >= 2 ? with_margins(scratch.first, n, margin) : out;
     parallel_rows(row_count, threads, work,
-                  [&](int r0, int r1) { gather_rows(*this, sun, far.data(), flat_sun, first, r0, r1); });
-    if (bounces < 2) return;
+                  [&](int r0, int r1) { gather_rows(values, far_.data(), flat_sun, first, r0, r1, vector_units); });
+    if (bounces_ < 2) return;
     // b1 + sum_j w_tj b1_j
-    parallel_rows(row_count, threads, work, [&](int r0, int r1) { gather_rows(*this, first, first, 1.0f, out, r0, r1); });
+    parallel_rows(row_count, threads, work,
+                  [&](int r0, int r1) { gather_rows(first, first, 1.0f, out, r0, r1, vector_units); });
 }
 
 }  // namespace ts::render
+
+#undef TS_BOUNCE_SUN_AVX2

@@ -11,6 +11,12 @@
 //   b2_t = sum_j w_tj b1_j                           (the second bounce, with --bounces 2)
 // w_tj = (2 / sectors) x the gather's weight x albedo_j, far_t the blocked view the gather did not
 // reach over pi x albedo_t (open flat ground, in the sun), sun_j = max(0, n_j . s) V_j.
+//
+// Kept by runs of 8 receivers along a row (a "chunk"): the gather marches the same steps from
+// every receiver of a row, so neighbours see their terrain at the same offsets j - t. A chunk
+// lists the offsets any of its 8 receivers sees, each with 8 weights (0 where a receiver does
+// not see it). Per frame one offset is then 8 contiguous values times 8 weights, a vector
+// multiply-add with no per-receiver gather.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -20,32 +26,81 @@ namespace ts::render {
 // The gather reaches at most this many texels from its receiver (BounceSettings checks it).
 inline constexpr int kBounceSunGatherReach = 126;
 
-struct BounceSunGather {
-    // One terrain texel a receiver sees: where it is from the receiver, in texels, and its weight
-    // w_tj = weight x the receiver's scale (16 bits against the receiver's largest weight: a
-    // relative 1e-5 of it). 4 bytes: a frame streams them all (20.7 per texel on Grenoble).
-    struct Entry {
-        std::int8_t dc, dr;
-        std::uint16_t weight;
-    };
-    int bounces = 0;  // 1 or 2 (0: empty)
-    int width = 0;    // the grid's
-    // Per grid row, its texels' entries in order, kept per row as the one-time pass makes them
-    // (rows in parallel), not joined into one array (a copy of them all).
-    std::vector<std::vector<Entry>> rows;
-    std::vector<std::uint32_t> begin;  // per texel: where its entries start in its row's
-    std::vector<float> scale;          // per texel: w_tj = Entry::weight x scale
-    std::vector<float> far;            // far_t (0 on voids)
+class BounceSunGather {
+public:
+    static constexpr int kLanes = 8;  // receivers per chunk
 
-    bool empty() const { return begin.empty(); }
-    std::size_t texels() const { return begin.size(); }
-    std::size_t entries() const;
-    // Texel t's entries from the gather's list (grid indices and weights; t = (col, row)).
-    // Throws std::logic_error on a texel beyond kBounceSunGatherReach.
-    void set_entries(int col, int row, const std::vector<std::uint32_t>& texel, const std::vector<float>& weight);
-    // out[t] = b1_t (+ b2_t), texels() entries; `sun` is sun_j per texel (0 where unknown),
-    // `sun_z` the sun direction's up component. `scratch` keeps b1 between the two bounces.
-    void apply(const float* sun, float sun_z, float* out, std::vector<float>& scratch, int threads) const;
+    // The values apply() reads, copied with a margin (lanes of a chunk read offsets only their
+    // neighbours see, up to the reach beyond the grid) and the first bounce between the two.
+    struct Scratch {
+        std::vector<float> values, first;
+        std::size_t texels = 0, margin = 0;  // their layout
+    };
+
+    BounceSunGather() = default;
+    // Empty weights for a width x height grid (bounces 1 or 2).
+    BounceSunGather(int bounces, int width, int height);
+
+    // Receivers added in order of column along each row, rows in any order, from one thread
+    // (threads each with their own writer take whole rows). finish() stores the last row: a
+    // writer left without it (an exception) leaves that row without weights.
+    class Writer {
+    public:
+        explicit Writer(BounceSunGather& g);
+        Writer(const Writer&) = delete;
+        Writer& operator=(const Writer&) = delete;
+        // Receiver (col, row)'s terrain: grid indices and weights w_tj, and far_t. Receivers
+        // left out get none. Throws std::logic_error on a texel beyond kBounceSunGatherReach.
+        void add(int col, int row, const std::vector<std::uint32_t>& texel, const std::vector<float>& weight,
+                 float far);
+        void add_far(int col, int row, float far);  // a receiver that sees no terrain
+        void finish();
+
+    private:
+        void flush();  // the chunk being filled into the row's buffers
+        BounceSunGather& g_;
+        int row_ = -1, chunk_ = -1;
+        std::vector<int> key_[kLanes];  // per receiver of the chunk, its entries' (dc, dr) as one index
+        std::vector<float> weight_[kLanes];
+        std::vector<std::uint32_t> slot_of_, stamp_;  // per (dc, dr): its place in the chunk, and when set
+        std::uint32_t epoch_ = 0;
+        std::vector<int> keys_;
+        std::vector<float> sums_;
+        std::vector<std::int32_t> offset_;  // the row's, as Row's
+        std::vector<std::uint16_t> weight16_;
+        std::vector<std::uint32_t> begin_;
+        long long reach_ = 0;
+    };
+
+    int bounces() const { return bounces_; }
+    int width() const { return width_; }
+    bool empty() const { return far_.empty(); }
+    std::size_t texels() const { return far_.size(); }
+    std::size_t entries() const;  // receiver-offset pairs with a weight
+    std::size_t slots() const;    // chunk offsets (x 8 weights each)
+    const std::vector<float>& far() const { return far_; }
+
+    // out[t] = b1_t (+ b2_t), texels() entries; `sun` is sun_j per texel (NaN taken as 0),
+    // `sun_z` the sun direction's up component. `vector_units`: false takes the portable loop
+    // (the same sums; tests compare the two).
+    void apply(const float* sun, float sun_z, float* out, Scratch& scratch, int threads,
+               bool vector_units = true) const;
+
+private:
+    struct Row {
+        std::vector<std::uint32_t> chunk_begin;  // per chunk, where its offsets start; one more at the end
+        std::vector<std::int32_t> offset;        // j - t, a grid index difference
+        std::vector<std::uint16_t> weight;       // kLanes per offset: w_tj / scale_t in 16 bits
+        long long reach = 0;                     // the largest |offset|
+    };
+    void gather_rows(const float* values, const float* base, float base_scale, float* out, int r0, int r1,
+                     bool vector_units) const;
+
+    int bounces_ = 0;
+    int width_ = 0;
+    std::vector<Row> rows_;
+    std::vector<float> scale_;  // per texel: w_tj = weight x scale_t (its largest / 65535)
+    std::vector<float> far_;    // far_t (0 on voids)
 };
 
 }  // namespace ts::render

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -90,14 +91,7 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     const int d_count = in.horizons->directions;
     const AzimuthTable az(d_count);
     // The sun part's weights, per row (bounce_sun_gather.hpp).
-    if (sun) {
-        sun->bounces = s.bounces;
-        sun->width = grid.width;
-        sun->rows.assign(std::size_t(grid.height), {});
-        sun->begin.assign(texels, 0);
-        sun->scale.assign(texels, 0.0f);
-        sun->far.assign(texels, 0.0f);
-    }
+    if (sun) *sun = BounceSunGather(s.bounces, grid.width, grid.height);
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         std::unique_ptr<visibility::TerrainGatherer> g;
         if (gather) {
@@ -105,11 +99,12 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
             g->set_recording(sun != nullptr);
         }
         std::vector<float> weights;
+        std::optional<BounceSunGather::Writer> sun_rows;
+        if (sun) sun_rows.emplace(*sun);
         for (int r = r0; r < r1; ++r) {
             if (g) g->set_row(r);
             for (int c = 0; c < grid.width; ++c) {
                 const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
-                if (sun) sun->begin[t] = std::uint32_t(sun->rows[std::size_t(r)].size());  // voids too
                 if (!valid(t)) continue;
                 double far_sr = 0, coef = 0;
                 if (g) {
@@ -126,22 +121,20 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                 const double far = far_sr / kPiD * in.albedo[t];
                 for (std::size_t i = 0; i < K; ++i)
                     out[i * texels + t] = float((g ? coef * g->seen()[i] : 0.0) + far * flat[i]);
-                if (sun) {
-                    sun->far[t] = float(far);
+                if (sun_rows) {
                     if (g && !g->seen_texels().empty()) {
                         const std::vector<std::uint32_t>& seen = g->seen_texels();
                         weights.resize(seen.size());
                         for (std::size_t k = 0; k < seen.size(); ++k)
                             weights[k] = float(coef * g->seen_weights()[k] * in.albedo[seen[k]]);
-                        // About what rugged terrain needs (20.7 per texel on Grenoble): a row
-                        // with any entries mostly grows once; level rows never allocate.
-                        std::vector<BounceSunGather::Entry>& row_entries = sun->rows[std::size_t(r)];
-                        if (row_entries.capacity() == 0) row_entries.reserve(std::size_t(grid.width) * 24);
-                        sun->set_entries(c, r, seen, weights);
+                        sun_rows->add(c, r, seen, weights, float(far));
+                    } else {
+                        sun_rows->add_far(c, r, float(far));
                     }
                 }
             }
         }
+        if (sun_rows) sun_rows->finish();
     });
     if (s.bounces < 2 || !gather) return out;
 

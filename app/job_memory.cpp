@@ -25,7 +25,7 @@ std::uint64_t visibility_peak_bytes(std::uint64_t texels, int directions, bool s
 }
 
 std::uint64_t render_peak_bytes(std::uint64_t texels, int directions, bool meshes) {
-    return with_margin(4.0 * directions + 360.0 + (meshes ? 64.0 : 0.0), texels);
+    return with_margin(4.0 * directions + 310.0 + (meshes ? 64.0 : 0.0), texels);
 }
 
 void check_job_memory(const std::string& what, std::uint64_t bytes, const std::string& reduce) {

@@ -6,8 +6,8 @@
 // Per texel, measured as peak resident memory over the 1201x1201 SRTM3 tile N00E010 (the
 // figures in docs/user-guide.md, "Memory"): the visibility pass keeps ~4 bytes per azimuth plus
 // ~90 bytes (heights, metric grid, sweep scratch, svf), +110 with the SH products; a render or
-// relight keeps ~4 per azimuth plus ~360 (log-SH, transfer vectors, materials, frame buffers,
-// and ~135 for the bounce's sun gather, core/render/bounce_sun_gather.hpp), and with meshes 64 more: the terrain's own log-SH, kept for the sky bound and the moves (the
+// relight keeps ~4 per azimuth plus ~310 (log-SH, transfer vectors, materials, frame buffers,
+// and ~85 for the bounce's sun gather, core/render/bounce_sun_gather.hpp), and with meshes 64 more: the terrain's own log-SH, kept for the sky bound and the moves (the
 // bound's entries, ~52 bytes per texel a mesh changes, follow the footprints and are left out).
 // A margin of 25% covers allocator overhead and the writers' frames.
 //

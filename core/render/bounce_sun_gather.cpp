@@ -21,13 +21,13 @@ constexpr int kChunkLanes = BounceSunGather::kLanes;
 // One chunk: out[l] = base_scale base[l] + scale[l] sum_k weight[k][l] here[offset[k] + l], for
 // the chunk's `lanes` receivers. `here` and `base` point at its first receiver; `here` is read
 // for all kChunkLanes lanes at every offset (apply()'s margins), `base` only for the receivers.
-inline void chunk_portable(const std::int32_t* offset, const std::uint16_t* weight, std::uint32_t count,
+inline void chunk_portable(const std::int32_t* offset, const std::uint8_t* weight, std::uint32_t count,
                            const float* here, const float* base, float base_scale, const float* scale, float* out,
                            int lanes) {
     float sum[kChunkLanes] = {};
     for (std::uint32_t k = 0; k < count; ++k) {
         const float* v = here + offset[k];
-        const std::uint16_t* w = weight + std::size_t(k) * kChunkLanes;
+        const std::uint8_t* w = weight + std::size_t(k) * kChunkLanes;
         for (int l = 0; l < kChunkLanes; ++l) sum[l] += float(w[l]) * v[l];
     }
     for (int l = 0; l < lanes; ++l) out[l] = base[l] * base_scale + sum[l] * scale[l];
@@ -41,12 +41,12 @@ bool bounce_sun_has_avx2() {
 // chunk_portable with the 8 lanes in one register: two sums, each offset's values one unaligned
 // load. On Grenoble the bounce's per-frame CPU time is half that of per-receiver entries
 // (docs/rendering.md, "How the weights are kept").
-[[gnu::target("avx2,fma")]] void chunk_avx2(const std::int32_t* offset, const std::uint16_t* weight,
-                                            std::uint32_t count, const float* here, const float* base, float base_scale,
-                                            const float* scale, float* out, int lanes) {
+[[gnu::target("avx2,fma")]] void chunk_avx2(const std::int32_t* offset, const std::uint8_t* weight, std::uint32_t count,
+                                            const float* here, const float* base, float base_scale, const float* scale,
+                                            float* out, int lanes) {
     __m256 s0 = _mm256_setzero_ps(), s1 = _mm256_setzero_ps();
 #define TS_BOUNCE_TERM(K, SUM)                                                                            \
-    SUM = _mm256_fmadd_ps(_mm256_cvtepi32_ps(_mm256_cvtepu16_epi32(_mm_loadu_si128(                       \
+    SUM = _mm256_fmadd_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_loadl_epi64(                        \
                               reinterpret_cast<const __m128i*>(weight + std::size_t(K) * kChunkLanes)))), \
                           _mm256_loadu_ps(here + offset[K]), SUM)
     std::uint32_t k = 0;
@@ -95,7 +95,7 @@ std::size_t BounceSunGather::slots() const {
 std::size_t BounceSunGather::entries() const {
     std::size_t n = 0;
     for (const Row& r : rows_)
-        for (std::uint16_t w : r.weight) n += w != 0;
+        for (std::uint8_t w : r.weight) n += w != 0;
     return n;
 }
 
@@ -132,7 +132,7 @@ void BounceSunGather::Writer::add(int col, int row, const std::vector<std::uint3
 }
 
 // The chunk's offsets are the union of its receivers' (in the order first seen); each receiver's
-// weights are summed per offset, then stored in 16 bits against its largest.
+// weights are summed per offset, then stored in 8 bits against its largest.
 void BounceSunGather::Writer::flush() {
     if (chunk_ < 0) return;
     ++epoch_;
@@ -155,18 +155,25 @@ void BounceSunGather::Writer::flush() {
         offset_.push_back(std::int32_t(o));
         reach_ = std::max(reach_, std::llabs(o));
     }
-    weight16_.resize(offset_.size() * kChunkLanes, 0);
+    weight8_.resize(offset_.size() * kChunkLanes, 0);
     for (int l = 0; l < kChunkLanes; ++l) {
         if (key_[l].empty()) continue;
         float top = 0;
         for (std::size_t k = 0; k < keys_.size(); ++k) top = std::max(top, sums_[k * kChunkLanes + std::size_t(l)]);
         const std::size_t t = std::size_t(row_) * std::size_t(g_.width_) + std::size_t(chunk_ * kChunkLanes + l);
-        g_.scale_[t] = top / 65535.0f;
-        // The march's weights can come out below 0 by rounding (1e-16..1e-14 on level ground): 0.
-        if (top > 0)
-            for (std::size_t k = 0; k < keys_.size(); ++k)
-                weight16_[(first + k) * kChunkLanes + std::size_t(l)] =
-                    std::uint16_t(std::max(0.0f, sums_[k * kChunkLanes + std::size_t(l)] / top) * 65535.0f + 0.5f);
+        g_.scale_[t] = top / 255.0f;
+        // 8 bits against the receiver's largest, each code's rounding carried into the next
+        // (the sum of the codes stays within half a code of the weights'). The march's weights
+        // can come out below 0 by rounding (1e-16..1e-14 on level ground): 0.
+        if (top > 0) {
+            float carry = 0;
+            for (std::size_t k = 0; k < keys_.size(); ++k) {
+                const float x = std::max(0.0f, sums_[k * kChunkLanes + std::size_t(l)] / top) * 255.0f + carry;
+                const float code = std::min(255.0f, std::max(0.0f, std::nearbyint(x)));
+                carry = x - code;
+                weight8_[(first + k) * kChunkLanes + std::size_t(l)] = std::uint8_t(code);
+            }
+        }
         key_[l].clear();
         weight_[l].clear();
     }
@@ -181,11 +188,11 @@ void BounceSunGather::Writer::finish() {
     if (row_ < 0) return;
     Row& row = g_.rows_[std::size_t(row_)];
     row.offset.assign(offset_.begin(), offset_.end());
-    row.weight.assign(weight16_.begin(), weight16_.end());
+    row.weight.assign(weight8_.begin(), weight8_.end());
     row.chunk_begin = begin_;
     row.reach = reach_;
     offset_.clear();
-    weight16_.clear();
+    weight8_.clear();
     reach_ = 0;
     row_ = -1;
 }
@@ -205,7 +212,7 @@ void BounceSunGather::gather_rows(const float* values, const float* base, float 
             const std::uint32_t k0 = row.chunk_begin[chunk], count = row.chunk_begin[chunk + 1] - k0;
             const int lanes = int(std::min<std::size_t>(kChunkLanes, w - c));
             const std::int32_t* offset = row.offset.data() + k0;
-            const std::uint16_t* weight = row.weight.data() + std::size_t(k0) * kChunkLanes;
+            const std::uint8_t* weight = row.weight.data() + std::size_t(k0) * kChunkLanes;
 #ifdef TS_BOUNCE_SUN_AVX2
             if (avx2) {
                 chunk_avx2(offset, weight, count, values + t, base + t, base_scale, scale_.data() + t, out + t, lanes);

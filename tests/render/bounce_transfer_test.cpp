@@ -189,10 +189,11 @@ void expect_weights_reproduce_the_bounce_transfer(bool holes, int width = 48) {
             if (std::isnan(b[k])) {
                 ASSERT_EQ(out[k], 0.0f) << "void texel " << k;
             } else if (bounces == 1) {
-                // The weights in 16 bits against each receiver's largest: ~1e-4 of the sum.
-                ASSERT_NEAR(out[k], b[k], 5e-4 * std::abs(b[k]) + 1e-9) << "texel " << k;
+                // The weights in 8 bits against each receiver's largest, the rounding carried from
+                // one to the next: ~1e-3 of the sum where the values vary (here by 30%).
+                ASSERT_NEAR(out[k], b[k], 3e-3 * std::abs(b[k]) + 1e-9) << "texel " << k;
             } else {  // b1 + sum_j w_tj b1_j: T_b's second pass over its first
-                ASSERT_NEAR(out[k], b[k], 1e-3 * std::abs(b[k]) + 1e-9) << "texel " << k;
+                ASSERT_NEAR(out[k], b[k], 4e-3 * std::abs(b[k]) + 1e-9) << "texel " << k;
                 ASSERT_GE(out[k], first[k]);
             }
         }

@@ -220,29 +220,38 @@ void BounceSunGather::gather_rows(const float* values, const float* base, float 
     }
 }
 
-void BounceSunGather::apply(const float* sun, float sun_z, float* out, Scratch& scratch, int threads,
-                            bool vector_units) const {
-    const std::size_t n = texels();
-    if (n == 0 || width_ <= 0) return;
+float* BounceSunGather::sun_values(Scratch& scratch) const {
     long long reach = 0;
     for (const Row& r : rows_) reach = std::max(reach, r.reach);
     // A chunk's lanes read its offsets from every receiver, and up to kChunkLanes past a row's last.
-    const std::size_t margin = std::size_t(reach) + kChunkLanes;
-    const int row_count = int(rows_.size());
-    const long long work = (long long)(slots() / std::size_t(row_count)) * kChunkLanes + width_;
-    // The values, finite (NaN: 0), between zero margins (the lanes' reads beyond the grid).
+    const std::size_t n = texels(), margin = std::size_t(reach) + kChunkLanes;
     if (scratch.texels != n || scratch.margin != margin) {
         scratch.values.clear(), scratch.first.clear();
         scratch.texels = n, scratch.margin = margin;
     }
-    float* values = with_margins(scratch.values, n, margin);
-    parallel_rows(row_count, threads, width_ * 2LL, [&](int r0, int r1) {
+    return with_margins(scratch.values, n, margin);
+}
+
+void BounceSunGather::apply(const float* sun, float sun_z, float* out, Scratch& scratch, int threads,
+                            bool vector_units) const {
+    float* values = sun_values(scratch);
+    parallel_rows(int(rows_.size()), threads, width_ * 2LL, [&](int r0, int r1) {
         for (std::size_t t = std::size_t(r0) * std::size_t(width_), e = std::size_t(r1) * std::size_t(width_); t < e;
              ++t)
             values[t] = sun[t] == sun[t] ? sun[t] : 0.0f;
     });
+    apply(sun_z, out, scratch, threads, vector_units);
+}
+
+void BounceSunGather::apply(float sun_z, float* out, Scratch& scratch, int threads, bool vector_units) const {
+    const std::size_t n = texels();
+    if (n == 0 || width_ <= 0) return;
+    if (scratch.texels != n) throw std::logic_error("BounceSunGather::apply: the values were not written for it");
+    const float* values = scratch.values.data() + scratch.margin;
+    const int row_count = int(rows_.size());
+    const long long work = (long long)(slots() / std::size_t(row_count)) * kChunkLanes + width_;
     const float flat_sun = std::max(0.0f, sun_z);
-    float* first = bounces_ >= 2 ? with_margins(scratch.first, n, margin) : out;
+    float* first = bounces_ >= 2 ? with_margins(scratch.first, n, scratch.margin) : out;
     parallel_rows(row_count, threads, work,
                   [&](int r0, int r1) { gather_rows(values, far_.data(), flat_sun, first, r0, r1, vector_units); });
     if (bounces_ < 2) return;

@@ -32,7 +32,7 @@ class BounceSunGather {
 public:
     static constexpr int kLanes = 8;  // receivers per chunk
 
-    // The values apply() reads, copied with a margin (lanes of a chunk read offsets only their
+    // The values apply() reads, with a margin (lanes of a chunk read offsets only their
     // neighbours see, up to the reach beyond the grid) and the first bounce between the two.
     struct Scratch {
         std::vector<float> values, first;
@@ -82,9 +82,14 @@ public:
     std::size_t slots() const;    // chunk offsets (x 8 weights each)
     const std::vector<float>& far() const { return far_; }
 
-    // out[t] = b1_t (+ b2_t), texels() entries; `sun` is sun_j per texel (NaN taken as 0),
-    // `sun_z` the sun direction's up component. `vector_units`: false takes the portable loop
+    // Where a frame writes sun_j, texels() finite values, for apply(): inside `scratch`, between
+    // the margins it needs (the frame renderer fills it in place, no copy).
+    float* sun_values(Scratch& scratch) const;
+    // out[t] = b1_t (+ b2_t), texels() entries, from the values written through sun_values();
+    // `sun_z` is the sun direction's up component. `vector_units`: false takes the portable loop
     // (the same sums; tests compare the two).
+    void apply(float sun_z, float* out, Scratch& scratch, int threads, bool vector_units = true) const;
+    // The same from an array of sun_j (NaN taken as 0), copied into `scratch` first.
     void apply(const float* sun, float sun_z, float* out, Scratch& scratch, int threads,
                bool vector_units = true) const;
 

@@ -165,16 +165,17 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
 void FrameRenderer::add_gathered_bounce_sun(const glm::vec3& s, const glm::vec3& e_diffuse, int threads) {
     const std::size_t texels = state_.texels(), width = std::size_t(state_.width());
     const NormalField& nf = state_.normals();
-    sun_light_.resize(texels);
+    const BounceSunGather& gather = state_.bounce_sun_gather();
+    float* sun_light = gather.sun_values(bounce_scratch_);
     bounce_sun_.resize(texels);
     parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
         for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t) {
             const float v = sun_vis_[t];
             const float cos_s = nf.x[t] * s.x + nf.y[t] * s.y + nf.z[t] * s.z;
-            sun_light_[t] = v == v && cos_s > 0 ? v * cos_s : 0.0f;  // NaN (void) -> no sun
+            sun_light[t] = v == v && cos_s > 0 ? v * cos_s : 0.0f;  // NaN (void) -> no sun
         }
     });
-    state_.bounce_sun_gather().apply(sun_light_.data(), s.z, bounce_sun_.data(), bounce_scratch_, threads);
+    gather.apply(s.z, bounce_sun_.data(), bounce_scratch_, threads);
     parallel_rows(state_.height(), threads, state_.width() * 4LL, [&](int r0, int r1) {
         for (std::size_t t = std::size_t(r0) * width, e = std::size_t(r1) * width; t < e; ++t)
             sky_add_[t] += bounce_sun_[t] * e_diffuse;

@@ -70,8 +70,8 @@ private:
     // Per-frame scratch, allocated once.
     std::vector<glm::vec3> diffuse_rgb_, spec_rgb_;  // diffuse_rgb_: backend path only
     std::vector<glm::vec3> sky_add_;  // the sky light over the horizons and the gathered bounce's sun, E / pi
-    // The bounce's sun part gathered per frame: each texel's sun, the bounce, scratch.
-    std::vector<float> sun_light_, bounce_sun_;
+    // The bounce's sun part gathered per frame, and the gather's scratch (each texel's sun in it).
+    std::vector<float> bounce_sun_;
     BounceSunGather::Scratch bounce_scratch_;
     // Gathers it and adds it, times E_sun / pi, to sky_add_.
     void add_gathered_bounce_sun(const glm::vec3& sun_dir, const glm::vec3& e_diffuse, int threads);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "core/util/parallel_for.hpp"
@@ -16,6 +17,13 @@ namespace ts::render {
 namespace {
 
 constexpr int kChunkLanes = BounceSunGather::kLanes;
+// GCC/Clang vector extension: half a chunk's lanes, one SSE register on the baseline build.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+using Byte4 = std::uint8_t __attribute__((vector_size(4)));
+[[gnu::always_inline]] inline void load4(Float4& v, const float* p) {
+    std::memcpy(&v, p, sizeof v);
+}
 // The writer's table: (dc, dr) within the reach as one index.
 constexpr int kKeySide = 2 * kBounceSunGatherReach + 1;
 
@@ -107,24 +115,54 @@ void BounceSunGather::Writer::add_far(int col, int row, float far) {
     g_.far_[std::size_t(row) * std::size_t(g_.width_) + std::size_t(col)] = far;
 }
 
-void BounceSunGather::Writer::add(int col, int row, const std::vector<std::uint32_t>& texel,
-                                  const std::vector<float>& weight, float far) {
-    add_far(col, row, far);
+void BounceSunGather::Writer::start(int row, int chunk) {
     if (row != row_) {
         finish();
         row_ = row;
         begin_.assign(g_.rows_[std::size_t(row)].chunk_begin.size(), 0);
     }
-    if (col / kChunkLanes != chunk_) flush(), chunk_ = col / kChunkLanes;
+    if (chunk != chunk_) flush(), chunk_ = chunk;
+}
+
+namespace {
+int sun_table_key(int dc, int dr) {
+    if (std::max(std::abs(dc), std::abs(dr)) > kBounceSunGatherReach)
+        throw std::logic_error("BounceSunGather: an entry beyond the gather's reach");
+    return (dr + kBounceSunGatherReach) * kKeySide + dc + kBounceSunGatherReach;
+}
+}  // namespace
+
+void BounceSunGather::Writer::add(int col, int row, const std::vector<std::uint32_t>& texel,
+                                  const std::vector<float>& weight, float far) {
+    add_far(col, row, far);
+    start(row, col / kChunkLanes);
     const std::uint32_t w = std::uint32_t(g_.width_);
     const int lane = col % kChunkLanes;
     for (std::size_t k = 0; k < texel.size(); ++k) {
-        const int dc = int(texel[k] % w) - col, dr = int(texel[k] / w) - row;
-        if (std::max(std::abs(dc), std::abs(dr)) > kBounceSunGatherReach)
-            throw std::logic_error("BounceSunGather: an entry beyond the gather's reach");
-        key_[lane].push_back((dr + kBounceSunGatherReach) * kKeySide + dc + kBounceSunGatherReach);
+        key_[lane].push_back(sun_table_key(int(texel[k] % w) - col, int(texel[k] / w) - row));
         weight_[lane].push_back(weight[k]);
     }
+}
+
+void BounceSunGather::Writer::add_chunk(int col0, int row, unsigned lanes, const ChunkEntry* entries, std::size_t count,
+                                        const float* far) {
+    for (int l = 0; l < kChunkLanes; ++l)
+        if (lanes >> l & 1u) add_far(col0 + l, row, far[l]);
+    start(row, col0 / kChunkLanes);
+    ++epoch_;
+    keys_.clear();
+    sums_.clear();
+    for (std::size_t e = 0; e < count; ++e) {
+        const std::size_t key = std::size_t(sun_table_key(entries[e].dc, entries[e].dr));
+        if (stamp_[key] != epoch_) {
+            stamp_[key] = epoch_, slot_of_[key] = std::uint32_t(keys_.size());
+            keys_.push_back(int(key));
+            sums_.resize(sums_.size() + kChunkLanes, 0.0f);
+        }
+        float* sum = sums_.data() + std::size_t(slot_of_[key]) * kChunkLanes;
+        for (int l = 0; l < kChunkLanes; ++l) sum[l] += entries[e].weight[l];
+    }
+    store_chunk();
 }
 
 // The chunk's offsets are the union of its receivers' (in the order first seen); each receiver's
@@ -144,6 +182,10 @@ void BounceSunGather::Writer::flush() {
             }
             sums_[std::size_t(slot_of_[key]) * kChunkLanes + std::size_t(l)] += weight_[l][k];
         }
+    store_chunk();
+}
+
+void BounceSunGather::Writer::store_chunk() {
     const std::size_t first = offset_.size();
     for (int key : keys_) {
         const long long dr = key / kKeySide - kBounceSunGatherReach, dc = key % kKeySide - kBounceSunGatherReach;
@@ -152,26 +194,38 @@ void BounceSunGather::Writer::flush() {
         reach_ = std::max(reach_, std::llabs(o));
     }
     weight8_.resize(offset_.size() * kChunkLanes, 0);
-    for (int l = 0; l < kChunkLanes; ++l) {
-        if (key_[l].empty()) continue;
-        float top = 0;
-        for (std::size_t k = 0; k < keys_.size(); ++k) top = std::max(top, sums_[k * kChunkLanes + std::size_t(l)]);
-        const std::size_t t = std::size_t(row_) * std::size_t(g_.width_) + std::size_t(chunk_ * kChunkLanes + l);
-        g_.scale_[t] = top / 255.0f;
-        // 8 bits against the receiver's largest, each code's rounding carried into the next
-        // (the sum of the codes stays within half a code of the weights'). The march's weights
-        // can come out below 0 by rounding (1e-16..1e-14 on level ground): 0.
-        if (top > 0) {
-            float carry = 0;
-            for (std::size_t k = 0; k < keys_.size(); ++k) {
-                const float x = std::max(0.0f, sums_[k * kChunkLanes + std::size_t(l)] / top) * 255.0f + carry;
-                const float code = std::min(255.0f, std::max(0.0f, std::nearbyint(x)));
-                carry = x - code;
-                weight8_[(first + k) * kChunkLanes + std::size_t(l)] = std::uint8_t(code);
-            }
+    // The 8 receivers' codes as vectors, 4 lanes at a time (their carries are independent).
+    Float4 top[2] = {}, carry[2] = {};
+    for (std::size_t k = 0; k < keys_.size(); ++k)
+        for (int h = 0; h < 2; ++h) {
+            Float4 s;
+            load4(s, sums_.data() + k * kChunkLanes + 4 * h);
+            top[h] = s > top[h] ? s : top[h];
         }
+    for (int l = 0; l < kChunkLanes; ++l) {
+        const int col = chunk_ * kChunkLanes + l;
+        if (col < g_.width_)  // 0 where a receiver has no weights, as it was
+            g_.scale_[std::size_t(row_) * std::size_t(g_.width_) + std::size_t(col)] = top[l / 4][l % 4] / 255.0f;
         key_[l].clear();
         weight_[l].clear();
+    }
+    // 8 bits against the receiver's largest, each code's rounding carried into the next (the
+    // sum of the codes stays within half a code of the weights'). The march's weights can come
+    // out below 0 by rounding (1e-16..1e-14 on level ground): 0. x >= -0.5, so truncating
+    // x + 0.5 rounds it (ties up). A receiver without weight gets codes 0.
+    const Float4 zero{};
+    for (int h = 0; h < 2; ++h) {
+        const Float4 to_code = top[h] > zero ? 255.0f / top[h] : zero;
+        for (std::size_t k = 0; k < keys_.size(); ++k) {
+            Float4 s;
+            load4(s, sums_.data() + k * kChunkLanes + 4 * h);
+            const Float4 x = (s > zero ? s * to_code : zero) + carry[h];
+            Float4 c = __builtin_convertvector(__builtin_convertvector(x + 0.5f, Int4), Float4);
+            c = c > 255.0f ? zero + 255.0f : c;
+            carry[h] = x - c;
+            const Byte4 code = __builtin_convertvector(__builtin_convertvector(c, Int4), Byte4);
+            std::memcpy(weight8_.data() + (first + k) * kChunkLanes + 4 * h, &code, sizeof code);
+        }
     }
     // Chunks without receivers in between keep no offsets: their begins follow the last one's end.
     for (std::size_t c = std::size_t(chunk_) + 1; c < begin_.size(); ++c) begin_[c] = std::uint32_t(offset_.size());

@@ -56,10 +56,22 @@ public:
         void add(int col, int row, const std::vector<std::uint32_t>& texel, const std::vector<float>& weight,
                  float far);
         void add_far(int col, int row, float far);  // a receiver that sees no terrain
+        // A whole chunk at once (receivers col0 + l with bit l of `lanes` set; col0 a multiple
+        // of kLanes), from the entries its receivers share: entry (dc, dr) from each receiver
+        // with its weight per lane (0 where a lane does not see it). The same weights as add()
+        // per receiver; a chunk is added whole this way or receiver by receiver, not both.
+        struct ChunkEntry {
+            int dc, dr;
+            float weight[kLanes];
+        };
+        void add_chunk(int col0, int row, unsigned lanes, const ChunkEntry* entries, std::size_t count,
+                       const float* far);
         void finish();
 
     private:
-        void flush();  // the chunk being filled into the row's buffers
+        void start(int row, int chunk);
+        void flush();        // the chunk being filled by add() into the row's buffers
+        void store_chunk();  // keys_ and sums_ (the chunk's offsets and weights) into the row's buffers
         BounceSunGather& g_;
         int row_ = -1, chunk_ = -1;
         std::vector<int> key_[kLanes];  // per receiver of the chunk, its entries' (dc, dr) as one index

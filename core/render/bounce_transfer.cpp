@@ -87,51 +87,67 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
     gi.channels = k_count;
     gi.values = values;
     gi.curvature = in.curvature;
+    if (sun) gi.record_scale = in.albedo;  // the sun part's weights are w_tj albedo_j
     const long long work_per_row = (long long)grid.width * (gather ? std::min(s.gather.directions, 64) * 16 : 32);
     const int d_count = in.horizons->directions;
     const AzimuthTable az(d_count);
     // The sun part's weights, per row (bounce_sun_gather.hpp).
     if (sun) *sun = BounceSunGather(s.bounces, grid.width, grid.height);
+    constexpr int kLanes = visibility::TerrainGatherer::kChunkLanes;
+    static_assert(kLanes == BounceSunGather::kLanes, "the gather's chunks are the sun part's");
+    // Bit l: receiver (col0 + l, row) is valid.
+    auto lanes_of = [&](int col0, int row) {
+        unsigned lanes = 0;
+        for (int l = 0; l < kLanes && col0 + l < grid.width; ++l)
+            if (valid(std::size_t(row) * std::size_t(grid.width) + std::size_t(col0 + l))) lanes |= 1u << l;
+        return lanes;
+    };
     parallel_rows(grid.height, in.threads, work_per_row, [&](int r0, int r1) {
         std::unique_ptr<visibility::TerrainGatherer> g;
         if (gather) {
             g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
             g->set_recording(sun != nullptr);
         }
-        std::vector<float> weights;
+        std::vector<BounceSunGather::Writer::ChunkEntry> entries;
         std::optional<BounceSunGather::Writer> sun_rows;
         if (sun) sun_rows.emplace(*sun);
         for (int r = r0; r < r1; ++r) {
             if (g) g->set_row(r);
-            for (int c = 0; c < grid.width; ++c) {
-                const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
-                if (!valid(t)) continue;
-                double far_sr = 0, coef = 0;
-                if (g) {
-                    // The seen and far weights add up to the blocked view at the gather's sectors,
-                    // in units of a sector's width: times dphi / pi for T_b.
-                    g->gather(c, r);
-                    coef = 2.0 / g->sectors();
-                    far_sr = g->far_weight() * coef * kPiD;
-                } else {
-                    far_sr = visibility::blocked_view(in.horizons->angle.data() + t, texels, d_count,
-                                                      az.cos_phi.data(), az.sin_phi.data(), in.normals->x[t],
-                                                      in.normals->y[t], in.normals->z[t]);
+            for (int col0 = 0; col0 < grid.width; col0 += kLanes) {
+                const unsigned lanes = lanes_of(col0, r);
+                if (!lanes) continue;
+                const std::size_t t0 = std::size_t(r) * std::size_t(grid.width) + std::size_t(col0);
+                // The seen and far weights add up to the blocked view at the gather's sectors, in
+                // units of a sector's width: times dphi / pi for T_b.
+                const double coef = g ? 2.0 / g->sectors() : 0.0;
+                if (g) g->gather_chunk(col0, r, lanes);
+                float far[kLanes] = {};
+                for (int l = 0; l < kLanes; ++l) {
+                    if (!(lanes >> l & 1u)) continue;
+                    const std::size_t t = t0 + std::size_t(l);
+                    const double far_sr =
+                        g ? g->chunk_far_weight(l) * coef * kPiD
+                          : visibility::blocked_view(in.horizons->angle.data() + t, texels, d_count, az.cos_phi.data(),
+                                                     az.sin_phi.data(), in.normals->x[t], in.normals->y[t],
+                                                     in.normals->z[t]);
+                    const double far_l = far_sr / kPiD * in.albedo[t];
+                    far[l] = float(far_l);
+                    for (std::size_t i = 0; i < K; ++i)
+                        out[i * texels + t] = float((g ? coef * g->chunk_seen(l)[i] : 0.0) + far_l * flat[i]);
                 }
-                const double far = far_sr / kPiD * in.albedo[t];
-                for (std::size_t i = 0; i < K; ++i)
-                    out[i * texels + t] = float((g ? coef * g->seen()[i] : 0.0) + far * flat[i]);
-                if (sun_rows) {
-                    if (g && !g->seen_texels().empty()) {
-                        const std::vector<std::uint32_t>& seen = g->seen_texels();
-                        weights.resize(seen.size());
-                        for (std::size_t k = 0; k < seen.size(); ++k)
-                            weights[k] = float(coef * g->seen_weights()[k] * in.albedo[seen[k]]);
-                        sun_rows->add(c, r, seen, weights, float(far));
-                    } else {
-                        sun_rows->add_far(c, r, float(far));
+                if (!sun_rows) continue;
+                // The sun part's weights: per step of the march, w_tj = coef x weight x albedo_j.
+                entries.clear();
+                const float coef_f = float(coef);
+                if (g)
+                    for (const visibility::TerrainGatherer::StepWeights& sw : g->chunk_steps()) {
+                        const visibility::TerrainGatherer::Offset o = g->step_texel(sw.step);
+                        BounceSunGather::Writer::ChunkEntry& e = entries.emplace_back();
+                        e.dc = o.col, e.dr = o.row;
+                        // The gather recorded weight x albedo_j (record_scale).
+                        for (int l = 0; l < kLanes; ++l) e.weight[l] = coef_f * sw.weight[l];
                     }
-                }
+                sun_rows->add_chunk(col0, r, lanes, entries.data(), entries.size(), far);
             }
         }
         if (sun_rows) sun_rows->finish();
@@ -149,11 +165,15 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
         const double coef = 2.0 / g.sectors();
         for (int r = r0; r < r1; ++r) {
             g.set_row(r);
-            for (int c = 0; c < grid.width; ++c) {
-                const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(c);
-                if (!valid(t)) continue;
-                g.gather(c, r);
-                for (std::size_t i = 0; i < K; ++i) second[i * texels + t] = float(coef * g.seen()[i]);
+            for (int col0 = 0; col0 < grid.width; col0 += kLanes) {
+                const unsigned lanes = lanes_of(col0, r);
+                if (!lanes) continue;
+                g.gather_chunk(col0, r, lanes);
+                for (int l = 0; l < kLanes; ++l) {
+                    if (!(lanes >> l & 1u)) continue;
+                    const std::size_t t = std::size_t(r) * std::size_t(grid.width) + std::size_t(col0 + l);
+                    for (std::size_t i = 0; i < K; ++i) second[i * texels + t] = float(coef * g.chunk_seen(l)[i]);
+                }
             }
         }
     });

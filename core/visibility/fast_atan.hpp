@@ -8,12 +8,13 @@
 
 namespace ts::visibility {
 
-// The odd polynomial on [-1, 1] both forms below evaluate.
-template <class T>
+// The odd polynomial on [-1, 1] both forms below evaluate (and the gather's lanes: T may be a
+// vector of lanes, S its element type).
+template <class T, class S = T>
 inline T atan_unit_interval(T t) {
     const T t2 = t * t;
-    return t * (T(0.99997726) +
-                t2 * (T(-0.33262347) + t2 * (T(0.19354346) + t2 * (T(-0.11643287) + t2 * (T(0.05265332) + t2 * T(-0.01172120))))));
+    return t * (S(0.99997726) +
+                t2 * (S(-0.33262347) + t2 * (S(0.19354346) + t2 * (S(-0.11643287) + t2 * (S(0.05265332) + t2 * S(-0.01172120))))));
 }
 
 inline double fast_atan(double x) {

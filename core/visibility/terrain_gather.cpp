@@ -6,8 +6,12 @@
 
 #include "core/util/error.hpp"
 #include "core/visibility/fast_atan.hpp"
+#include "core/visibility/terrain_gather_weights.hpp"
 
 namespace ts::visibility {
+using gather_detail::kHorizonReachedRad;
+using gather_detail::weight_above;
+using gather_detail::weight_above_horizon;
 namespace {
 
 // The largest divisor of D not above the asked number of azimuths.
@@ -27,29 +31,6 @@ std::vector<double> march_distances(const TerrainGatherSettings& s) {
         at += step;
     }
     return t;
-}
-
-// The march stops once its maximum is this close below the exact horizon (0.25 degree).
-constexpr double kHorizonReachedRad = 0.0043633;
-
-// F(h) (sky_above) from h's tangent (no trig: cos^2 = 1 / (1 + t^2), sin 2h = 2t / (1 + t^2)).
-inline double weight_above(double h, double tan_h, double a, double nz) {
-    const double c2 = 1.0 / (1.0 + tan_h * tan_h);
-    return sky_above(h, 2 * tan_h * c2, c2, a, nz);
-}
-
-// F at the exact horizon h in [-pi/2, pi/2], from sin(2h) and cos(2h) by short Taylor series on
-// [-pi/2, pi/2] after reduction (errors below 4e-6, far under the sectors' discretisation):
-// libm's tan here took a tenth of the gather's time in a profile.
-inline double weight_above_horizon(double h, double a, double nz) {
-    double x = 2 * h, flip = 1;
-    if (x > kPi / 2) x = kPi - x, flip = -1;
-    if (x < -kPi / 2) x = -kPi - x, flip = -1;
-    const double x2 = x * x;
-    const double sin2h = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 / 362880))));
-    const double cos2h =
-        flip * (1 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 - x2 / 3628800)))));
-    return sky_above(h, sin2h, (1 + cos2h) / 2, a, nz);
 }
 
 }  // namespace
@@ -92,6 +73,7 @@ TerrainGatherer::TerrainGatherer(const TerrainGatherInputs& in, const TerrainGat
     }
     steps_.resize(std::size_t(sectors_) * distances_.size());
     seen_.resize(std::size_t(in.channels));
+    sum_.resize(std::size_t(in.channels));
 }
 
 void TerrainGatherer::set_row(int row) {
@@ -112,7 +94,7 @@ void TerrainGatherer::set_row(int row) {
 }
 
 void TerrainGatherer::gather(int col, int row) {
-    std::fill(seen_.begin(), seen_.end(), 0.0);
+    std::fill(sum_.begin(), sum_.end(), 0.0f);
     seen_weight_ = far_weight_ = 0;
     seen_texels_.clear();
     seen_weights_.clear();
@@ -125,6 +107,7 @@ void TerrainGatherer::gather(int col, int row) {
     const double nz = std::max(double(in_.normals->z[t]), 1e-6);
     const float* z = g_.z.data();
     const float* values = in_.values.data();
+    float* sum = sum_.data();
     const std::size_t k_count = distances_.size();
     for (int d = 0; d < sectors_; ++d) {
         const double hd = in_.horizons->angle[std::size_t(d * stride) * plane + t];
@@ -151,15 +134,17 @@ void TerrainGatherer::gather(int col, int row) {
             if (std::isnan(vs[0])) {
                 far_weight_ += wt;  // terrain without values (outside a window's receivers)
             } else {
-                for (int q = 0; q < channels; ++q) seen_[std::size_t(q)] += wt * vs[q];
+                const float wf = float(wt);
+                for (int q = 0; q < channels; ++q) sum[q] += wf * vs[q];
                 seen_weight_ += wt;
                 if (recording_) {
+                    const float rw = in_.record_scale.empty() ? wf : wf * in_.record_scale[j];
                     // Consecutive samples that read the same nearest texel make one entry.
                     if (!seen_texels_.empty() && seen_texels_.back() == std::uint32_t(j)) {
-                        seen_weights_.back() += float(wt);
+                        seen_weights_.back() += rw;
                     } else {
                         seen_texels_.push_back(std::uint32_t(j));
-                        seen_weights_.push_back(float(wt));
+                        seen_weights_.push_back(rw);
                     }
                 }
             }
@@ -170,6 +155,7 @@ void TerrainGatherer::gather(int col, int row) {
         }
         if (hd > h_max) far_weight_ += f_max - weight_above_horizon(hd, a, nz);
     }
+    std::copy(sum_.begin(), sum_.end(), seen_.begin());
 }
 
 }  // namespace ts::visibility

@@ -27,9 +27,10 @@ namespace ts::visibility {
 // The cosine-weighted sky above elevation h in one azimuth, per radian of azimuth: the integral
 // over e from h to pi/2 of (n.w) cos(e), a = n.x cos(phi) + n.y sin(phi). Its callers get sin 2h
 // and cos^2 h their own way (libm, a tangent, a series), for the precision and speed they need.
-template <class T>
+// T may be a vector of lanes, S its element type.
+template <class T, class S = T>
 inline T sky_above(T h, T sin_2h, T cos2_h, T a, T nz) {
-    return a * (T(kPi) / 4 - h / 2 - sin_2h / 4) + nz * cos2_h / 2;
+    return a * (S(kPi) / 4 - h / 2 - sin_2h / 4) + nz * cos2_h / 2;
 }
 
 // The cosine-weighted solid angle of the terrain above a receiver's own plane, from its horizons
@@ -65,6 +66,8 @@ struct TerrainGatherInputs {
     std::span<const float> values;
     // Earth curvature as the horizons have it: 1 / (2 R_eff) or 0 (earth_curvature.hpp).
     double curvature = 0;
+    // Per texel, a factor of the weights recorded for it (the bounce's albedo); empty: 1.
+    std::span<const float> record_scale;
 };
 
 // One band of rows' worth of march state: the sector directions, the march's distances, and per
@@ -83,9 +86,32 @@ public:
     double seen_weight() const { return seen_weight_; }
     double far_weight() const { return far_weight_; }
 
+    // The receivers (col0 + l, row), l < kChunkLanes, whose bit l is set in `lanes` (valid, in
+    // the grid), marched together in vector lanes: the same sums as gather() in floats (a test
+    // holds them together). What each lane saw is chunk_seen(l) and chunk_far_weight(l); with
+    // recording on, chunk_steps() lists the steps of the march (sector d's k-th sample: step
+    // d x steps() + k) where a lane saw terrain with values, with the weight each lane gave the
+    // texel it read there (times record_scale), step_texel(step) from its receiver (the same for a row's receivers).
+    static constexpr int kChunkLanes = 8;
+    struct StepWeights {
+        int step;
+        float weight[kChunkLanes];
+    };
+    void gather_chunk(int col0, int row, unsigned lanes);
+    const float* chunk_seen(int lane) const { return chunk_seen_.data() + std::size_t(lane) * seen_.size(); }
+    double chunk_far_weight(int lane) const { return chunk_far_[std::size_t(lane)]; }
+    const std::vector<StepWeights>& chunk_steps() const { return chunk_steps_; }
+    int steps() const { return int(distances_.size()); }
+    struct Offset {
+        int col, row;
+    };
+    Offset step_texel(int step) const {
+        return {steps_[std::size_t(step)].near_col, steps_[std::size_t(step)].near_row};
+    }
+
     // With recording on, gather() also lists the terrain it saw with values: the texels (grid
-    // indices) and their weights, one entry per texel met in a row, so that the same sum can be made again
-    // over other per-texel values (the bounce's sun part, per frame: bounce_sun_gather.hpp).
+    // indices) and their weights (times record_scale), one entry per texel met in a row, so that the same sum can be
+    // made again over other per-texel values (the bounce's sun part, per frame: bounce_sun_gather.hpp).
     void set_recording(bool on) { recording_ = on; }
     const std::vector<std::uint32_t>& seen_texels() const { return seen_texels_; }
     const std::vector<float>& seen_weights() const { return seen_weights_; }
@@ -105,6 +131,13 @@ private:
     std::vector<double> distances_, cos_, sin_;
     std::vector<Step> steps_;
     std::vector<double> seen_;
+    // seen_ as the march sums it: in floats, so that a sample's channels go as vectors (a receiver
+    // sums a few dozen samples).
+    std::vector<float> sum_;
+    std::vector<float> chunk_seen_;  // [lane][channel]
+    std::vector<double> chunk_far_;  // [lane]
+    std::vector<StepWeights> chunk_steps_;
+    std::vector<float> zeros_;  // a row of values for lanes that add nothing
     double seen_weight_ = 0, far_weight_ = 0;
     bool recording_ = false;
     std::vector<std::uint32_t> seen_texels_;

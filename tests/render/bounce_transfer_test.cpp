@@ -215,6 +215,69 @@ TEST(BounceSunGather, ItsWeightsAreTheBounceTransfers) {
     EXPECT_TRUE(g.empty());
 }
 
+// A chunk added whole (the gather's chunk march) keeps the weights that adding its receivers
+// one by one keeps: the same offsets, and sums within the 8-bit codes' rounding (the two orders
+// of the offsets carry the rounding differently). Rows of 20: the last chunk has 4 receivers.
+TEST(BounceSunGather, AChunkAddedWholeIsItsReceiversAddedOneByOne) {
+    constexpr int kW = 20, kH = 6, kLanes = BounceSunGather::kLanes;
+    BounceSunGather whole(1, kW, kH), one_by_one(1, kW, kH);
+    {
+        BounceSunGather::Writer chunks(whole), receivers(one_by_one);
+        for (int row = 0; row < kH; ++row)
+            for (int col0 = 0; col0 < kW; col0 += kLanes) {
+                std::vector<BounceSunGather::Writer::ChunkEntry> entries;
+                for (int e = 0; e < 7; ++e) {
+                    BounceSunGather::Writer::ChunkEntry& x = entries.emplace_back();
+                    x.dc = (e * 5 + row) % 7 - 3, x.dr = (e * 3 + col0) % 5 - 2;
+                    for (int l = 0; l < kLanes; ++l)
+                        x.weight[l] = (e + l + row) % 3 == 0 ? 0.0f : float(0.01 * (1 + (e * 7 + l * 3 + row) % 11));
+                }
+                // Lane 2 of the second chunk is left out (a void); lanes beyond the row do not exist.
+                unsigned lanes = 0;
+                float far[kLanes];
+                for (int l = 0; l < kLanes && col0 + l < kW; ++l) {
+                    far[l] = 0.001f * float(l + 1);
+                    if (!(col0 == kLanes && l == 2)) lanes |= 1u << l;
+                }
+                for (int l = 0; l < kLanes; ++l) {
+                    if (!(lanes >> l & 1u)) continue;
+                    const int col = col0 + l;
+                    std::vector<std::uint32_t> texels;
+                    std::vector<float> weights;
+                    for (const auto& x : entries) {
+                        const int c = col + x.dc, r = row + x.dr;
+                        if (x.weight[l] == 0.0f || c < 0 || r < 0 || c >= kW || r >= kH) continue;
+                        texels.push_back(std::uint32_t(r * kW + c));
+                        weights.push_back(x.weight[l]);
+                    }
+                    receivers.add(col, row, texels, weights, far[l]);
+                }
+                // The chunk's entries, without those of lanes beyond the grid (as the march has them).
+                for (auto& x : entries)
+                    for (int l = 0; l < kLanes; ++l) {
+                        const int c = col0 + l + x.dc, r = row + x.dr;
+                        if (!(lanes >> l & 1u) || c < 0 || r < 0 || c >= kW || r >= kH) x.weight[l] = 0.0f;
+                    }
+                chunks.add_chunk(col0, row, lanes, entries.data(), entries.size(), far);
+            }
+        chunks.finish();
+        receivers.finish();
+    }
+    EXPECT_EQ(whole.entries(), one_by_one.entries());
+    EXPECT_GT(whole.entries(), std::size_t(kW * kH * 3));
+    const std::size_t n = std::size_t(kW) * kH;
+    std::vector<float> values(n), a(n), b(n);
+    for (std::size_t k = 0; k < n; ++k) values[k] = float(0.5 + 0.4 * std::sin(0.7 * double(k)));
+    BounceSunGather::Scratch scratch;
+    whole.apply(values.data(), 0.5f, a.data(), scratch, 1);
+    one_by_one.apply(values.data(), 0.5f, b.data(), scratch, 1);
+    for (std::size_t k = 0; k < n; ++k) {
+        EXPECT_NEAR(a[k], b[k], 3e-3 * std::abs(b[k])) << k;
+        EXPECT_EQ(whole.far()[k], one_by_one.far()[k]) << k;
+    }
+    EXPECT_EQ(a[std::size_t(kLanes + 2)], 0.0f);  // the receiver left out
+}
+
 // A texel whose whole view of the terrain is in shadow gets only the far ground's sun: what the
 // SH sun part (the neighbours' smooth, SH-lit sun) cannot tell.
 TEST(BounceSunGather, TerrainInShadowBouncesNoSun) {

@@ -132,6 +132,7 @@ void add_bench_commands(CLI::App& bench_app) {
     add_bench_blockers_command(*bench);
     add_bench_tiles_command(*bench);
     add_bench_dem_command(*bench);
+    add_bench_bounce_command(*bench);
 #ifdef TERRASHADE_HAS_GPU
     add_bench_fly_command(*bench);
 #endif

@@ -33,6 +33,9 @@ void add_bench_tiles_command(CLI::App& bench);
 void add_bench_fly_command(CLI::App& bench);
 // `terrashade bench dem` (bench_dem_command.cpp): the synthetic mosaic written as a GeoTIFF, band by band.
 void add_bench_dem_command(CLI::App& bench);
+// `terrashade bench bounce` (bench_bounce_command.cpp): the bounced light's knobs, cost against
+// the error on a crop Blender Cycles rendered.
+void add_bench_bounce_command(CLI::App& bench);
 // bench report: every knob's time and error in one CSV (bench_report_command.cpp).
 void add_bench_report_command(CLI::App& bench);
 

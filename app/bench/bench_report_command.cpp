@@ -45,6 +45,7 @@ struct BenchReportOptions {
     std::string out = "docs/charts";
     std::string data = "../shared/data";
     std::vector<std::string> only;  // studies to run (default all)
+    std::string reference_dir = "tests/render/reference";  // the stored Cycles pictures
 };
 
 // One study: a bench command line, its expected duration, and how its output becomes rows.
@@ -386,6 +387,28 @@ Study sun_caster_study(const std::string& dem, const std::string& mesh) {
     return s;
 }
 
+// bench bounce: the bounced light's knobs, the cost on a DEM (the scene's one-time work plus a
+// frame) against the error on the crop Blender Cycles rendered with 4 bounces (stored in the
+// repository, tests/render/reference/).
+Study bounce_study(const std::string& dem, const std::string& reference_dir, Size size) {
+    Study s;
+    s.name = "bounced light knobs on " + dem_name(dem);
+    s.expected_s = size == Size::tiny ? 2 : size == Size::quick ? 30 : 60;
+    const std::string crop = reference_dir + "/anatolia_tm90_64.tif";
+    const std::string timed = size == Size::tiny ? crop : dem;
+    s.args = "bounce " + shell_quote(timed) + " --reference-dem " + shell_quote(crop) +
+             " --reference " + shell_quote(reference_dir + "/cycles_clear_e20_a0.3_b4.exr") + " --frames " +
+             (size == Size::full ? "8" : "2");
+    const std::string where = dem_name(timed) + " (error: Cycles crop)";
+    s.parse = [where](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
+        for (const CsvRecord& r : csv)
+            rows.push_back({"render", r.at("knob"), r.at("value"), csv_field(r, "is_default") == 1,
+                            csv_field(r, "once_s") + csv_field(r, "frame_ms") / 1000.0, csv_field(r, "relative_rmse"),
+                            "radiance_rel_rmse_vs_cycles_4_bounces", where});
+    };
+    return s;
+}
+
 #ifdef TERRASHADE_HAS_GPU
 // bench fly: frame time and screen-space error against the LOD goal (its log's CSV lines).
 Study fly_study(const std::string& dem, double goal_px, Size size) {
@@ -437,6 +460,7 @@ std::vector<Study> studies(const BenchReportOptions& o, Size size) {
     if (size != Size::tiny) s.push_back(tile_knobs_study(grenoble));
     if (size != Size::tiny) s.push_back(culling_study(grenoble, o.data + "/meshes/c172p.ac", size));
     if (size != Size::tiny) s.push_back(sun_caster_study(dem_dir + "srtm3_N39E040_1000px.tif", o.data + "/meshes/c172p.ac"));
+    s.push_back(bounce_study(grenoble, o.reference_dir, size));
 #ifdef TERRASHADE_HAS_GPU
     if (size != Size::tiny)
         for (double g : {0.5, 1.0, 2.0, 4.0, 8.0}) s.push_back(fly_study(grenoble, g, size));
@@ -468,6 +492,11 @@ void run_bench_report(const BenchReportOptions& o) {
         if (!std::filesystem::exists(f)) throw InputError("bench report: " + f + " not found (set --data)");
     const std::vector<Study> list = studies(o, size);
     if (list.empty()) throw InputError("bench report: --only matched no study");
+    for (const Study& s : list)
+        if (s.name.starts_with("bounced light") &&
+            !std::filesystem::exists(o.reference_dir + "/cycles_clear_e20_a0.3_b4.exr"))
+            throw InputError("bench report: " + o.reference_dir +
+                             "/cycles_clear_e20_a0.3_b4.exr not found (run it from the repository, or set --reference-dir)");
     // --out DIR is made if missing (IoPlan checks it is writable), after the other checks, and
     // removed again (the folders it made, empty) if the check refuses it.
     std::error_code ec;
@@ -553,6 +582,9 @@ void add_bench_report_command(CLI::App& bench) {
     cmd->add_flag("--tiny", o->tiny)->group("");  // the CLI test: the CSV's shape in seconds
     cmd->add_option("--out", o->out, "Directory of report.csv")->capture_default_str();
     cmd->add_option("--data", o->data, "Folder holding dem/ and meshes/ (the shared data)")->capture_default_str();
+    cmd->add_option("--reference-dir", o->reference_dir,
+                    "Folder of the stored Blender Cycles pictures (the bounced light's study)")
+        ->capture_default_str();
     cmd->add_option("--only", o->only, "Run only the studies whose name contains one of these words")
         ->delimiter(',');
     cmd->callback([o] { run_bench_report(*o); });

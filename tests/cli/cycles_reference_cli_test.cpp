@@ -11,11 +11,15 @@
 // that moves the picture fails.
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "app/bench/study/picture_agreement.hpp"
 #include "cli_support.hpp"
 #include "core/raster/image_io_plugin/float_image_io.hpp"
 
@@ -38,31 +42,10 @@ constexpr double kClearMinCorrelation = 0.9996, kClearMaxRelativeRmse = 0.015;
 constexpr double kPreethamMinCorrelation = 0.9996, kPreethamMaxRelativeRmse = 0.012;
 constexpr double kOvercastMinCorrelation = 0.9985, kOvercastMaxRelativeRmse = 0.0025;
 
-std::vector<double> luminance(const raster::FloatImage& img, double scale) {
-    std::vector<double> y;
-    for (int r = kBorder; r < img.height - kBorder; ++r)
-        for (int c = kBorder; c < img.width - kBorder; ++c) {
-            const float* p = img.pixel(c, r);
-            y.push_back(scale * (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]));
-        }
-    return y;
-}
+using Agreement = bench::PictureAgreement;
 
-struct Agreement {
-    double correlation = 0, relative_rmse = 0, bias = 0;
-};
-
-Agreement agreement(const std::vector<double>& cycles, const std::vector<double>& ts) {
-    const double n = double(cycles.size());
-    double mc = 0, mt = 0;
-    for (std::size_t i = 0; i < cycles.size(); ++i) mc += cycles[i], mt += ts[i];
-    mc /= n, mt /= n;
-    double sct = 0, scc = 0, stt = 0, se = 0;
-    for (std::size_t i = 0; i < cycles.size(); ++i) {
-        const double dc = cycles[i] - mc, dt = ts[i] - mt, e = ts[i] - cycles[i];
-        sct += dc * dt, scc += dc * dc, stt += dt * dt, se += e * e;
-    }
-    return {sct / std::sqrt(scc * stt), std::sqrt(se / n) / mc, (mt - mc) / mc};
+std::vector<double> luminance(const raster::FloatImage& img) {
+    return bench::inner_luminance(img.width, img.height, img.rgb.data(), kBorder);
 }
 
 Agreement against_cycles(const std::string& sky, const std::string& reference, const std::string& options = "") {
@@ -79,7 +62,7 @@ Agreement against_cycles(const std::string& sky, const std::string& reference, c
     EXPECT_EQ(mine.width, cycles.width);
     EXPECT_EQ(mine.height, cycles.height);
     if (mine.width != cycles.width || mine.height != cycles.height) return {};
-    const Agreement a = agreement(luminance(cycles, 1.0), luminance(mine, 1.0));
+    const Agreement a = bench::picture_agreement(luminance(cycles), luminance(mine));
     std::printf("%s%s: correlation %.5f, relative RMSE %.4f, bias %+.4f\n", sky.c_str(), options.c_str(), a.correlation,
                 a.relative_rmse, a.bias);
     return a;
@@ -118,6 +101,41 @@ TEST(CyclesReferenceCli, TheBounceAddsWhatCyclesBouncesAdd) {
     const Agreement sh_sun = against_cycles("clear", "cycles_clear_e20_a0.3_b4.exr", " --bounce-sun sh");
     EXPECT_LT(bounced.relative_rmse, 0.85 * sh_sun.relative_rmse);
     EXPECT_LT(std::abs(bounced.bias), std::abs(sh_sun.bias) - 0.003);
+}
+
+// `bench bounce` (each bounced-light knob's cost against its error here; bench report charts
+// it) renders the scene this file's tests render: its default row's error is `render`'s, and the
+// knobs rank as measured (--bounces 0 1.98%, --bounce-sun sh 1.67%, the default 1.28%).
+TEST(CyclesReferenceCli, TheBounceBenchMeasuresRendersErrorForEveryKnob) {
+    const fs::path csv = temp_dir("bench_bounce") / "bounce.csv";
+    const std::string crop = quote(kReference + "anatolia_tm90_64.tif");
+    const Result r = run_ts("bench bounce " + crop + " --reference-dem " + crop + " --reference " +
+                            quote(kReference + "cycles_clear_e20_a0.3_b4.exr") + " --frames 1 --threads 2 --csv " +
+                            quote(csv.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    std::ifstream in(csv);
+    std::string line;
+    ASSERT_TRUE(std::getline(in, line));
+    EXPECT_EQ(line, "knob,value,is_default,once_s,frame_ms,relative_rmse,correlation,bias");
+    std::map<std::string, double> error;  // "knob=value" -> relative RMSE
+    std::map<std::string, int> defaults;
+    while (std::getline(in, line)) {
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
+        ASSERT_EQ(f.size(), 8u) << line;
+        error[f[0] + "=" + f[1]] = std::stod(f[5]);
+        defaults[f[0]] += f[2] == "1";
+        EXPECT_GT(std::stod(f[3]), 0.0) << line;
+        EXPECT_GT(std::stod(f[4]), 0.0) << line;
+    }
+    EXPECT_EQ(error.size(), 11u);
+    for (const char* knob : {"bounces", "bounce_sun", "bounce_directions", "bounce_radius"})
+        EXPECT_EQ(defaults[knob], 1) << knob;
+    const Agreement rendered = against_cycles("clear", "cycles_clear_e20_a0.3_b4.exr");
+    EXPECT_NEAR(error["bounces=1"], rendered.relative_rmse, 1e-4);
+    EXPECT_GT(error["bounces=0"], error["bounces=1"] + 0.005);
+    EXPECT_GT(error["bounce_sun=sh"], 1.15 * error["bounce_sun=gather"]);
 }
 
 // The terrain's transfer projected from its horizons (the default) against the log-SH path's

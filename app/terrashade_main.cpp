@@ -4,6 +4,7 @@
 
 #include "app/bench_forward.hpp"
 #include "app/command.hpp"
+#include "app/heap_huge_pages.hpp"
 #include "app/interrupt_watcher.hpp"
 #include "app/number_flags.hpp"
 #include "app/run_command_line.hpp"
@@ -11,6 +12,8 @@
 namespace ts::app {
 
 int terrashade_main(int argc, char** argv) {
+    // First of all: the heap on huge pages (app/heap_huge_pages.hpp); returns unless it re-executes.
+    reexec_with_heap_huge_pages(argv);
     // The benchmarks are their own executable (app/bench_forward.hpp).
     if (is_bench_command(argc, argv)) return forward_to_bench(argc, argv);
     // First, before any thread exists: every thread inherits the blocked SIGINT/SIGTERM.

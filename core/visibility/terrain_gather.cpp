@@ -73,7 +73,6 @@ TerrainGatherer::TerrainGatherer(const TerrainGatherInputs& in, const TerrainGat
     }
     steps_.resize(std::size_t(sectors_) * distances_.size());
     seen_.resize(std::size_t(in.channels));
-    sum_.resize(std::size_t(in.channels));
 }
 
 void TerrainGatherer::set_row(int row) {
@@ -94,7 +93,7 @@ void TerrainGatherer::set_row(int row) {
 }
 
 void TerrainGatherer::gather(int col, int row) {
-    std::fill(sum_.begin(), sum_.end(), 0.0f);
+    std::fill(seen_.begin(), seen_.end(), 0.0);
     seen_weight_ = far_weight_ = 0;
     seen_texels_.clear();
     seen_weights_.clear();
@@ -107,7 +106,6 @@ void TerrainGatherer::gather(int col, int row) {
     const double nz = std::max(double(in_.normals->z[t]), 1e-6);
     const float* z = g_.z.data();
     const float* values = in_.values.data();
-    float* sum = sum_.data();
     const std::size_t k_count = distances_.size();
     for (int d = 0; d < sectors_; ++d) {
         const double hd = in_.horizons->angle[std::size_t(d * stride) * plane + t];
@@ -134,11 +132,10 @@ void TerrainGatherer::gather(int col, int row) {
             if (std::isnan(vs[0])) {
                 far_weight_ += wt;  // terrain without values (outside a window's receivers)
             } else {
-                const float wf = float(wt);
-                for (int q = 0; q < channels; ++q) sum[q] += wf * vs[q];
+                for (int q = 0; q < channels; ++q) seen_[std::size_t(q)] += wt * vs[q];
                 seen_weight_ += wt;
                 if (recording_) {
-                    const float rw = in_.record_scale.empty() ? wf : wf * in_.record_scale[j];
+                    const float rw = float(wt) * (in_.record_scale.empty() ? 1.0f : in_.record_scale[j]);
                     // Consecutive samples that read the same nearest texel make one entry.
                     if (!seen_texels_.empty() && seen_texels_.back() == std::uint32_t(j)) {
                         seen_weights_.back() += rw;
@@ -155,7 +152,6 @@ void TerrainGatherer::gather(int col, int row) {
         }
         if (hd > h_max) far_weight_ += f_max - weight_above_horizon(hd, a, nz);
     }
-    std::copy(sum_.begin(), sum_.end(), seen_.begin());
 }
 
 }  // namespace ts::visibility

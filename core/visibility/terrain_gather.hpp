@@ -131,9 +131,6 @@ private:
     std::vector<double> distances_, cos_, sin_;
     std::vector<Step> steps_;
     std::vector<double> seen_;
-    // seen_ as the march sums it: in floats, so that a sample's channels go as vectors (a receiver
-    // sums a few dozen samples).
-    std::vector<float> sum_;
     std::vector<float> chunk_seen_;  // [lane][channel]
     std::vector<double> chunk_far_;  // [lane]
     std::vector<StepWeights> chunk_steps_;

@@ -52,6 +52,7 @@ struct BenchReportOptions {
 struct Study {
     std::string name;
     std::string args;  // after `terrashade bench`, without --csv
+    std::vector<std::string> inputs;  // files it reads beyond the shared data (checked before any study runs)
     double expected_s = 0;
     bool writes_csv = true;
     std::function<void(const std::vector<CsvRecord>& csv, const std::string& log, std::vector<ReportRow>& rows)> parse;
@@ -396,8 +397,10 @@ Study bounce_study(const std::string& dem, const std::string& reference_dir, Siz
     s.expected_s = size == Size::tiny ? 2 : size == Size::quick ? 30 : 60;
     const std::string crop = reference_dir + "/anatolia_tm90_64.tif";
     const std::string timed = size == Size::tiny ? crop : dem;
-    s.args = "bounce " + shell_quote(timed) + " --reference-dem " + shell_quote(crop) +
-             " --reference " + shell_quote(reference_dir + "/cycles_clear_e20_a0.3_b4.exr") + " --frames " +
+    const std::string cycles = reference_dir + "/cycles_clear_e20_a0.3_b4.exr";
+    s.inputs = {crop, cycles};
+    s.args = "bounce " + shell_quote(timed) + " --reference-dem " + shell_quote(crop) + " --reference " +
+             shell_quote(cycles) + " --frames " +
              (size == Size::full ? "8" : "2");
     const std::string where = dem_name(timed) + " (error: Cycles crop)";
     s.parse = [where](const std::vector<CsvRecord>& csv, const std::string&, std::vector<ReportRow>& rows) {
@@ -493,10 +496,10 @@ void run_bench_report(const BenchReportOptions& o) {
     const std::vector<Study> list = studies(o, size);
     if (list.empty()) throw InputError("bench report: --only matched no study");
     for (const Study& s : list)
-        if (s.name.starts_with("bounced light") &&
-            !std::filesystem::exists(o.reference_dir + "/cycles_clear_e20_a0.3_b4.exr"))
-            throw InputError("bench report: " + o.reference_dir +
-                             "/cycles_clear_e20_a0.3_b4.exr not found (run it from the repository, or set --reference-dir)");
+        for (const std::string& f : s.inputs)
+            if (!std::filesystem::exists(f))
+                throw InputError("bench report: " + f + " not found (study \"" + s.name +
+                                 "\"; run it from the repository, or set --reference-dir)");
     // --out DIR is made if missing (IoPlan checks it is writable), after the other checks, and
     // removed again (the folders it made, empty) if the check refuses it.
     std::error_code ec;

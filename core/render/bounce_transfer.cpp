@@ -108,6 +108,10 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
             g = std::make_unique<visibility::TerrainGatherer>(gi, s.gather);
             g->set_recording(sun != nullptr);
         }
+        // The seen and far weights add up to the blocked view at the gather's sectors, in units
+        // of a sector's width: times dphi / pi for T_b.
+        const double coef = g ? 2.0 / g->sectors() : 0.0;
+        const float coef_f = float(coef);
         std::vector<BounceSunGather::Writer::ChunkEntry> entries;
         std::optional<BounceSunGather::Writer> sun_rows;
         if (sun) sun_rows.emplace(*sun);
@@ -117,9 +121,6 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                 const unsigned lanes = lanes_of(col0, r);
                 if (!lanes) continue;
                 const std::size_t t0 = std::size_t(r) * std::size_t(grid.width) + std::size_t(col0);
-                // The seen and far weights add up to the blocked view at the gather's sectors, in
-                // units of a sector's width: times dphi / pi for T_b.
-                const double coef = g ? 2.0 / g->sectors() : 0.0;
                 if (g) g->gather_chunk(col0, r, lanes);
                 float far[kLanes] = {};
                 for (int l = 0; l < kLanes; ++l) {
@@ -138,7 +139,6 @@ std::vector<float> bounce_transfer(const BounceInputs& in, const BounceSettings&
                 if (!sun_rows) continue;
                 // The sun part's weights: per step of the march, w_tj = coef x weight x albedo_j.
                 entries.clear();
-                const float coef_f = float(coef);
                 if (g)
                     for (const visibility::TerrainGatherer::StepWeights& sw : g->chunk_steps()) {
                         const visibility::TerrainGatherer::Offset o = g->step_texel(sw.step);

@@ -73,6 +73,7 @@ TerrainGatherer::TerrainGatherer(const TerrainGatherInputs& in, const TerrainGat
     }
     steps_.resize(std::size_t(sectors_) * distances_.size());
     seen_.resize(std::size_t(in.channels));
+    zeros_.assign(std::size_t(in.channels), 0.0f);
 }
 
 void TerrainGatherer::set_row(int row) {

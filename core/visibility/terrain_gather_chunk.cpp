@@ -72,7 +72,6 @@ TS_GATHER_CLONES void TerrainGatherer::gather_chunk(int col0, int row, unsigned 
     chunk_seen_.assign(channels * kGatherLanes, 0.0f);
     chunk_far_.assign(kGatherLanes, 0.0);
     chunk_steps_.clear();
-    zeros_.assign(channels, 0.0f);
     const int w = g_.width, h = g_.height;
     const std::size_t plane = in_.horizons->texels(), texels = std::size_t(w) * std::size_t(h);
     const std::size_t t0 = std::size_t(row) * std::size_t(w) + std::size_t(col0);
@@ -157,8 +156,9 @@ TS_GATHER_CLONES void TerrainGatherer::gather_chunk(int col0, int row, unsigned 
             // Within reach of the exact horizon nothing further adds more than the far weight's sliver.
             active &= ~(rise & (h_max >= reached_at));
             // The values' texels: neighbours, one per lane (those that rose are in the grid).
-            // Without branches per lane (they mispredict): a lane that did not rise adds 0 x a
-            // row of zeros; one whose texel has no values gives its weight to the far weight.
+            // Without branches per lane (they mispredict): a lane that did not rise adds 0 times
+            // its texel's values; one whose texel has none adds 0 times a row of zeros and gives
+            // its weight to the far weight.
             alignas(32) float wt_a[kGatherLanes], rec_a[kGatherLanes];
             std::memcpy(wt_a, &wt, sizeof wt_a);
             const long long j0 = (long long)(row + st->near_row) * w + (long long)(col0 + st->near_col);

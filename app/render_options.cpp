@@ -78,8 +78,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str()
         ->check(within(0.0, 1e6));
     cmd.add_option("--shadow-detail", a.shadow_detail,
-                   "Perspective: sun shadows found per pixel by a ray towards the sun (pixel), or blended from "
-                   "the texels' (texel: a texel-wide, stepped edge; cheaper per frame)")
+                   "Perspective views and magnified maps: sun shadows found per pixel by a ray towards the sun "
+                   "(pixel), or blended from the texels' (texel: a texel-wide, stepped edge; cheaper per frame)")
         ->capture_default_str()
         ->check(CLI::IsMember({"pixel", "texel"}));
     cmd.add_option("--edge-samples", a.edge_samples,

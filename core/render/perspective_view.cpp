@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/terrain/smooth_surface.hpp"
 #include "core/terrain/valid_bilinear.hpp"
@@ -126,14 +127,7 @@ PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
     const Frame& f = frame_;
     const double dx = f.dx, dy = f.dy;
     const double half_w = f.half_width, half_h = f.half_height;
-    // The smooth surface's normal in ENU at texel-centre coordinates (rows run south: -y).
-    auto normal_at = [&](double x, double y) {
-        const terrain::SurfaceSample s = terrain::smooth_surface(g, x, y);
-        const int row = std::clamp(int(std::lround(y)), 0, g.height - 1);
-        const double gx = s.dz_dcol / g.dx_m[std::size_t(row)], gy = -s.dz_drow / g.dy_m[std::size_t(row)];
-        const double len = std::sqrt(gx * gx + gy * gy + 1.0);
-        return std::isfinite(len) ? glm::vec3(float(-gx / len), float(-gy / len), float(1.0 / len)) : glm::vec3(0, 0, 1);
-    };
+    auto normal_at = [&](double x, double y) { return slope_normal(g, terrain::smooth_surface(g, x, y), y); };
     const double a = (2.0 * u / options_.width - 1.0) * half_w;
     const double b = (1.0 - 2.0 * v / options_.height) * half_h;
     glm::dvec3 d = f.forward + a * f.right + b * f.up;
@@ -257,26 +251,11 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
     image.resize(pixels_.size());
     const terrain::HeightGrid& g = grid_;
     // Per-pixel sun shadows while the sun gives light.
-    const bool pixel_shadows = options_.pixel_sun_shadows && march_ && sun_term && sun_term->terrain_visibility &&
-                               glm::dot(sun_term->irradiance_over_pi, glm::vec3(1.0f)) > 0.0f;
-    const double sun_radius = std::acos(std::clamp(sun_cos_radius, -1.0, 1.0));
-    const double curv = visibility::curvature_factor(options_.curvature);
-    // 1 or 0 where the terrain leaves the sun wholly visible or wholly hidden at the 4 corners
-    // of patch (c0, r0), whose surface the pixel is on; -1 where a shadow's edge or penumbra
-    // crosses it (the pixel then marches its ray). A shadow that slips between four texel
-    // centres is narrower than a texel: below what the DEM resolves.
-    auto uniform_visibility = [&](int c0, int r0) {
-        const float* tv = sun_term->terrain_visibility;
-        bool lit = false, dark = false;
-        for (int r = r0; r <= std::min(r0 + 1, g.height - 1); ++r)
-            for (int c = c0; c <= std::min(c0 + 1, g.width - 1); ++c) {
-                const float v = tv[std::size_t(r) * g.width + c];
-                if (v >= 0.999f) lit = true;
-                else if (v <= 0.001f) dark = true;
-                else return -1.0f;  // penumbra, or NaN
-            }
-        return lit == dark ? -1.0f : lit ? 1.0f : 0.0f;
-    };
+    std::optional<PixelSunShading> pixel_sun;
+    if (sun_term)
+        pixel_sun.emplace(g, options_.pixel_sun_shadows ? march_.get() : nullptr, *sun_term, sun_cos_radius,
+                          visibility::curvature_factor(options_.curvature));
+    const bool pixel_shadows = pixel_sun && pixel_sun->marches();
     // What a ray that misses the terrain sees.
     auto sky_colour = [&](const glm::vec3& ray_dir) {
         // Below the horizon a missing ray leaves the DEM: beyond it lies more land in the haze,
@@ -298,40 +277,18 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                 image[k] = sky_colour(p.dir);
                 continue;
             }
-            float fx = 0, fy = 0;
-            const int c0 = terrain::valid_bilinear_corner(p.x, g.width, fx);
-            const int r0 = terrain::valid_bilinear_corner(p.y, g.height, fy);
-            const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
-            const std::size_t corner[4] = {std::size_t(r0) * g.width + c0, std::size_t(r0) * g.width + c1,
-                                           std::size_t(r1) * g.width + c0, std::size_t(r1) * g.width + c1};
-            const float weight[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
             glm::vec3 c(0.0f);
-            if (sun_term) {
-                // The rest of each corner's radiance, bilinear, plus the sun's diffuse term with
-                // the bilinear weight and this pixel's normal.
-                const TexelSunTerm& st = *sun_term;
-                const glm::vec3 s = st.direction;
-                glm::vec3 w(0.0f);
-                for (int q = 0; q < 4; ++q) {
-                    const std::size_t t = corner[q];
-                    const bool water = st.water && st.water[t];
-                    const glm::vec3 albedo = water ? glm::vec3(0.0f) : glm::vec3(st.albedo_r[t], st.albedo_g[t], st.albedo_b[t]);
-                    const float v = st.visibility[t] == st.visibility[t] ? st.visibility[t] : 0.0f;
-                    const float cos_t = std::max(0.0f, st.nx[t] * s.x + st.ny[t] * s.y + st.nz[t] * s.z);
-                    c += weight[q] * glm::max(radiance[t] - albedo * (v * cos_t) * st.irradiance_over_pi, glm::vec3(0.0f));
-                    w += weight[q] * (pixel_shadows ? albedo : albedo * v);
-                }
-                const float cos_p = std::max(0.0f, glm::dot(p.normal, s));
-                if (pixel_shadows && cos_p > 0) {
-                    const float uniform = uniform_visibility(c0, r0);
-                    float v = uniform >= 0 ? uniform
-                                           : float(march_->sun_visible_fraction(p.x, p.y, glm::dvec3(s), sun_radius, curv));
-                    if (st.blockers && v > 0) v *= float(st.blockers->visible(p.x, p.y, surface(g, p.x, p.y)));
-                    w *= v;
-                }
-                c += w * st.irradiance_over_pi * cos_p;
+            if (pixel_sun) {
+                c = pixel_sun->radiance(radiance, p.x, p.y, p.normal);
             } else {
-                for (int q = 0; q < 4; ++q) c += weight[q] * radiance[corner[q]];
+                float fx = 0, fy = 0;
+                const int c0 = terrain::valid_bilinear_corner(p.x, g.width, fx);
+                const int r0 = terrain::valid_bilinear_corner(p.y, g.height, fy);
+                const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
+                c = radiance[std::size_t(r0) * g.width + c0] * ((1 - fx) * (1 - fy)) +
+                    radiance[std::size_t(r0) * g.width + c1] * (fx * (1 - fy)) +
+                    radiance[std::size_t(r1) * g.width + c0] * ((1 - fx) * fy) +
+                    radiance[std::size_t(r1) * g.width + c1] * (fx * fy);
             }
             if (p.transmittance < 1) {
                 // Air light: the sky just above the horizon in the ray's azimuth.

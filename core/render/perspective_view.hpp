@@ -33,7 +33,7 @@
 
 #include "core/geo/georef.hpp"
 #include "core/light/sky_table.hpp"
-#include "core/render/pixel_sun_blockers.hpp"
+#include "core/render/pixel_sun_shading.hpp"
 #include "core/render/surface_march.hpp"
 #include "core/terrain/height_grid.hpp"
 
@@ -54,24 +54,6 @@ std::string format_camera(const Camera& c);
 // its centre and high enough to see over it, looking at the centre (heading ~45 deg, pitch
 // down to the centre). docs/rendering.md shows it.
 Camera default_camera(const terrain::HeightGrid& grid, const geo::Georef& georef);
-
-// The diffuse sun term of a frame's per-texel radiance, kept apart so that each pixel shades it
-// with its own normal: per texel w E_sun/pi max(0, n.s), w = albedo x the visible share of the
-// sun's disc, n the texel's normal (as FrameRenderer shaded it; water, a mirror over a dark
-// body, has no such term). Pointers to the frame's per-texel arrays, none copied.
-struct TexelSunTerm {
-    const float *albedo_r = nullptr, *albedo_g = nullptr, *albedo_b = nullptr;
-    const std::uint8_t* water = nullptr;  // 1 = water; may be null (none)
-    const float* visibility = nullptr;    // the sun's visible share as the frame had it (NaN: none)
-    const float *nx = nullptr, *ny = nullptr, *nz = nullptr;
-    glm::vec3 direction{0, 0, 1};        // towards the sun (ENU)
-    glm::vec3 irradiance_over_pi{0.0f};  // E_sun / pi
-    // For a view with pixel_sun_shadows: the share the terrain alone leaves (null: blend
-    // `visibility` instead). A pixel whose patch's 4 texels are all fully lit or all fully
-    // shaded takes that without a ray; and the meshes' shadows at the hit (may be null).
-    const float* terrain_visibility = nullptr;
-    const PixelSunBlockers* blockers = nullptr;
-};
 
 struct PerspectiveOptions {
     int width = 960, height = 540;

@@ -110,6 +110,12 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
         }
     }
     if (auto* camera = dynamic_cast<CameraTarget*>(target_.get())) attach_mesh_views(camera->view());
+    // A magnified map shades the sun per pixel (map_pixel_sun.hpp), unless its shading is
+    // stretched (--relief-contrast), which is per texel.
+    const ReliefContrast& rc = options_.relief_contrast;
+    if (options_.view != ViewKind::perspective && !rc.automatic && rc.k == 1.0)
+        target_->shade_sun_per_pixel(*grid_, options_.perspective.pixel_sun_shadows, visibility::curvature_factor(options_.renderer.curvature),
+                                     options_.renderer.threads);
     state_ = compute_shading_state(*grid_, std::move(materials), std::move(normals), options_.renderer);
     view_ = compute_view_shading(*state_, target_->view_directions());
     renderer_ = std::make_unique<FrameRenderer>(*state_, view_);
@@ -213,10 +219,11 @@ void Scene::render(const SunState& sun, LinearImage& image) {
     }
     renderer_->render(*sky_, sun, texel_radiance_);
     stretch(texel_radiance_);
-    if (map) {
+    if (map && !target_->shades_sun_per_pixel()) {
         target_->compose(texel_radiance_, nullptr, *sky_, image);
     } else {
-        // A camera shades the sun's diffuse term with each pixel's normal (perspective_view.hpp).
+        // A camera, or a magnified map, shades the sun's diffuse term with each pixel's normal
+        // (pixel_sun_shading.hpp).
         const MaterialRaster& m = state_->materials();
         const NormalField& nf = state_->normals();
         TexelSunTerm term;
@@ -229,8 +236,8 @@ void Scene::render(const SunState& sun, LinearImage& image) {
         const light::SunDisc disc = sky_->sun();
         const bool sun_up = sun.elevation_deg > -disc.angular_radius_rad * 180.0 / std::numbers::pi;
         term.irradiance_over_pi = sun_up ? disc.irradiance * float(1.0 / std::numbers::pi) : glm::vec3(0.0f);
-        // Per-pixel shadows: the terrain's by rays, the meshes' at each hit. (A scene's state has
-        // no outer shadow, the terrain beyond a window, which pixel rays could not see.)
+        // Per-pixel shadows: the terrain's by rays, the meshes' at each pixel. (A scene's state
+        // has no outer shadow, the terrain beyond a window, which pixel rays could not see.)
         if (!state_->has_outer_sun_shadow()) {
             term.terrain_visibility = renderer_->terrain_sun_visibility().data();
             if (!state_->blockers().empty()) {

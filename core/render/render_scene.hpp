@@ -149,7 +149,7 @@ private:
     std::unique_ptr<FrameRenderer> renderer_;
     std::unique_ptr<light::Sky> sky_;
     std::vector<glm::vec3> texel_radiance_;
-    std::unique_ptr<PixelSunBlockers> pixel_blockers_;  // perspective views with meshes
+    std::unique_ptr<PixelSunBlockers> pixel_blockers_;  // perspective views and magnified maps with meshes
     ReliefContrastApplied last_relief_;
     std::vector<std::unique_ptr<MeshLighting>> mesh_lighting_;
     std::unique_ptr<MeshView> mesh_view_;

@@ -56,8 +56,24 @@ void GridTarget::mark_outside(LinearImage& image) const {
         if (outside_[k]) image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
 }
 
-void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm*, const light::Sky&,
-                         LinearImage& image) {
+void GridTarget::shade_sun_per_pixel(const terrain::HeightGrid& grid, bool pixel_shadows, double curvature,
+                                     int threads) {
+    const int w = width(), h = height();
+    if (same_size_ || (w <= grid_width_ && h <= grid_height_)) return;
+    std::vector<glm::vec2> at(std::size_t(w) * std::size_t(h));
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const double x = texel_x(i), y = texel_y(j);
+            // Transparent pixels (the texel under the centre outside the terrain) keep theirs.
+            const int c = std::clamp(int(x + 0.5), 0, grid_width_ - 1), r = std::clamp(int(y + 0.5), 0, grid_height_ - 1);
+            const bool outside = !outside_.empty() && outside_[std::size_t(r) * std::size_t(grid_width_) + std::size_t(c)];
+            at[std::size_t(j) * w + i] = outside ? glm::vec2(-1.0f) : glm::vec2(float(x), float(y));
+        }
+    pixel_sun_ = std::make_unique<MapPixelSun>(grid, std::move(at), w, h, pixel_shadows, curvature, threads);
+}
+
+void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term,
+                         const light::Sky& sky, LinearImage& image) {
     const int w = width(), h = height();
     image.width = w, image.height = h;
     image.alpha.clear();
@@ -69,9 +85,9 @@ void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const Tex
     image.rgb.resize(std::size_t(w) * std::size_t(h));
     if (!outside_.empty()) image.alpha.assign(image.rgb.size(), 255);
     for (int j = 0; j < h; ++j) {
-        const double y = (j + 0.5) * grid_height_ / h - 0.5;
+        const double y = texel_y(j);
         for (int i = 0; i < w; ++i) {
-            const double x = (i + 0.5) * grid_width_ / w - 0.5;
+            const double x = texel_x(i);
             const std::size_t k = std::size_t(j) * w + i;
             image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, x, y);
             if (outside_.empty()) continue;
@@ -81,6 +97,7 @@ void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const Tex
                 image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
         }
     }
+    if (pixel_sun_ && sun_term) pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb);
 }
 
 ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int threads)
@@ -115,8 +132,14 @@ ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int t
     for (std::size_t n : covered_rows) covered_ += n;
 }
 
-void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm*, const light::Sky&,
-                           LinearImage& image) {
+void ExtentTarget::shade_sun_per_pixel(const terrain::HeightGrid& grid, bool pixel_shadows, double curvature,
+                                       int threads) {
+    if (!pixels_magnify(at_, width(), height())) return;
+    pixel_sun_ = std::make_unique<MapPixelSun>(grid, at_, width(), height(), pixel_shadows, curvature, threads);
+}
+
+void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term,
+                           const light::Sky& sky, LinearImage& image) {
     const int w = width(), h = height();
     image.width = w, image.height = h;
     image.rgb.resize(std::size_t(w) * std::size_t(h));
@@ -134,6 +157,7 @@ void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const T
             if (std::isnan(image.rgb[k].x)) image.rgb[k] = glm::vec3(0.0f), image.alpha[k] = 0;
         }
     });
+    if (pixel_sun_ && sun_term) pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb);
 }
 
 CameraTarget::CameraTarget(const terrain::HeightGrid& grid, const geo::Georef& georef, const Camera& camera,

@@ -7,7 +7,8 @@
 //                  or outside its terrain (NaN heights: terrain::outside_mask) are transparent
 //   CameraTarget   a perspective camera (perspective_view.hpp), with the sky where rays miss
 // Map-like targets look from straight up (one ViewShading serves them all); a camera has a
-// direction per texel.
+// direction per texel. A map whose pixels are smaller than the texels shades the sun per pixel
+// (map_pixel_sun.hpp), as a camera does.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "core/dem/dem.hpp"
 #include "core/geo/georef.hpp"
 #include "core/light/sky.hpp"
+#include "core/render/map_pixel_sun.hpp"
 #include "core/render/perspective_view.hpp"
 #include "core/light/sky_table.hpp"
 #include "core/render/view_shading.hpp"
@@ -46,6 +48,12 @@ public:
     // the radiance's diffuse sun term for targets that shade it per pixel (a camera).
     virtual void compose(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm* sun_term,
                          const light::Sky& sky, LinearImage& image) = 0;
+    // Map targets whose pixels are smaller than the texels: shade the sun per pixel from now on
+    // (map_pixel_sun.hpp; `grid` outlives the target). Nothing for other targets.
+    virtual void shade_sun_per_pixel(const terrain::HeightGrid& /*grid*/, bool /*pixel_shadows*/, double /*curvature*/,
+                                     int /*threads*/) {}
+    // Whether compose() shades the sun per pixel when given the frame's sun term.
+    virtual bool shades_sun_per_pixel() const { return false; }
 };
 
 class GridTarget final : public RenderTarget {
@@ -64,12 +72,19 @@ public:
     // On a picture that is the texel grid itself (rendered straight into it): outside texels
     // transparent and black. Nothing when there are none.
     void mark_outside(LinearImage& image) const;
+    // When the picture is larger than the grid (either axis).
+    void shade_sun_per_pixel(const terrain::HeightGrid& grid, bool pixel_shadows, double curvature, int threads) override;
+    bool shades_sun_per_pixel() const override { return pixel_sun_ != nullptr; }
 
 private:
+    // Pixel (i, j)'s centre in texel-centre coordinates.
+    double texel_x(int i) const { return (i + 0.5) * grid_width_ / georef_.width() - 0.5; }
+    double texel_y(int j) const { return (j + 0.5) * grid_height_ / georef_.height() - 0.5; }
     int grid_width_, grid_height_;
     geo::Georef georef_;
     bool same_size_;
     std::vector<std::uint8_t> outside_;
+    std::unique_ptr<MapPixelSun> pixel_sun_;
 };
 
 class ExtentTarget final : public RenderTarget {
@@ -83,6 +98,9 @@ public:
                  LinearImage& image) override;
     // Pixels that show the DEM.
     std::size_t covered_pixels() const { return covered_; }
+    // When the pixels are smaller than the texels (mean step along rows or columns).
+    void shade_sun_per_pixel(const terrain::HeightGrid& grid, bool pixel_shadows, double curvature, int threads) override;
+    bool shades_sun_per_pixel() const override { return pixel_sun_ != nullptr; }
 
 private:
     int grid_width_, grid_height_;
@@ -91,6 +109,7 @@ private:
     // Per pixel: the DEM position in texel-centre coordinates (x < 0: transparent).
     std::vector<glm::vec2> at_;
     std::size_t covered_ = 0;
+    std::unique_ptr<MapPixelSun> pixel_sun_;
 };
 
 class CameraTarget final : public RenderTarget {

@@ -20,6 +20,11 @@ struct SurfaceSample {
 // At texel-centre coordinates (x = column, y = row), clamped onto the grid.
 SurfaceSample smooth_surface(const HeightGrid& g, double x, double y);
 
+// The slope of the uniform cubic B-spline through the same 16 heights (its z is smoothed, not
+// the heights): at a texel centre the central difference, as smooth_surface's, and between
+// them C1 where Catmull-Rom's slope has creases along the texel lines. For shading only.
+SurfaceSample smooth_slope(const HeightGrid& g, double x, double y);
+
 // An upper bound of the surface over the patch between texel centres (col, row) and
 // (col + 1, row + 1): a Catmull-Rom patch overshoots the highest of its 16 heights by at most
 // 0.28125 of their range. -infinity where the patch has no surface.

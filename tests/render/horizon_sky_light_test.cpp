@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/light/sky.hpp"

@@ -40,7 +40,7 @@ private:
     double e_sun_;
 };
 
-struct Scene {
+struct ReferenceScene {
     int w, h;
     std::vector<float> z;
     terrain::HeightGrid grid;
@@ -48,7 +48,7 @@ struct Scene {
     NormalField normals;
     ViewDirections view;  // map: straight up
 
-    Scene(int w_, int h_, double dx, const std::function<double(double, double)>& f) : w(w_), h(h_) {
+    ReferenceScene(int w_, int h_, double dx, const std::function<double(double, double)>& f) : w(w_), h(h_) {
         z.resize(std::size_t(w) * h);
         for (int r = 0; r < h; ++r)
             for (int c = 0; c < w; ++c) z[std::size_t(r) * w + c] = float(f((c - w / 2) * dx, (h / 2 - r) * dx));
@@ -82,7 +82,7 @@ TEST(ReferenceShading, FlatGroundUnderUniformSkyGivesAlbedoAndPhongNormalisation
     // Radiance 1 from everywhere, no sun: E = pi (Lambert gives the albedo) and the normalised
     // Phong lobe about the zenith integrates to 1 (adds ks). Smooth integrands on [0, pi/2]:
     // Gauss-Legendre is exact to rounding; results are stored as float: 1e-6 relative.
-    Scene s(21, 21, 30, [](double, double) { return 100.0; });
+    ReferenceScene s(21, 21, 30, [](double, double) { return 100.0; });
     const std::size_t t = s.at(10, 10);
     s.mat.ks[t] = 0.1f, s.mat.alpha[t] = 30.0f;
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {t}, no_curvature());
@@ -96,7 +96,7 @@ TEST(ReferenceShading, FlatGroundUnderUniformSkyGivesAlbedoAndPhongNormalisation
 TEST(ReferenceShading, SkyIrradianceMatchesClosedFormForAGradedSky) {
     // L = 1 + 2 z above the horizon, 0 below, flat ground: E = pi + 4 pi / 3. 1e-6 relative
     // (float results).
-    Scene s(21, 21, 30, [](double, double) { return 0.0; });
+    ReferenceScene s(21, 21, 30, [](double, double) { return 0.0; });
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {s.at(10, 10)}, no_curvature());
     const FunctionSky sky([](const glm::dvec3& d) { return d.z > 0 ? 1.0 + 2.0 * d.z : 0.0; }, {0, 0, 1}, 0.0);
     EXPECT_NEAR(ref.render(sky, sun_at(0, 90))[0].sky_irradiance.x, kPi + 4 * kPi / 3, 1e-6 * 7.33);
@@ -108,7 +108,7 @@ TEST(ReferenceShading, TiltedPlaneSeesExactlyItsHemisphere) {
     // quadrature's kink at the plane's own horizon is an end point. The horizon is stored as
     // float (1e-7 rad) where the integrand vanishes: 1e-6 relative.
     const double g = std::tan(radians(25));
-    Scene s(61, 61, 30, [&](double x, double) { return 1000.0 - g * x; });
+    ReferenceScene s(61, 61, 30, [&](double x, double) { return 1000.0 - g * x; });
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {s.at(30, 30), s.at(20, 41)}, no_curvature());
     const FunctionSky sky([](const glm::dvec3&) { return 1.0; }, {0, 0, 1}, 0.0);
     for (const ReferenceSample& out : ref.render(sky, sun_at(0, 90))) {
@@ -123,7 +123,7 @@ TEST(ReferenceShading, PhongLobeCutByTheTiltedPlaneMatchesBruteForce) {
     // everywhere the sky term is ks * integral over the plane's hemisphere of the lobe; brute
     // force here on a 4000 x 2000 (phi, z) midpoint grid, good to ~1e-5; 1e-4 relative.
     const double g = std::tan(radians(40));
-    Scene s(61, 61, 30, [&](double, double y) { return 1000.0 - g * y; });  // faces south
+    ReferenceScene s(61, 61, 30, [&](double, double y) { return 1000.0 - g * y; });  // faces south
     const std::size_t t = s.at(30, 30);
     s.mat.ks[t] = 1.0f, s.mat.alpha[t] = 2.0f;
     s.mat.albedo_r[t] = s.mat.albedo_g[t] = s.mat.albedo_b[t] = 0.0f;
@@ -151,7 +151,7 @@ TEST(ReferenceShading, PitBottomIrradianceMatchesClosedFormHorizon) {
     // dphi, here by 200000 azimuths. The 720-wedge midpoint rule errs at the 4 kinks of h by
     // O(dphi^2): 1e-4 relative.
     const double k = 0.5;
-    Scene s(81, 81, 30, [&](double x, double y) { return k * (std::abs(x) + std::abs(y)); });
+    ReferenceScene s(81, 81, 30, [&](double x, double y) { return k * (std::abs(x) + std::abs(y)); });
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {s.at(40, 40)}, no_curvature());
     const FunctionSky sky([](const glm::dvec3&) { return 1.0; }, {0, 0, 1}, 0.0);
     double expected = 0;
@@ -169,7 +169,7 @@ TEST(ReferenceShading, WallShadowAndSunTerm) {
     // degrees: texels east of it closer than H / tan(e) = 173 m get no sun, beyond get all of
     // it. Radiance = albedo (E_sky + f E_sun sin(e)) / pi with E_sky from the test's sky.
     const double H = 100.0;
-    Scene s(80, 11, 10, [](double, double) { return 0.0; });
+    ReferenceScene s(80, 11, 10, [](double, double) { return 0.0; });
     for (int r = 0; r < 11; ++r) s.z[s.at(20, r)] = float(H);
     std::vector<std::size_t> texels;
     for (int c = 21; c < 60; ++c) texels.push_back(s.at(c, 5));
@@ -193,7 +193,7 @@ TEST(ReferenceShading, WallShadowAndSunTerm) {
 TEST(ReferenceShading, WaterIsAFresnelMirrorOverADarkBody) {
     // Flat water seen from straight above under radiance 1 and a sun at 40 degrees:
     // F(1) L(up) + (1 - F) 0.02 (E_sky + E_sun sin e) / pi, F(1) = ((n - 1)/(n + 1))^2. 1e-6.
-    Scene s(21, 21, 30, [](double, double) { return 0.0; });
+    ReferenceScene s(21, 21, 30, [](double, double) { return 0.0; });
     const std::size_t t = s.at(10, 10);
     s.mat.water[t] = 1;
     const ReferenceShader ref(s.grid, s.mat, s.normals, s.view, {t}, no_curvature());
@@ -210,7 +210,7 @@ TEST(ReferenceShading, SunVisibilityOfEveryTexelMatchesRaymarchedHorizons) {
     // equal the one from the full raymarch horizon in the same azimuth (D = 8 holds azimuth
     // 45 exactly). The horizon set stores angles as float (3e-8 rad at 0.5 rad) and the
     // fraction changes by up to 2 / (pi r) = 137 per radian on the disc: 1e-5.
-    Scene s(70, 60, 30, [](double x, double y) {
+    ReferenceScene s(70, 60, 30, [](double x, double y) {
         return 300.0 * std::sin(x / 900.0) * std::cos(y / 1300.0) + 120.0 * std::sin((x + 2 * y) / 400.0);
     });
     visibility::HorizonOptions o;
@@ -235,7 +235,7 @@ TEST(ReferenceShading, SunVisibilityOfEveryTexelMatchesRaymarchedHorizons) {
 }
 
 TEST(ReferenceShading, RejectsMismatchedInputs) {
-    Scene s(10, 10, 30, [](double, double) { return 0.0; });
+    ReferenceScene s(10, 10, 30, [](double, double) { return 0.0; });
     EXPECT_THROW(ReferenceShader(s.grid, s.mat, s.normals, s.view, {1000}), InputError);
     MaterialRaster small;
     EXPECT_THROW(ReferenceShader(s.grid, small, s.normals, s.view, {0}), InputError);

@@ -62,6 +62,44 @@ TEST(SmoothSurface, HasNoCreaseAlongTexelLines) {
         }
 }
 
+TEST(SmoothSlope, AtTexelCentresItIsTheSurfacesSlopeAndAPlaneIsExact) {
+    const RoughGrid g;
+    for (int r = 0; r < g.h; ++r)
+        for (int c = 0; c < g.w; ++c) {
+            const SurfaceSample a = smooth_slope(g.grid, c, r), b = smooth_surface(g.grid, c, r);
+            EXPECT_NEAR(a.dz_dcol, b.dz_dcol, 1e-3f) << c << "," << r;
+            EXPECT_NEAR(a.dz_drow, b.dz_drow, 1e-3f) << c << "," << r;
+        }
+    std::vector<float> plane(std::size_t(g.w * g.h));
+    for (int r = 0; r < g.h; ++r)
+        for (int c = 0; c < g.w; ++c) plane[std::size_t(r * g.w + c)] = 100 + 3.0f * c - 2.0f * r;
+    const HeightGrid p = HeightGrid::uniform(g.w, g.h, plane, 30.0, 20.0);
+    for (double x : {0.0, 2.25, 7.5, 22.9})
+        for (double y : {0.0, 4.6, 18.2}) {
+            EXPECT_NEAR(smooth_slope(p, x, y).dz_dcol, 3.0f, 1e-3f);
+            EXPECT_NEAR(smooth_slope(p, x, y).dz_drow, -2.0f, 1e-3f);
+        }
+}
+
+TEST(SmoothSlope, ItsSlopeBendsWithoutACreaseWhereCatmullRomsDoes) {
+    // The shading follows the slope: a kink in the slope along a texel line is a line in the
+    // picture. Catmull-Rom's slope is continuous there, its rate of change is not; the
+    // B-spline's derivative along the axis changes smoothly.
+    const RoughGrid g;
+    const double e = 1e-3;
+    double kink_slope = 0, kink_surface = 0;
+    for (int c = 2; c < g.w - 2; ++c)
+        for (double y : {3.3, 7.8, 12.5}) {
+            auto kink = [&](auto f) {
+                const double l = (f(c).dz_dcol - f(c - e).dz_dcol) / e, r = (f(c + e).dz_dcol - f(c).dz_dcol) / e;
+                return std::abs(r - l);
+            };
+            kink_slope = std::max(kink_slope, kink([&](double x) { return smooth_slope(g.grid, x, y); }));
+            kink_surface = std::max(kink_surface, kink([&](double x) { return smooth_surface(g.grid, x, y); }));
+        }
+    EXPECT_LT(kink_slope, 0.05 * kink_surface) << kink_slope << " " << kink_surface;
+}
+
 TEST(SmoothSurface, PatchBoundHoldsOverThePatch) {
     // The bound the marches skip cells by: never below the surface, sampled densely, on a grid
     // with cliffs (where Catmull-Rom overshoots most).

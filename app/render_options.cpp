@@ -83,8 +83,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->capture_default_str()
         ->check(CLI::IsMember({"pixel", "texel"}));
     cmd.add_option("--edge-samples", a.edge_samples,
-                   "Perspective: N x N rays across each pixel of the terrain's silhouette, the share that hits "
-                   "weighing the terrain against the sky (1 = one ray: a stair-stepped skyline)")
+                   "Perspective: N x N rays across each pixel of the terrain's silhouette against the sky or "
+                   "against far terrain, each surface weighed by its share (1 = one ray: stair-stepped edges)")
         ->capture_default_str()
         ->check(within(1, 16));
     cmd.add_option("--exp-method", a.exp_method, "SH exponentiation (" + sh::exp_method_choices() + ")")

@@ -19,6 +19,9 @@ namespace {
 
 // sin(3 deg): where the air light and the land beyond the DEM are read from the sky.
 constexpr float kHorizonLift = 0.0523f;
+// Neighbouring pixels whose terrain is this many times farther than the other's stand on
+// either side of an edge of near terrain against far terrain (antialias_silhouettes).
+constexpr float kDepthRatio = 1.25f;
 
 double parse_number(std::string_view s, const std::string& what) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
@@ -175,43 +178,87 @@ PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
 void PerspectiveView::antialias_silhouettes() {
     const int n = options_.edge_samples, w = options_.width, h = options_.height;
     if (n <= 1 || below_terrain_) return;
-    auto hit = [&](int i, int j) { return pixels_[std::size_t(j) * w + i].x >= 0; };
+    auto at = [&](int i, int j) -> const Pixel& { return pixels_[std::size_t(j) * w + i]; };
+    // Two neighbours on either side of an edge: one hits and one misses, or both hit at
+    // distances kDepthRatio or more apart (near terrain in front of far terrain).
+    auto apart = [&](const Pixel& a, const Pixel& b) {
+        if ((a.x >= 0) != (b.x >= 0)) return true;
+        if (a.x < 0) return false;
+        const float lo = std::min(a.distance, b.distance), hi = std::max(a.distance, b.distance);
+        return hi > kDepthRatio * lo;
+    };
     std::vector<std::uint32_t> edge;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i) {
-            const bool c = hit(i, j);
-            if ((i > 0 && hit(i - 1, j) != c) || (i + 1 < w && hit(i + 1, j) != c) || (j > 0 && hit(i, j - 1) != c) ||
-                (j + 1 < h && hit(i, j + 1) != c))
+            const Pixel& c = at(i, j);
+            if ((i > 0 && apart(at(i - 1, j), c)) || (i + 1 < w && apart(at(i + 1, j), c)) ||
+                (j > 0 && apart(at(i, j - 1), c)) || (j + 1 < h && apart(at(i, j + 1), c)))
                 edge.push_back(std::uint32_t(j) * std::uint32_t(w) + std::uint32_t(i));
         }
-    std::vector<Pixel> done(edge.size());
+    struct Done {
+        Pixel front, behind;
+        bool split = false;
+    };
+    std::vector<Done> done(edge.size());
     parallel_rows(int(edge.size()), options_.threads, 400LL * n * n, [&](int e0, int e1) {
+        std::vector<Pixel> hits;
+        std::vector<double> offset;
         for (int e = e0; e < e1; ++e) {
             const int i = int(edge[std::size_t(e)] % std::uint32_t(w)), j = int(edge[std::size_t(e)] / std::uint32_t(w));
-            Pixel p = pixels_[edge[std::size_t(e)]];
-            int hits = 0;
-            double nearest = std::numeric_limits<double>::infinity();
-            Pixel first;
+            const Pixel centre = pixels_[edge[std::size_t(e)]];
+            hits.clear(), offset.clear();
+            float nearest_d = std::numeric_limits<float>::infinity(), farthest_d = 0;
             for (int b = 0; b < n; ++b)
                 for (int a = 0; a < n; ++a) {
                     const double du = (a + 0.5) / n, dv = (b + 0.5) / n;
                     const Pixel q = trace(i + du, j + dv);
                     if (q.x < 0) continue;
-                    ++hits;
-                    const double off = (du - 0.5) * (du - 0.5) + (dv - 0.5) * (dv - 0.5);
-                    if (off < nearest) nearest = off, first = q;
+                    hits.push_back(q);
+                    offset.push_back((du - 0.5) * (du - 0.5) + (dv - 0.5) * (dv - 0.5));
+                    nearest_d = std::min(nearest_d, q.distance), farthest_d = std::max(farthest_d, q.distance);
                 }
-            // A centre that missed takes the hit nearest it; the pixel's direction stays the centre's.
-            if (p.x < 0 && hits > 0) {
-                const glm::vec3 dir = p.dir;
-                p = first;
-                p.dir = dir;
+            // The rays' hits in one group, or split into near and far at the geometric mean of
+            // their distances; each group is shaded at its hit nearest the pixel's centre.
+            const bool split = farthest_d > kDepthRatio * nearest_d;
+            const float cut = std::sqrt(nearest_d * farthest_d);
+            int front_hits = 0, behind_hits = 0;
+            double front_off = std::numeric_limits<double>::infinity(), behind_off = front_off;
+            Pixel front, behind;
+            for (std::size_t k = 0; k < hits.size(); ++k) {
+                if (!split || hits[k].distance < cut) {
+                    ++front_hits;
+                    if (offset[k] < front_off) front_off = offset[k], front = hits[k];
+                } else {
+                    ++behind_hits;
+                    if (offset[k] < behind_off) behind_off = offset[k], behind = hits[k];
+                }
             }
-            p.coverage = float(hits) / float(n * n);
-            done[std::size_t(e)] = p;
+            Done& d = done[std::size_t(e)];
+            d.front = centre;
+            // A centre that missed, or that hit the far group, takes the front's hit nearest it;
+            // the pixel's direction stays the centre's.
+            if ((centre.x < 0 || (split && centre.distance >= cut)) && front_hits > 0) {
+                const glm::vec3 dir = centre.dir;
+                d.front = front;
+                d.front.dir = dir;
+            }
+            d.front.coverage = float(front_hits) / float(n * n);
+            d.split = split && behind_hits > 0;
+            if (d.split) {
+                d.behind = behind;
+                d.behind.coverage = float(behind_hits) / float(n * n);
+            }
         }
     });
-    for (std::size_t e = 0; e < edge.size(); ++e) pixels_[edge[e]] = done[e];
+    for (std::size_t e = 0; e < edge.size(); ++e) {
+        Pixel& p = pixels_[edge[e]];
+        p = done[e].front;
+        p.behind = -1;
+        if (done[e].split) {
+            p.behind = std::int32_t(behind_.size());
+            behind_.push_back(done[e].behind);
+        }
+    }
 }
 
 std::vector<glm::vec3> PerspectiveView::view_directions() const {
@@ -270,6 +317,31 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
         if (glm::dot(ray_dir, sun_dir) >= float(sun_cos_radius)) c += sun_radiance;
         return c;
     };
+    // A surface's colour at a ray's hit, through the haze.
+    auto surface_colour = [&](const Pixel& q) {
+        glm::vec3 c(0.0f);
+        if (pixel_sun) {
+            c = pixel_sun->radiance(radiance, q.x, q.y, q.normal);
+        } else {
+            float fx = 0, fy = 0;
+            const int c0 = terrain::valid_bilinear_corner(q.x, g.width, fx);
+            const int r0 = terrain::valid_bilinear_corner(q.y, g.height, fy);
+            const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
+            c = radiance[std::size_t(r0) * g.width + c0] * ((1 - fx) * (1 - fy)) +
+                radiance[std::size_t(r0) * g.width + c1] * (fx * (1 - fy)) +
+                radiance[std::size_t(r1) * g.width + c0] * ((1 - fx) * fy) +
+                radiance[std::size_t(r1) * g.width + c1] * (fx * fy);
+        }
+        if (q.transmittance < 1) {
+            // Air light: the sky just above the horizon in the ray's azimuth.
+            const float hl = std::hypot(q.dir.x, q.dir.y);
+            const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
+            const glm::vec3 horizon =
+                hl > 0 ? glm::vec3(q.dir.x / hl * c_lift, q.dir.y / hl * c_lift, kHorizonLift) : glm::vec3(0, 0, 1);
+            c = c * q.transmittance + sky.lookup(horizon) * (1 - q.transmittance);
+        }
+        return c;
+    };
     parallel_rows(options_.height, options_.threads, options_.width * (pixel_shadows ? 400LL : 30LL), [&](int j0, int j1) {
         for (std::size_t k = std::size_t(j0) * options_.width; k < std::size_t(j1) * options_.width; ++k) {
             const Pixel& p = pixels_[k];
@@ -277,29 +349,19 @@ void PerspectiveView::compose(const glm::vec3* radiance, const TexelSunTerm* sun
                 image[k] = sky_colour(p.dir);
                 continue;
             }
-            glm::vec3 c(0.0f);
-            if (pixel_sun) {
-                c = pixel_sun->radiance(radiance, p.x, p.y, p.normal);
-            } else {
-                float fx = 0, fy = 0;
-                const int c0 = terrain::valid_bilinear_corner(p.x, g.width, fx);
-                const int r0 = terrain::valid_bilinear_corner(p.y, g.height, fy);
-                const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
-                c = radiance[std::size_t(r0) * g.width + c0] * ((1 - fx) * (1 - fy)) +
-                    radiance[std::size_t(r0) * g.width + c1] * (fx * (1 - fy)) +
-                    radiance[std::size_t(r1) * g.width + c0] * ((1 - fx) * fy) +
-                    radiance[std::size_t(r1) * g.width + c1] * (fx * fy);
+            glm::vec3 c = surface_colour(p);
+            // A silhouette pixel: the terrain over the share of its rays that hit it, the far
+            // terrain behind near terrain over its own share, the sky over the rest.
+            if (p.coverage < 1) {
+                if (p.behind < 0) {
+                    c = c * p.coverage + sky_colour(p.dir) * (1 - p.coverage);
+                } else {
+                    const Pixel& far = behind_[std::size_t(p.behind)];
+                    const float sky_share = std::max(0.0f, 1 - p.coverage - far.coverage);
+                    c = c * p.coverage + surface_colour(far) * far.coverage;
+                    if (sky_share > 0) c += sky_colour(p.dir) * sky_share;
+                }
             }
-            if (p.transmittance < 1) {
-                // Air light: the sky just above the horizon in the ray's azimuth.
-                const float hl = std::hypot(p.dir.x, p.dir.y);
-                const float c_lift = std::sqrt(1 - kHorizonLift * kHorizonLift);
-                const glm::vec3 horizon =
-                    hl > 0 ? glm::vec3(p.dir.x / hl * c_lift, p.dir.y / hl * c_lift, kHorizonLift) : glm::vec3(0, 0, 1);
-                c = c * p.transmittance + sky.lookup(horizon) * (1 - p.transmittance);
-            }
-            // A silhouette pixel: the terrain over the share of its rays that hit it.
-            if (p.coverage < 1) c = c * p.coverage + sky_colour(p.dir) * (1 - p.coverage);
             image[k] = c;
         }
     });

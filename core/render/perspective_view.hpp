@@ -16,9 +16,11 @@
 // the visible share of the disc, so a shadow's edge falls where it does at the pixel, not where
 // a bilinear blend of the texels' puts it; the meshes' shadows are found at every hit.
 // Silhouettes (PerspectiveOptions::edge_samples): a pixel whose ray and a neighbour's disagree
-// on hitting the terrain casts a grid of rays across its area; the share that hits weighs the
-// terrain's colour against the sky's. One ray per pixel drew a near-level skyline against a
-// bright sky as a staircase (runs of 40-80 pixels, one-pixel steps).
+// on hitting the terrain, or hit it at distances far apart, casts a grid of rays across its
+// area; the share that hits weighs the terrain's colour against the sky's, and near terrain's
+// share against the far terrain's behind it. One ray per pixel drew a near-level skyline
+// against a bright sky as a staircase (runs of 40-80 pixels, one-pixel steps), and a ridge's
+// outline against the slopes behind it likewise.
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -106,7 +108,13 @@ public:
     // Distance in metres along pixel k's ray to the terrain (infinity where it misses).
     float terrain_distance(std::size_t k) const { return pixels_[k].distance; }
     // The share of pixel k the terrain covers: 1 or 0, fractional on its silhouette.
-    float terrain_coverage(std::size_t k) const { return pixels_[k].x >= 0 ? pixels_[k].coverage : 0.0f; }
+    float terrain_coverage(std::size_t k) const {
+        const Pixel& p = pixels_[k];
+        return p.x < 0 ? 0.0f : p.behind < 0 ? p.coverage : p.coverage + behind_[std::size_t(p.behind)].coverage;
+    }
+    // The share of pixel k its nearest surface covers: below 1 on a silhouette against the sky
+    // and where near terrain stands in front of far terrain.
+    float front_coverage(std::size_t k) const { return pixels_[k].x >= 0 ? pixels_[k].coverage : 0.0f; }
     glm::vec3 ray_direction(std::size_t k) const { return pixels_[k].dir; }
     // The smooth surface's unit normal (ENU) where pixel k's ray hits ((0, 0, 1) on a miss).
     glm::vec3 surface_normal(std::size_t k) const { return pixels_[k].normal; }
@@ -120,11 +128,13 @@ private:
         float distance = std::numeric_limits<float>::infinity();  // to the hit along the ray, metres
         glm::vec3 dir{0, 0, 1};      // ray direction (ENU)
         glm::vec3 normal{0, 0, 1};   // the smooth surface's at the hit (ENU)
-        float coverage = 1;          // share of the pixel's rays that hit (silhouettes; else 1 or ignored)
+        float coverage = 1;          // share of the pixel's rays that hit it (silhouettes; else 1 or ignored)
+        std::int32_t behind = -1;    // near-far edges: the far terrain's hit in behind_ (its own coverage)
     };
     // The camera's ray through continuous pixel coordinates (u, v) (pixel i spans [i, i + 1)).
     Pixel trace(double u, double v) const;
-    // Silhouette pixels: their coverage, and a hit for a pixel whose centre missed.
+    // Silhouette pixels, against the sky or far terrain: their coverage, a hit for a pixel
+    // whose centre missed, and the far terrain's hit where near terrain stands in front of it.
     void antialias_silhouettes();
     const terrain::HeightGrid& grid_;
     PerspectiveOptions options_;
@@ -133,6 +143,7 @@ private:
     bool below_terrain_ = false;
     double ground_m_ = 0;
     std::vector<Pixel> pixels_;
+    std::vector<Pixel> behind_;  // the far surfaces of near-far edge pixels
     Frame frame_;
     std::unique_ptr<SurfaceMarch> march_;
 };

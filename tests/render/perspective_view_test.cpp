@@ -214,6 +214,54 @@ TEST(PerspectiveView, ASilhouetteAgainstTheSkyIsAStraightLineNotAStaircase) {
     EXPECT_LT(grid, 0.08);
 }
 
+TEST(PerspectiveView, NearTerrainAgainstFarTerrainIsAStraightLineNotAStaircase) {
+    // A plateau 100 m high ends along an east-west line (row 150) above a plain that runs on
+    // 1.5 km north. Seen from 50 m above the plateau, 300 m south of its edge, the edge is a
+    // slanted straight line with the plain, three times farther, behind it. Per column, the
+    // plateau's share of the pixels is linear in the column when the edge pixels are
+    // antialiased, a staircase with one ray each.
+    const int w = 64, h = 200;
+    std::vector<float> z(std::size_t(w * h), 0.0f);
+    for (int r = 150; r < h; ++r)
+        for (int c = 0; c < w; ++c) z[std::size_t(r * w + c)] = 100.0f;
+    const terrain::HeightGrid grid = terrain::HeightGrid::uniform(w, h, z, 10.0, 10.0);
+    const geo::Georef georef(w, h, {500000.0, 10.0, 0.0, 5000000.0, 0.0, -10.0}, geo::Crs::from_epsg(32631), true);
+    const glm::dvec2 ll = georef.pixel_to_lonlat(32.0, 180.0);
+    Camera c;
+    c.lon_deg = ll.x, c.lat_deg = ll.y, c.height_m = 150, c.heading_deg = 20, c.pitch_deg = -9.5, c.fov_deg = 40;
+    PerspectiveOptions o;
+    o.width = 96, o.height = 24;
+    o.curvature = false;
+    o.haze_distance_m = 0;
+    auto off_the_line = [&](int samples) {
+        o.edge_samples = samples;
+        const PerspectiveView v(grid, georef, c, o);
+        std::vector<double> col(std::size_t(o.width), 0.0);
+        std::size_t plain = 0;
+        for (int j = 0; j < o.height; ++j)
+            for (int i = 0; i < o.width; ++i) {
+                const std::size_t k = std::size_t(j) * o.width + i;
+                // The plateau is the front surface within 500 m; the plain lies beyond 800 m.
+                if (v.terrain_distance(k) < 500) col[std::size_t(i)] += v.front_coverage(k);
+                else plain += v.terrain_distance(k) < 2000;
+            }
+        EXPECT_GT(plain, std::size_t(o.width * 2));  // the plain shows behind the edge
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        const int n = o.width;
+        for (int i = 0; i < n; ++i) sx += i, sy += col[std::size_t(i)], sxx += double(i) * i, sxy += i * col[std::size_t(i)];
+        const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx), icpt = (sy - slope * sx) / n;
+        EXPECT_GT(std::abs(slope), 0.02);  // slanted: it crosses rows
+        double se = 0;
+        for (int i = 0; i < n; ++i) se += std::pow(col[std::size_t(i)] - (icpt + slope * i), 2);
+        return std::sqrt(se / n);
+    };
+    const double one = off_the_line(1), grid_rays = off_the_line(4);
+    std::printf("near edge against far terrain off a straight line: %.3f px with one ray, %.3f with 4 x 4\n", one,
+                grid_rays);
+    EXPECT_GT(one, 0.2);
+    EXPECT_LT(grid_rays, 0.08);
+}
+
 TEST(PerspectiveView, CameraParsing) {
     const Camera c = parse_camera("5.7,45.2,3000,90,-10,50");
     EXPECT_DOUBLE_EQ(c.lon_deg, 5.7);

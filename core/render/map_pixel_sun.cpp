@@ -53,9 +53,12 @@ MapPixelSun::MapPixelSun(const terrain::HeightGrid& grid, std::vector<glm::vec2>
 }
 
 void MapPixelSun::shade(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm& term, double sun_cos_radius,
-                        std::vector<glm::vec3>& rgb) const {
-    const PixelSunShading sun(grid_, march_.get(), term, sun_cos_radius, curvature_);
+                        std::vector<glm::vec3>& rgb, std::vector<std::uint8_t>& shaded) const {
+    PixelSunShading sun(grid_, march_.get(), term, sun_cos_radius, curvature_);
+    sun.split_texels(texel_radiance.data(), threads_);
     const terrain::HeightGrid& g = grid_;
+    rgb.resize(at_.size());
+    shaded.assign(at_.size(), 0);
     parallel_rows(height_, threads_, width_ * (sun.marches() ? 200LL : 30LL), [&](int j0, int j1) {
         for (std::size_t k = std::size_t(j0) * width_; k < std::size_t(j1) * width_; ++k) {
             const glm::vec2 p = at_[k];
@@ -69,6 +72,7 @@ void MapPixelSun::shade(const std::vector<glm::vec3>& texel_radiance, const Texe
                 texel_radiance[std::size_t(r1) * g.width + c0].x + texel_radiance[std::size_t(r1) * g.width + c1].x;
             if (std::isnan(sum)) continue;
             rgb[k] = sun.radiance(texel_radiance.data(), p.x, p.y, normal_[k]);
+            shaded[k] = 1;
         }
     });
 }

@@ -5,6 +5,7 @@
 // stepped along the texel lines. Each pixel instead takes the smooth surface's normal at its
 // own position (made once per view) and, with per-pixel shadows, its own share of the sun's disc.
 // What the pixel keeps from the blend: the sky's light, the bounce, the albedo, water.
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -27,10 +28,11 @@ public:
     MapPixelSun(const terrain::HeightGrid& grid, std::vector<glm::vec2> at, int width, int height, bool pixel_shadows,
                 double curvature, int threads);
 
-    // Replaces `rgb` (the bilinear picture, one per pixel) where a pixel's four texels all have
-    // radiance (void and outside corners keep the blend).
+    // Shades into `rgb` (one per pixel) each pixel on the DEM whose four texels all have
+    // radiance, and marks it in `shaded` (1, others 0): void and outside corners are the
+    // caller's to blend.
     void shade(const std::vector<glm::vec3>& texel_radiance, const TexelSunTerm& term, double sun_cos_radius,
-               std::vector<glm::vec3>& rgb) const;
+               std::vector<glm::vec3>& rgb, std::vector<std::uint8_t>& shaded) const;
 
 private:
     const terrain::HeightGrid& grid_;

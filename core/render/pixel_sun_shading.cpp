@@ -6,6 +6,7 @@
 
 #include "core/terrain/smooth_surface.hpp"
 #include "core/terrain/valid_bilinear.hpp"
+#include "core/util/parallel_for.hpp"
 
 namespace ts::render {
 
@@ -47,6 +48,26 @@ float PixelSunShading::uniform_visibility(int c0, int r0) const {
     return lit == dark ? -1.0f : lit ? 1.0f : 0.0f;
 }
 
+void PixelSunShading::split(const glm::vec3* texel_radiance, std::size_t t, glm::vec3& rest, glm::vec3& weight) const {
+    const TexelSunTerm& st = term_;
+    const glm::vec3 s = st.direction;
+    const bool water = st.water && st.water[t];
+    const glm::vec3 albedo = water ? glm::vec3(0.0f) : glm::vec3(st.albedo_r[t], st.albedo_g[t], st.albedo_b[t]);
+    const float v = st.visibility[t] == st.visibility[t] ? st.visibility[t] : 0.0f;
+    const float cos_t = std::max(0.0f, st.nx[t] * s.x + st.ny[t] * s.y + st.nz[t] * s.z);
+    rest = glm::max(texel_radiance[t] - albedo * (v * cos_t) * st.irradiance_over_pi, glm::vec3(0.0f));
+    weight = march_ ? albedo : albedo * v;
+}
+
+void PixelSunShading::split_texels(const glm::vec3* texel_radiance, int threads) {
+    const std::size_t n = std::size_t(grid_.width) * std::size_t(grid_.height);
+    rest_.resize(n), weight_.resize(n);
+    parallel_rows(grid_.height, threads, grid_.width * 16LL, [&](int r0, int r1) {
+        for (std::size_t t = std::size_t(r0) * grid_.width; t < std::size_t(r1) * grid_.width; ++t)
+            split(texel_radiance, t, rest_[t], weight_[t]);
+    });
+}
+
 glm::vec3 PixelSunShading::radiance(const glm::vec3* texel_radiance, float x, float y, const glm::vec3& n) const {
     const terrain::HeightGrid& g = grid_;
     float fx = 0, fy = 0;
@@ -61,14 +82,14 @@ glm::vec3 PixelSunShading::radiance(const glm::vec3* texel_radiance, float x, fl
     const TexelSunTerm& st = term_;
     const glm::vec3 s = st.direction;
     glm::vec3 c(0.0f), w(0.0f);
-    for (int q = 0; q < 4; ++q) {
-        const std::size_t t = corner[q];
-        const bool water = st.water && st.water[t];
-        const glm::vec3 albedo = water ? glm::vec3(0.0f) : glm::vec3(st.albedo_r[t], st.albedo_g[t], st.albedo_b[t]);
-        const float v = st.visibility[t] == st.visibility[t] ? st.visibility[t] : 0.0f;
-        const float cos_t = std::max(0.0f, st.nx[t] * s.x + st.ny[t] * s.y + st.nz[t] * s.z);
-        c += weight[q] * glm::max(texel_radiance[t] - albedo * (v * cos_t) * st.irradiance_over_pi, glm::vec3(0.0f));
-        w += weight[q] * (march_ ? albedo : albedo * v);
+    if (!rest_.empty()) {
+        for (int q = 0; q < 4; ++q) c += weight[q] * rest_[corner[q]], w += weight[q] * weight_[corner[q]];
+    } else {
+        for (int q = 0; q < 4; ++q) {
+            glm::vec3 rest, sun_weight;
+            split(texel_radiance, corner[q], rest, sun_weight);
+            c += weight[q] * rest, w += weight[q] * sun_weight;
+        }
     }
     const float cos_p = std::max(0.0f, glm::dot(n, s));
     if (march_ && cos_p > 0) {

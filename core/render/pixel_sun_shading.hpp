@@ -8,6 +8,7 @@
 // towards the sun over the same surface (surface_march.hpp).
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "core/render/pixel_sun_blockers.hpp"
 #include "core/render/surface_march.hpp"
@@ -49,11 +50,20 @@ public:
     // Whether pixels march their own sun rays this frame (asked for, and the sun gives light).
     bool marches() const { return march_ != nullptr; }
 
+    // Splits every texel of `texel_radiance` (the grid's) into what radiance() blends, once:
+    // for a picture with more pixels than texels (a magnified map), where per pixel each of
+    // its four texels would be split again. radiance() then reads the split, the same numbers.
+    void split_texels(const glm::vec3* texel_radiance, int threads);
+
     // The radiance at texel-centre coordinates (x, y), inside the grid, where the surface's unit
     // normal is n.
     glm::vec3 radiance(const glm::vec3* texel_radiance, float x, float y, const glm::vec3& n) const;
 
 private:
+    // Texel t's radiance without its diffuse sun term (`rest`), and what the sun's term is
+    // weighed by at a pixel (`weight`: the albedo, times the texel's visible share of the disc
+    // unless pixels march their own).
+    void split(const glm::vec3* texel_radiance, std::size_t t, glm::vec3& rest, glm::vec3& weight) const;
     // 1 or 0 where the terrain leaves the sun wholly visible or wholly hidden at the 4 corners
     // of patch (c0, r0); -1 where a shadow's edge or penumbra crosses it.
     float uniform_visibility(int c0, int r0) const;
@@ -62,6 +72,7 @@ private:
     const SurfaceMarch* march_;
     const TexelSunTerm& term_;
     double sun_radius_, curvature_;
+    std::vector<glm::vec3> rest_, weight_;  // split_texels(), per texel (empty: split per pixel)
 };
 
 }  // namespace ts::render

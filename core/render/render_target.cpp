@@ -84,12 +84,15 @@ void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const Tex
     }
     image.rgb.resize(std::size_t(w) * std::size_t(h));
     if (!outside_.empty()) image.alpha.assign(image.rgb.size(), 255);
+    const bool per_pixel = pixel_sun_ && sun_term;
+    if (per_pixel)
+        pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb, shaded_);
     for (int j = 0; j < h; ++j) {
         const double y = texel_y(j);
         for (int i = 0; i < w; ++i) {
             const double x = texel_x(i);
             const std::size_t k = std::size_t(j) * w + i;
-            image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, x, y);
+            if (!per_pixel || !shaded_[k]) image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, x, y);
             if (outside_.empty()) continue;
             // The texel under the pixel's centre decides, as ExtentTarget's coverage does.
             const int c = std::clamp(int(x + 0.5), 0, grid_width_ - 1), r = std::clamp(int(y + 0.5), 0, grid_height_ - 1);
@@ -97,7 +100,6 @@ void GridTarget::compose(const std::vector<glm::vec3>& texel_radiance, const Tex
                 image.alpha[k] = 0, image.rgb[k] = glm::vec3(0.0f);
         }
     }
-    if (pixel_sun_ && sun_term) pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb);
 }
 
 ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int threads)
@@ -144,6 +146,9 @@ void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const T
     image.width = w, image.height = h;
     image.rgb.resize(std::size_t(w) * std::size_t(h));
     image.alpha.resize(image.rgb.size());
+    const bool per_pixel = pixel_sun_ && sun_term;
+    if (per_pixel)
+        pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb, shaded_);
     parallel_rows(h, threads_, w * 16LL, [&](int r0, int r1) {
         for (std::size_t k = std::size_t(r0) * w; k < std::size_t(r1) * w; ++k) {
             const glm::vec2 p = at_[k];
@@ -152,12 +157,11 @@ void ExtentTarget::compose(const std::vector<glm::vec3>& texel_radiance, const T
                 image.alpha[k] = 0;
                 continue;
             }
-            image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, p.x, p.y);
+            if (!per_pixel || !shaded_[k]) image.rgb[k] = sample(texel_radiance, grid_width_, grid_height_, p.x, p.y);
             image.alpha[k] = 255;
             if (std::isnan(image.rgb[k].x)) image.rgb[k] = glm::vec3(0.0f), image.alpha[k] = 0;
         }
     });
-    if (pixel_sun_ && sun_term) pixel_sun_->shade(texel_radiance, *sun_term, std::cos(sky.sun().angular_radius_rad), image.rgb);
 }
 
 CameraTarget::CameraTarget(const terrain::HeightGrid& grid, const geo::Georef& georef, const Camera& camera,

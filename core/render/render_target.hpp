@@ -85,6 +85,7 @@ private:
     bool same_size_;
     std::vector<std::uint8_t> outside_;
     std::unique_ptr<MapPixelSun> pixel_sun_;
+    std::vector<std::uint8_t> shaded_;  // per frame: the pixels pixel_sun_ shaded
 };
 
 class ExtentTarget final : public RenderTarget {
@@ -110,6 +111,7 @@ private:
     std::vector<glm::vec2> at_;
     std::size_t covered_ = 0;
     std::unique_ptr<MapPixelSun> pixel_sun_;
+    std::vector<std::uint8_t> shaded_;  // per frame: the pixels pixel_sun_ shaded
 };
 
 class CameraTarget final : public RenderTarget {

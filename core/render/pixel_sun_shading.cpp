@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "core/terrain/smooth_surface.hpp"

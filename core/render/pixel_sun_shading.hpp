@@ -7,8 +7,9 @@
 // four texels around the pixel disagree on the sun, the pixel's own share of the disc, marched
 // towards the sun over the same surface (surface_march.hpp).
 #include <cstdint>
-#include <glm/vec3.hpp>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/render/pixel_sun_blockers.hpp"
 #include "core/render/surface_march.hpp"

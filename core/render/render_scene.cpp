@@ -114,8 +114,8 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), opti
     // stretched (--relief-contrast), which is per texel.
     const ReliefContrast& rc = options_.relief_contrast;
     if (options_.view != ViewKind::perspective && !rc.automatic && rc.k == 1.0)
-        target_->shade_sun_per_pixel(*grid_, options_.perspective.pixel_sun_shadows, visibility::curvature_factor(options_.renderer.curvature),
-                                     options_.renderer.threads);
+        target_->shade_sun_per_pixel(*grid_, options_.perspective.pixel_sun_shadows,
+                                     visibility::curvature_factor(options_.renderer.curvature), options_.renderer.threads);
     state_ = compute_shading_state(*grid_, std::move(materials), std::move(normals), options_.renderer);
     view_ = compute_view_shading(*state_, target_->view_directions());
     renderer_ = std::make_unique<FrameRenderer>(*state_, view_);

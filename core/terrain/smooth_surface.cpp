@@ -57,13 +57,10 @@ void catmull_rom(float t, float w[4], float d[4]) {
     d[3] = 0.5f * (3 * t2 - 2 * t);
 }
 
-// The uniform cubic B-spline's weights and their derivatives at t in [0, 1] between knots 1 and 2.
-void b_spline(float t, float w[4], float d[4]) {
-    const float u = 1 - t, t2 = t * t, t3 = t2 * t;
-    w[0] = u * u * u / 6;
-    w[1] = (3 * t3 - 6 * t2 + 4) / 6;
-    w[2] = (-3 * t3 + 3 * t2 + 3 * t + 1) / 6;
-    w[3] = t3 / 6;
+// The derivatives of the uniform cubic B-spline's weights at t in [0, 1] between knots 1 and 2:
+// at t = 0 the central difference about knot 1, at t = 1 about knot 2.
+void b_spline_derivative(float t, float d[4]) {
+    const float u = 1 - t, t2 = t * t;
     d[0] = -0.5f * u * u;
     d[1] = 0.5f * (3 * t2 - 4 * t);
     d[2] = 0.5f * (-3 * t2 + 2 * t + 1);
@@ -78,21 +75,21 @@ SurfaceSample smooth_slope(const HeightGrid& g, double x, double y) {
     const int r = valid_bilinear_corner(std::clamp(y, 0.0, double(std::max(g.height - 1, 0))), g.height, fy);
     float p[4][4];
     if (!(g.width >= 2 && g.height >= 2 && fill_patch(g, c, r, p))) return smooth_surface(g, x, y);
-    // Along each axis the B-spline's derivative, across it Catmull-Rom's weights: both are 1 at
-    // a texel centre's own line, so there the slope is the central difference.
-    float cr_x[4], unused_x[4], cr_y[4], unused_y[4], bx[4], dbx[4], by[4], dby[4];
-    catmull_rom(fx, cr_x, unused_x);
-    catmull_rom(fy, cr_y, unused_y);
-    b_spline(fx, bx, dbx);
-    b_spline(fy, by, dby);
-    SurfaceSample s = smooth_surface(g, x, y);
-    float zc = 0, zr = 0;
+    // Across each axis Catmull-Rom's weights, which on a texel centre's own line take that line
+    // alone; along it the B-spline's derivative, which at a texel centre is the central difference.
+    float cr_x[4], dcr_x[4], cr_y[4], dcr_y[4], db_x[4], db_y[4];
+    catmull_rom(fx, cr_x, dcr_x);
+    catmull_rom(fy, cr_y, dcr_y);
+    b_spline_derivative(fx, db_x);
+    b_spline_derivative(fy, db_y);
+    float z = 0, zc = 0, zr = 0;
     for (int j = 0; j < 4; ++j) {
         float along = 0, across = 0;
-        for (int i = 0; i < 4; ++i) along += dbx[i] * p[j][i], across += cr_x[i] * p[j][i];
-        zc += cr_y[j] * along, zr += dby[j] * across;
+        for (int i = 0; i < 4; ++i) along += db_x[i] * p[j][i], across += cr_x[i] * p[j][i];
+        z += cr_y[j] * across, zc += cr_y[j] * along, zr += db_y[j] * across;
     }
-    s.dz_dcol = zc, s.dz_drow = zr;
+    SurfaceSample s;
+    s.z = z, s.dz_dcol = zc, s.dz_drow = zr;
     return s;
 }
 

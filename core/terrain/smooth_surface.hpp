@@ -20,9 +20,11 @@ struct SurfaceSample {
 // At texel-centre coordinates (x = column, y = row), clamped onto the grid.
 SurfaceSample smooth_surface(const HeightGrid& g, double x, double y);
 
-// The slope of the uniform cubic B-spline through the same 16 heights (its z is smoothed, not
-// the heights): at a texel centre the central difference, as smooth_surface's, and between
-// them C1 where Catmull-Rom's slope has creases along the texel lines. For shading only.
+// smooth_surface's height with a smoother slope, for shading: along each axis the derivative of
+// the uniform cubic B-spline through the same 16 heights, across it Catmull-Rom's weights. At a
+// texel centre it is the central difference, as smooth_surface's; between centres its rate of
+// change has no kink at the texel lines, where Catmull-Rom's does (seen from above, every
+// texel of a noisy DEM read as a bump).
 SurfaceSample smooth_slope(const HeightGrid& g, double x, double y);
 
 // An upper bound of the surface over the patch between texel centres (col, row) and

@@ -1,18 +1,17 @@
 // A magnified map shades the sun per pixel (core/render/map_pixel_sun.hpp): at the texel centres
 // it is the texels' own shading, and a cast shadow's edge is as sharp as the pixels, where the
 // blend of the texels' shares ramps over a texel.
-#include "core/render/map_pixel_sun.hpp"
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "core/dem/crop.hpp"
 #include "core/dem/read_dem.hpp"
 #include "core/geo/crs.hpp"
+#include "core/render/map_pixel_sun.hpp"
 #include "core/render/render_scene.hpp"
 
 namespace ts::render {

@@ -130,7 +130,8 @@ PerspectiveView::Pixel PerspectiveView::trace(double u, double v) const {
     const Frame& f = frame_;
     const double dx = f.dx, dy = f.dy;
     const double half_w = f.half_width, half_h = f.half_height;
-    auto normal_at = [&](double x, double y) { return slope_normal(g, terrain::smooth_surface(g, x, y), y); };
+    // The shading normal at a hit: the smoothed slope (terrain::smooth_slope) of the surface the rays march.
+    auto normal_at = [&](double x, double y) { return slope_normal(g, terrain::smooth_slope(g, x, y), y); };
     const double a = (2.0 * u / options_.width - 1.0) * half_w;
     const double b = (1.0 - 2.0 * v / options_.height) * half_h;
     glm::dvec3 d = f.forward + a * f.right + b * f.up;

@@ -183,6 +183,19 @@ TEST(PerspectiveView, PixelShadowsAreSharpWhereBlendedTexelsAreNot) {
     EXPECT_LT(sharp, 2 * o.height);  // at most a pixel or two across the edge, per row
 }
 
+// The RMS distance of per-column values from their least-squares line, which must be slanted
+// (it crosses rows).
+double rms_off_a_slanted_line(const std::vector<double>& col) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    const int n = int(col.size());
+    for (int i = 0; i < n; ++i) sx += i, sy += col[std::size_t(i)], sxx += double(i) * i, sxy += i * col[std::size_t(i)];
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx), icpt = (sy - slope * sx) / n;
+    EXPECT_GT(std::abs(slope), 0.02);
+    double se = 0;
+    for (int i = 0; i < n; ++i) se += std::pow(col[std::size_t(i)] - (icpt + slope * i), 2);
+    return std::sqrt(se / n);
+}
+
 TEST(PerspectiveView, ASilhouetteAgainstTheSkyIsAStraightLineNotAStaircase) {
     // Looking north-north-east over the plane out of its north edge, which the picture shows as
     // a slanted straight line against the sky. Per column, the terrain's share of the pixels is
@@ -202,14 +215,7 @@ TEST(PerspectiveView, ASilhouetteAgainstTheSkyIsAStraightLineNotAStaircase) {
         std::vector<double> col(std::size_t(o.width), 0.0);
         for (int j = 0; j < o.height; ++j)
             for (int i = 0; i < o.width; ++i) col[std::size_t(i)] += v.terrain_coverage(std::size_t(j) * o.width + i);
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        const int n = o.width;
-        for (int i = 0; i < n; ++i) sx += i, sy += col[std::size_t(i)], sxx += double(i) * i, sxy += i * col[std::size_t(i)];
-        const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx), icpt = (sy - slope * sx) / n;
-        EXPECT_GT(std::abs(slope), 0.02);  // slanted: it crosses rows
-        double se = 0;
-        for (int i = 0; i < n; ++i) se += std::pow(col[std::size_t(i)] - (icpt + slope * i), 2);
-        return std::sqrt(se / n);
+        return rms_off_a_slanted_line(col);
     };
     const double one = off_the_line(1), grid = off_the_line(4);
     std::printf("skyline off a straight line: %.3f px with one ray, %.3f with 4 x 4\n", one, grid);
@@ -249,14 +255,7 @@ TEST(PerspectiveView, NearTerrainAgainstFarTerrainIsAStraightLineNotAStaircase) 
                 else plain += v.terrain_distance(k) < 2000;
             }
         EXPECT_GT(plain, std::size_t(o.width * 2));  // the plain shows behind the edge
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        const int n = o.width;
-        for (int i = 0; i < n; ++i) sx += i, sy += col[std::size_t(i)], sxx += double(i) * i, sxy += i * col[std::size_t(i)];
-        const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx), icpt = (sy - slope * sx) / n;
-        EXPECT_GT(std::abs(slope), 0.02);  // slanted: it crosses rows
-        double se = 0;
-        for (int i = 0; i < n; ++i) se += std::pow(col[std::size_t(i)] - (icpt + slope * i), 2);
-        return std::sqrt(se / n);
+        return rms_off_a_slanted_line(col);
     };
     const double one = off_the_line(1), grid_rays = off_the_line(4);
     std::printf("near edge against far terrain off a straight line: %.3f px with one ray, %.3f with 4 x 4\n", one,

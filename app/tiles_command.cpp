@@ -99,8 +99,12 @@ void run_tiles(const TilesCommandArgs& a) {
         std::printf("sun: azimuth %.2f deg, elevation %.2f deg\n", job.shading.sun_azimuth_deg, job.shading.sun_elevation_deg);
         for (int z = job.z0; z <= job.z1; ++z) {
             const tiles::ZoomShading zs = tiles::zoom_shading(dem, job, z + tiles::tile_size_shift(job.tile_size));
-            std::printf("zoom %d: DEM level %d (1 in %d texels a side), heights x %.3g, %d directions\n", z, zs.level,
-                        1 << zs.level, zs.vertical_scale, tiles::shading_of_zoom(job, z).directions);
+            const double rule = zs.rule_exaggeration * job.shading.z_factor;
+            char raised[96] = "";
+            if (rule > 0 && zs.vertical_scale > rule * 1.0001)
+                std::snprintf(raised, sizeof raised, " (raised from %.3g for legible relief: docs/tiles.md)", rule);
+            std::printf("zoom %d: DEM level %d (1 in %d texels a side), heights x %.3g%s, %d directions\n", z, zs.level,
+                        1 << zs.level, zs.vertical_scale, raised, tiles::shading_of_zoom(job, z).directions);
         }
         std::fflush(stdout);
     }

@@ -54,7 +54,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
     add_colors_options(cmd, a.colors);  // color
     cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
     cmd.add_option("--exaggeration", a.exaggeration,
-                   "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value; docs/tiles.md) or a number replacing it at every zoom")
+                   "auto (2^(max(0, 12 - zoom)/3), zooms past the DEM's native one keeping its value, raised below zoom 12 up to 4x where the relief is too gentle to read; docs/tiles.md) or a number replacing it at every zoom")
         ->capture_default_str();
     add_directions_option(cmd, a.directions, &a.directions_given);  // relief, svf, color, insolation
     add_max_error_option(cmd, a.max_error);                          // relief, color: per zoom

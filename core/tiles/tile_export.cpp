@@ -15,6 +15,7 @@
 #include "core/raster/png_writer.hpp"
 #include "core/render/render_scene.hpp"
 #include "core/tiles/block_shading.hpp"
+#include "core/tiles/legible_relief.hpp"
 #include "core/tiles/lightable_sky.hpp"
 #include "core/tiles/shade_source.hpp"
 #include "core/tiles/tile_pixels.hpp"
@@ -176,8 +177,8 @@ ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom
     int max_level = 0;
     while (std::min(dem.width, dem.height) >> (max_level + 1) >= kMinLevelTexels) ++max_level;
     ZoomShading z;
-    z.level = std::clamp(pyramid_level_for(texel_m, pixel_size_m(pixel_zoom) * centre_cos, max_level) + job.level_bias,
-                         0, max_level);
+    const int matched_level = pyramid_level_for(texel_m, pixel_size_m(pixel_zoom) * centre_cos, max_level);
+    z.level = std::clamp(matched_level + job.level_bias, 0, max_level);
     // Zooms finer than the DEM's own (shaded from level 0 however far they zoom in) magnify its
     // native zoom's tiles and show no new relief: they keep that zoom's exaggeration, so they
     // share its source (one visibility pass) and do not fade as the map zooms in. Being
@@ -186,8 +187,16 @@ ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom
     auto over_zoomed = [&](int pz) { return pyramid_level_for(texel_m, pixel_size_m(pz) * centre_cos, 64) == 0; };
     int native_zoom = pixel_zoom;
     while (native_zoom > 0 && over_zoomed(native_zoom - 1)) --native_zoom;
-    z.vertical_scale = job.shading.z_factor * (job.shading.exaggeration ? *job.shading.exaggeration
-                                                                        : zoom_exaggeration(native_zoom));
+    if (job.shading.exaggeration) {
+        z.vertical_scale = job.shading.z_factor * *job.shading.exaggeration;
+        return z;
+    }
+    // Raised where the matched level's relief is too gentle to read (legible_relief.hpp); from
+    // the level the zoom matches, so --level-bias leaves it as it is.
+    z.rule_exaggeration = zoom_exaggeration(native_zoom);
+    const double rule = z.rule_exaggeration;
+    z.vertical_scale = job.shading.z_factor *
+                       (rule > 1 ? legible_exaggeration(rule, steep_slope(dem, std::max(0, matched_level))) : rule);
     return z;
 }
 

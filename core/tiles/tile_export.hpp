@@ -71,7 +71,10 @@ std::string lightable_json(const dem::Dem& dem, const TileShading& shading);
 // The DEM level and vertical scale a pixel zoom is shaded with.
 struct ZoomShading {
     int level = 0;
-    double vertical_scale = 1;
+    double vertical_scale = 1;  // z-factor x exaggeration
+    // Under --exaggeration auto, the rule's E (zoom_exaggeration.hpp) before legible_relief.hpp
+    // raised it; 0 with a constant --exaggeration.
+    double rule_exaggeration = 0;
 };
 ZoomShading zoom_shading(const dem::Dem& dem, const TileJob& job, int pixel_zoom);
 // The shading of tile zoom z: job.shading with that zoom's directions.

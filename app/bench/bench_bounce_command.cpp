@@ -63,8 +63,10 @@ std::vector<BounceCase> bounce_cases() {
     add("bounce_sun", "sh", [](render::BounceSettings& s) { s.sun = render::BounceSettings::SunPart::sh; });
     for (int n : {4, 8, 16})
         add("bounce_directions", std::to_string(n), [&](render::BounceSettings& s) { s.gather.directions = n; });
-    for (int r : {16, 32, 64})
+    for (int r : {16, 32, 64, 96})
         add("bounce_radius", std::to_string(r), [&](render::BounceSettings& s) { s.gather.radius_texels = r; });
+    for (const char* g : {"1.2", "1.3", "1.4"})
+        add("bounce_growth", g, [&](render::BounceSettings& s) { s.gather.growth = std::stod(g); });
     return cases;
 }
 

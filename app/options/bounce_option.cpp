@@ -29,6 +29,11 @@ void add_bounce_options(CLI::App& cmd, render::BounceSettings& b) {
                    "How far the bounced light's gather looks, texels (farther terrain is lit like open flat land)")
         ->capture_default_str()
         ->check(within(1, 1024));
+    cmd.add_option("--bounce-growth", b.gather.growth,
+                   "Ratio of each step of the bounced light's gather to the last (the first is one texel; more: "
+                   "fewer, coarser steps far out)")
+        ->capture_default_str()
+        ->check(within(1.01, 4));
 }
 
 void check_bounce_options(const render::BounceSettings& b) {

@@ -114,7 +114,8 @@ std::string describe_job(const TileJob& job) {
     const bool lit = s.style->takes_relief_contrast() || s.style->colours_land() || s.style->data_tile();
     const std::string bounce = lit ? ",\"bounce\":\"" + std::to_string(s.bounce.bounces) + "_" +
                                          std::to_string(s.bounce.gather.directions) + "_" +
-                                         number(s.bounce.gather.radius_texels) + "\""
+                                         number(s.bounce.gather.radius_texels) + "_" +
+                                         number(s.bounce.gather.growth) + "\""
                                    : "";
     // Only when the sky's light is integrated over the horizons (tiles made before were all SH).
     const bool rendered = s.style->takes_relief_contrast() || s.style->colours_land();

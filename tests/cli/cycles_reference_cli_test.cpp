@@ -129,8 +129,8 @@ TEST(CyclesReferenceCli, TheBounceBenchMeasuresRendersErrorForEveryKnob) {
         EXPECT_GT(std::stod(f[3]), 0.0) << line;
         EXPECT_GT(std::stod(f[4]), 0.0) << line;
     }
-    EXPECT_EQ(error.size(), 11u);
-    for (const char* knob : {"bounces", "bounce_sun", "bounce_directions", "bounce_radius"})
+    EXPECT_EQ(error.size(), 15u);
+    for (const char* knob : {"bounces", "bounce_sun", "bounce_directions", "bounce_radius", "bounce_growth"})
         EXPECT_EQ(defaults[knob], 1) << knob;
     const Agreement rendered = against_cycles("clear", "cycles_clear_e20_a0.3_b4.exr");
     EXPECT_NEAR(error["bounces=1"], rendered.relative_rmse, 1e-4);

@@ -6,15 +6,15 @@
 
 #include "core/material/palette_materials.hpp"
 #include "core/terrain/dem_height_grid.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::tiles {
 namespace {
 
 constexpr int kSamplesPerSide = 128;
-constexpr double kPi = 3.14159265358979323846;
 
-// The mean of the finite heights of level texel (c, r): the DEM's block of 2^level a side, as
-// dem_level averages it; NaN if all of it is void.
+// The mean of the finite heights of level texel (c, r): the DEM's block of 2^level a side (what
+// dem_level's texel holds where the block has no void); NaN if all of it is void.
 double level_height(const dem::Dem& dem, int level, int c, int r) {
     const int n = 1 << level;
     double sum = 0;
@@ -73,7 +73,7 @@ double steep_slope(const dem::Dem& dem, int level) {
 
 double legible_exaggeration(double zoom_e, double steep_tan) {
     if (!(zoom_e > 1) || !(steep_tan > 0)) return zoom_e;
-    const double wanted = std::tan(kLegibleSlopeDeg * kPi / 180.0) / steep_tan;
+    const double wanted = std::tan(radians(kLegibleSlopeDeg)) / steep_tan;
     return std::clamp(wanted, zoom_e, std::min(4 * zoom_e, zoom_e * zoom_e));
 }
 

@@ -9,12 +9,12 @@
 #include "core/dem/read_dem.hpp"
 #include "core/tiles/tile_export.hpp"
 #include "core/tiles/zoom_exaggeration.hpp"
+#include "core/util/angles.hpp"
 
 namespace ts::tiles {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-const double kTarget = std::tan(kLegibleSlopeDeg * kPi / 180.0);
+const double kTarget = std::tan(radians(kLegibleSlopeDeg));
 const std::string kEtopo = std::string(TS_SHARED_DATA) + "/dem/etopo1_global_1deg.tif";
 const std::string kAnatolia = std::string(TS_SHARED_DATA) + "/dem/srtm3_N39E040_1000px.tif";
 
@@ -66,8 +66,8 @@ TEST(LegibleRelief, OnASeaFloorDemOnlyLandCounts) {
 TEST(LegibleRelief, GlobalGridIsRaisedMountainsAreNot) {
     const dem::Dem etopo = dem::read_dem(kEtopo);
     const double land = steep_slope(etopo, 0);
-    EXPECT_GT(land, std::tan(0.3 * kPi / 180));
-    EXPECT_LT(land, std::tan(0.6 * kPi / 180));
+    EXPECT_GT(land, std::tan(radians(0.3)));
+    EXPECT_LT(land, std::tan(radians(0.6)));
     const TileJob job;
     for (const int pz : {0, 2, 4}) {
         const ZoomShading z = zoom_shading(etopo, job, pz);

@@ -102,6 +102,7 @@ struct FlyArgs {
     int patch_quads = 16;
     double haze_km = 250.0;
     double fov_deg = 60.0;
+    std::string shadow_detail = "pixel";
     // --max-error E[,PX]: the relative radiance error E chooses --directions, the screen-space
     // error PX (pixels) is the LOD's --pixel-error; the flags given explicitly, which conflict.
     std::string max_error;
@@ -324,6 +325,7 @@ void run_fly(const FlyArgs& a) {
     settings.lod.patch_quads = a.patch_quads;
     settings.lod.error_quantile = a.lod_quantile;
     settings.haze_km = a.haze_km;
+    settings.pixel_sun_shadows = a.shadow_detail == "pixel";
     settings.fov_deg = a.fov_deg;
     settings.aircraft_shadows = !a.no_aircraft_shadows;
     settings.aircraft_min_solid_angle_sr = a.min_solid_angle_sr;
@@ -477,6 +479,11 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--haze-km", args->haze_km, "aerial perspective: distance of 1/e transmittance (0 = none)")
         ->capture_default_str();
     cmd->add_option("--fov", args->fov_deg, "horizontal field of view in degrees")->capture_default_str();
+    cmd->add_option("--shadow-detail", args->shadow_detail,
+                    "sun shadows' edges placed inside texels where each fragment's interpolated horizon crosses the "
+                    "sun (pixel), or the texels' visible shares blended (texel: a texel-wide ramp along the texel lines)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"pixel", "texel"}));
     cmd->add_option("--stream", args->stream,
                     "auto: stream the DEM by tile when flying it whole would take more than --memory-budget; on; off")
         ->capture_default_str();

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/render/diffuse_sun_part.hpp"
+#include "core/fly/radiance_pack.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/visibility/far_field_horizons.hpp"
 #include "core/visibility/window_visibility_backend.hpp"
@@ -102,6 +102,7 @@ DetailTile::DetailTile(DetailTileKey key, const DetailTileLayout& layout, const 
     so.renderer.bounce = options.bounce;
     so.renderer.sky_light = options.sky_light;
     so.renderer.threads = options.threads;
+    so.renderer.keep_sun_horizon = options.sun_horizon;  // the fragments place shadow edges inside texels
     const visibility::ReceiverWindow window{window_col0_, window_row0_, w.width, w.height};
     const visibility::ReceiverWindow core{col0_, row0_, samples_x_, samples_y_};
     backend_ = visibility::make_window_far_field_visibility(window, core, far);
@@ -119,27 +120,31 @@ glm::vec2 DetailTile::node_z(int level, int ix, int iy) const {
     return node_z_[std::size_t(level)][std::size_t(ly) * std::size_t(nodes_x_[std::size_t(level)]) + std::size_t(lx)];
 }
 
-void DetailTile::light(const render::SunState& sun, std::vector<glm::vec3>& radiance, std::vector<glm::vec3>& sun_part,
-                       std::vector<float>& open_sky) {
+void DetailTile::light(const render::SunState& sun, std::vector<std::uint32_t>& radiance,
+                       std::vector<std::uint32_t>& sun_light) {
     scene_->render(sun, image_);
-    std::vector<glm::vec3> part;
-    render::diffuse_sun_part(*scene_, sun, *scene_->last_sky(), image_.rgb, part);
+    render::TexelSunSplit split;  // per window texel, for this frame only
+    render::split_texel_sun(*scene_, sun, *scene_->last_sky(), image_.rgb, split);
+    const render::NormalField& nf = scene_->state().normals();
     const std::size_t n = std::size_t(samples_x_) * std::size_t(samples_y_);
-    radiance.resize(n), sun_part.resize(n), open_sky.resize(n);
+    radiance.resize(2 * n), sun_light.resize(4 * n);
     for (int r = 0; r < samples_y_; ++r)
         for (int c = 0; c < samples_x_; ++c) {
             const std::size_t from = window_->index(col0_ - window_col0_ + c, row0_ - window_row0_ + r);
             const std::size_t to = std::size_t(r) * std::size_t(samples_x_) + std::size_t(c);
-            radiance[to] = image_.rgb[from];
-            sun_part[to] = part[from];
-            open_sky[to] = open_sky_[from];
+            pack_radiance(split.rest[from], 0.0f, &radiance[2 * to]);
+            pack_sun_light(split.sun_albedo[from], open_sky_[from], {nf.x[from], nf.y[from], nf.z[from]},
+                           split.horizon_above_sun[from], &sun_light[4 * to]);
         }
 }
 
 std::size_t detail_tile_bytes(int tile_texels, int halo) {
     const std::size_t window = std::size_t(tile_texels + 1 + 2 * halo);
     const std::size_t samples = std::size_t(tile_texels + 1) * std::size_t(tile_texels + 1);
-    return window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3)) + samples * (4 + 8 + 8) * 2;
+    // Per window texel: the state, heights, fill flag, frame and the frame's sun horizon; per
+    // sample: height, radiance and sun light, with their upload copies.
+    return window * window * (200 + 2 * sizeof(float) + 1 + sizeof(glm::vec3) + sizeof(float)) +
+           samples * (4 + 8 + 16) * 2;
 }
 
 }  // namespace ts::fly

@@ -26,6 +26,7 @@
 #include "core/fly/terrain_overview.hpp"
 #include "core/render/frame_renderer.hpp"
 #include "core/render/render_scene.hpp"
+#include "core/render/texel_sun_split.hpp"
 
 namespace ts::visibility {
 class FarField;
@@ -60,6 +61,8 @@ struct DetailShadingOptions {
     render::BounceSettings bounce;  // light bounced off the terrain
     render::SkyLightSettings sky_light;  // the sky's light over the horizons or through SH
     std::string sky = "clear";
+    // Keep each frame's horizon in the sun's azimuth for the fragments (FlySettings::pixel_sun_shadows).
+    bool sun_horizon = true;
     render::ColorDesign colors;  // percent stops fitted to the overview's heights, so tiles agree
     int threads = 0;
 };
@@ -86,11 +89,11 @@ public:
     // The height range of node (level, ix, iy) (grid node indices) of a level below the overview's.
     glm::vec2 node_z(int level, int ix, int iy) const;
 
-    // This sun's radiance at the tile's samples (render::Scene::render on the window, cut to the
-    // tile), its sun part (albedo/pi E_sun max(0, n.s) times the sun visibility) and the samples'
-    // open-sky fraction (once per tile).
-    void light(const render::SunState& sun, std::vector<glm::vec3>& radiance, std::vector<glm::vec3>& sun_part,
-               std::vector<float>& open_sky);
+    // This sun's light at the tile's samples (render::Scene::render on the window, cut to the
+    // tile), packed for the shaders (radiance_pack.hpp): 2 words a sample of the radiance less
+    // the sun's diffuse term, 4 of that term's parts (render::split_texel_sun) and the open-sky
+    // fraction.
+    void light(const render::SunState& sun, std::vector<std::uint32_t>& radiance, std::vector<std::uint32_t>& sun_light);
 
 private:
     DetailTileKey key_;

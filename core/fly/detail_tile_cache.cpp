@@ -104,21 +104,13 @@ std::size_t DetailTileCache::pending() const {
 }
 
 void DetailTileCache::lit_upload(Resident& r) {
-    std::vector<glm::vec3> radiance, sun;
-    std::vector<float> open;
-    r.tile->light(sun_, radiance, sun, open);
     r.sun_generation = sun_generation_;
     DetailSlotData d;
     d.slot = r.slot;
     d.col0 = r.tile->col0(), d.row0 = r.tile->row0();
     d.samples_x = r.tile->samples_x(), d.samples_y = r.tile->samples_y();
     d.heights = &r.tile->heights();
-    d.radiance.resize(2 * radiance.size());
-    d.sun.resize(2 * radiance.size());
-    for (std::size_t i = 0; i < radiance.size(); ++i) {
-        pack_radiance(radiance[i], 0.0f, &d.radiance[2 * i]);
-        pack_radiance(sun[i], open[i], &d.sun[2 * i]);
-    }
+    r.tile->light(sun_, d.radiance, d.sun);
     // A slot listed twice keeps its last contents only.
     std::erase_if(uploads_, [&](const DetailSlotData& u) { return u.slot == d.slot; });
     uploads_.push_back(std::move(d));

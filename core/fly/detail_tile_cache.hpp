@@ -45,7 +45,7 @@ struct DetailSlotData {
     int slot = 0;
     int col0 = 0, row0 = 0, samples_x = 0, samples_y = 0;
     const std::vector<float>* heights = nullptr;
-    std::vector<std::uint32_t> radiance, sun;  // 2 words a sample (packHalf2x16 rgb, rgb + open sky)
+    std::vector<std::uint32_t> radiance, sun;  // 2 and 4 words a sample (radiance_pack.hpp)
 };
 
 class DetailTileCache final : public CdlodDetail {

@@ -51,7 +51,8 @@ void FrameRenderer::render(const light::Sky& sky, const light::SkySh& sky_sh, co
     timings_.sky_s = t0.seconds();
 
     t0.restart();
-    state_.sun_visibility(sun, sun_up, sun_vis_, state_.has_other_sun_shadows() ? &terrain_sun_vis_ : nullptr);
+    state_.sun_visibility(sun, sun_up, sun_vis_, state_.has_other_sun_shadows() ? &terrain_sun_vis_ : nullptr,
+                          state_.options().keep_sun_horizon ? &sun_horizon_ : nullptr);
     timings_.sun_visibility_s = t0.seconds();
 
     t0.restart();

@@ -61,6 +61,9 @@ public:
     const std::vector<float>& terrain_sun_visibility() const {
         return state_.has_other_sun_shadows() ? terrain_sun_vis_ : sun_vis_;
     }
+    // With RendererOptions::keep_sun_horizon, each texel's horizon in the sun's azimuth less the
+    // sun's elevation (radians; ShadingState::sun_visibility), else empty.
+    const std::vector<float>& sun_horizon() const { return sun_horizon_; }
     const FrameTimings& last_timings() const { return timings_; }
 
 private:
@@ -76,6 +79,7 @@ private:
     // Gathers it and adds it, times E_sun / pi, to sky_add_.
     void add_gathered_bounce_sun(const glm::vec3& sun_dir, const glm::vec3& e_diffuse, int threads);
     std::vector<float> sun_vis_, terrain_sun_vis_;  // terrain_sun_vis_: only with other sun shadows
+    std::vector<float> sun_horizon_;
     light::SkyTable sky_table_{light::SkyGrid::whole_sphere(128, 64)};
     FrameTimings timings_;
 };

@@ -363,11 +363,12 @@ std::unique_ptr<ShadingState> compute_shading_state(const terrain::HeightGrid& g
 }
 
 void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out,
-                                  std::vector<float>* terrain_only) {
+                                  std::vector<float>* terrain_only, std::vector<float>* horizon_above_sun) {
     out.resize(texels_);
     if (!sun_up) {
         std::fill(out.begin(), out.end(), 0.0f);
         if (terrain_only) *terrain_only = out;
+        if (horizon_above_sun) horizon_above_sun->assign(texels_, float(visibility::kSunHorizonBandRad));
         return;
     }
     if (options_.sun_method == visibility::SunMethod::sweep) {
@@ -377,14 +378,17 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
             so.threads = options_.threads;
             sun_sweep_ = std::make_unique<visibility::SunShadowSweep>(grid_, so);
         }
-        sun_sweep_->compute(sun.azimuth_deg, sun.elevation_deg, out);
+        sun_sweep_->compute(sun.azimuth_deg, sun.elevation_deg, out, horizon_above_sun);
     } else {
         visibility::SunVisibilityOptions so;
         so.curvature = options_.curvature;
         so.threads = options_.threads;
-        out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so);
+        out = visibility::sun_visibility(grid_, sun.azimuth_deg, sun.elevation_deg, so, horizon_above_sun);
     }
+    const bool others = !blockers_.empty() || bool(options_.outer_sun_shadow);
+    std::vector<float> own;
     if (terrain_only) *terrain_only = out;
+    if (horizon_above_sun && others) own = out;
     if (!blockers_.empty()) {
         if (!blocker_sun_)
             blocker_sun_ = std::make_unique<visibility::BlockerSunShadow>(
@@ -392,6 +396,13 @@ void ShadingState::sun_visibility(const SunState& sun, bool sun_up, std::vector<
         blocker_sun_->apply(sun.azimuth_deg, sun.elevation_deg, out);
     }
     if (options_.outer_sun_shadow) options_.outer_sun_shadow(sun, out);
+    if (horizon_above_sun && others) {
+        const double radius = visibility::SunSweepOptions{}.sun_radius_rad;
+        for (std::size_t t = 0; t < texels_; ++t)
+            if (out[t] < own[t])  // NaN compares false: voids keep theirs
+                (*horizon_above_sun)[t] = std::max((*horizon_above_sun)[t],
+                                                   float(visibility::horizon_above_sun_for_fraction(out[t], radius)));
+    }
 }
 
 }  // namespace ts::render

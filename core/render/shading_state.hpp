@@ -115,6 +115,9 @@ struct RendererOptions {
     // Keep a float copy of the diffuse transfer T_d [16][texels] (kept_diffuse_transfer): what a
     // lightable tile stores so that a browser relights it (core/tiles/lightable_style.cpp).
     bool keep_diffuse_transfer = false;
+    // Keep each frame's horizon in the sun's azimuth (FrameRenderer::sun_horizon): what a view
+    // interpolates between texels to place a shadow's edge inside them (the flythrough).
+    bool keep_sun_horizon = false;
     int threads = 0;
     ProgressBar* progress = nullptr;  // advanced per texel and azimuth of the horizon pass
 };
@@ -172,8 +175,11 @@ public:
     // (texels() entries): the terrain's, times the mesh blockers' in their footprints (and an
     // outer shadow's); `terrain_only`, when given, gets the terrain's alone. The sweep is built
     // on the first call and kept.
+    // `horizon_above_sun`, when given, gets each texel's horizon in the sun's azimuth less the
+    // sun's elevation (visibility::kSunHorizonBandRad about the sun, clamped; +band with the
+    // sun down), made to agree with `out` where other shadows darkened a texel.
     void sun_visibility(const SunState& sun, bool sun_up, std::vector<float>& out,
-                        std::vector<float>* terrain_only = nullptr);
+                        std::vector<float>* terrain_only = nullptr, std::vector<float>* horizon_above_sun = nullptr);
     // Whether anything but the grid's own terrain shades the sun (meshes, an outer shadow).
     bool has_other_sun_shadows() const { return !blockers_.empty() || bool(options_.outer_sun_shadow); }
     bool has_outer_sun_shadow() const { return bool(options_.outer_sun_shadow); }

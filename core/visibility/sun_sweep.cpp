@@ -39,6 +39,10 @@ struct SunShadowSweep::Frame {
     // points (a horizon below the first sees all of it, above the second none).
     double elevation = 0, radius = 0;
     float tan_lo = 0, tan_hi = 0;
+    // The band the near field marches for: the disc's, or kSunHorizonBandRad about its centre
+    // when the horizon itself is asked for (compute's `horizon_above_sun`).
+    float march_lo = 0, march_hi = 0;
+    float* horizon_out = nullptr;  // [row * width + col]: h - e, clamped to the band; or null
 };
 
 namespace {
@@ -275,7 +279,8 @@ std::vector<float> SunShadowSweep::compute(double sun_azimuth_deg, double sun_el
     return out;
 }
 
-void SunShadowSweep::compute(double sun_azimuth_deg, double sun_elevation_deg, std::vector<float>& out) {
+void SunShadowSweep::compute(double sun_azimuth_deg, double sun_elevation_deg, std::vector<float>& out,
+                             std::vector<float>* horizon_above_sun) {
     if (!std::isfinite(sun_azimuth_deg) || !std::isfinite(sun_elevation_deg) || sun_elevation_deg < -90.0 ||
         sun_elevation_deg > 90.0)
         throw InputError("sun position: azimuth must be finite and elevation within [-90, 90] degrees");
@@ -296,6 +301,14 @@ void SunShadowSweep::compute(double sun_azimuth_deg, double sun_elevation_deg, s
         const double lo = f.elevation - f.radius, hi = f.elevation + f.radius;
         f.tan_lo = lo <= -kPi / 2 ? -kInf : float(std::tan(lo));
         f.tan_hi = hi >= kPi / 2 ? kInf : float(std::tan(hi));
+        f.march_lo = f.tan_lo, f.march_hi = f.tan_hi;
+        if (horizon_above_sun) {
+            horizon_above_sun->resize(texels());
+            f.horizon_out = horizon_above_sun->data();
+            const double band_lo = f.elevation - kSunHorizonBandRad, band_hi = f.elevation + kSunHorizonBandRad;
+            f.march_lo = std::min(f.tan_lo, band_lo <= -kPi / 2 ? -kInf : float(std::tan(band_lo)));
+            f.march_hi = std::max(f.tan_hi, band_hi >= kPi / 2 ? kInf : float(std::tan(band_hi)));
+        }
     }
     // Sample along the axis the line crosses fastest (as ExactAzimuthSweep::plan).
     f.along_columns = std::abs(f.cs) >= std::abs(f.sn) / metrics_.mean_rho();
@@ -555,8 +568,8 @@ TS_SUN_CLONES void SunShadowSweep::near_field_rows(const Frame& f, int row_begin
             }
         }
         for (int c = std::max(c_lo, 0); c <= c_hi; ++c) {
-            const float thr = std::max(best[c], f.tan_lo), rise = top[c] - zr[c];
-            reach[c] = best[c] > f.tan_hi ? 0.0f : thr <= 0.0f ? kFar : rise / thr;
+            const float thr = std::max(best[c], f.march_lo), rise = top[c] - zr[c];
+            reach[c] = best[c] > f.march_hi ? 0.0f : thr <= 0.0f ? kFar : rise / thr;
         }
         constexpr int kChunk = 32;
         for (int cb = c_lo; cb <= c_hi; cb += kChunk) {
@@ -591,8 +604,8 @@ TS_LOOP_IVDEP
             if (c >= c_lo && c <= c_hi)  // redo: voids were read
                 best[c] = far_[f.along_columns ? std::size_t(c) * h + row : std::size_t(row) * w + c];
             double b = best[c];
-            const float thr = std::max(float(b), f.tan_lo), rise = near_top_[std::size_t(row) * w + c] - z0;
-            const float need = b > f.tan_hi ? 0.0f : thr <= 0.0f ? kFar : rise / thr;
+            const float thr = std::max(float(b), f.march_lo), rise = near_top_[std::size_t(row) * w + c] - z0;
+            const float need = b > f.march_hi ? 0.0f : thr <= 0.0f ? kFar : rise / thr;
             for (const NearStep& st : steps) {
                 if (!(st.dist < need)) break;
                 const double cc = c + st.dcol, rr = row + st.drow;
@@ -619,6 +632,13 @@ TS_LOOP_IVDEP
             const float t = v == -kFar ? 0.0f : v;  // no blocker: horizon 0
             horizon[c] = t;
             best[c] = std::isnan(t) ? kNaN : t < tan_lo ? 1.0f : t > tan_hi ? 0.0f : t;
+        }
+        if (f.horizon_out) {
+            float* rel = f.horizon_out + std::size_t(row) * w;
+            const double band = kSunHorizonBandRad;
+            for (int c = 0; c < w; ++c)
+                rel[c] = std::isnan(horizon[c]) ? kNaN
+                                                : float(std::clamp(std::atan(double(horizon[c])) - f.elevation, -band, band));
         }
         constexpr int kBlock = 16;  // a vector test per block, the scalar one only where needed
         for (int cb = 0; cb < w; cb += kBlock) {

@@ -14,6 +14,7 @@
 #include "core/util/parallel_for.hpp"
 #include "core/visibility/compute_horizons.hpp"
 #include "core/visibility/exact_azimuth.hpp"
+#include "core/visibility/sun_disc_shared.hpp"
 
 namespace ts::visibility {
 namespace {
@@ -85,13 +86,21 @@ std::string sun_method_name(SunMethod method) {
 double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, double sun_radius_rad) {
     if (std::isnan(horizon_rad) || std::isnan(sun_elevation_rad)) return std::numeric_limits<double>::quiet_NaN();
     if (!(sun_radius_rad > 0)) return sun_elevation_rad > horizon_rad ? 1.0 : 0.0;  // a point sun
-    // x: height of the disc's centre above the horizon line, in disc radii. The part below the
-    // line is the circular segment of height 1 - x, of area acos(x) - x sqrt(1 - x^2) (unit radius).
-    const double x = (sun_elevation_rad - horizon_rad) / sun_radius_rad;
-    if (x >= 1.0) return 1.0;
-    if (x <= -1.0) return 0.0;
-    const double below = (std::acos(x) - x * std::sqrt(1.0 - x * x)) / kPi;
-    return std::clamp(1.0 - below, 0.0, 1.0);
+    return shared::ts_sun_disc_fraction((sun_elevation_rad - horizon_rad) / sun_radius_rad);
+}
+
+double horizon_above_sun_for_fraction(double fraction, double sun_radius_rad) {
+    // Most texels see all of the disc or none of it.
+    const double v = std::clamp(fraction, 0.0, 1.0);
+    if (v >= 1.0) return -sun_radius_rad;
+    if (v <= 0.0) return sun_radius_rad;
+    // The fraction falls monotonically with the horizon: bisect x = (e - h) / r on [-1, 1].
+    double lo = -1.0, hi = 1.0;
+    for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (shared::ts_sun_disc_fraction(mid) < v ? lo : hi) = mid;
+    }
+    return -0.5 * (lo + hi) * sun_radius_rad;
 }
 
 std::vector<float> exact_horizon_in_azimuth(const terrain::HeightGrid& grid, double phi_rad,
@@ -101,7 +110,7 @@ std::vector<float> exact_horizon_in_azimuth(const terrain::HeightGrid& grid, dou
 }
 
 std::vector<float> sun_visibility(const terrain::HeightGrid& grid, double sun_azimuth_deg, double sun_elevation_deg,
-                                  const SunVisibilityOptions& options) {
+                                  const SunVisibilityOptions& options, std::vector<float>* horizon_above_sun) {
     if (!std::isfinite(sun_azimuth_deg) || !std::isfinite(sun_elevation_deg) || sun_elevation_deg < -90.0 ||
         sun_elevation_deg > 90.0)
         throw InputError("sun position: azimuth must be finite and elevation within [-90, 90] degrees");
@@ -117,11 +126,19 @@ std::vector<float> sun_visibility(const terrain::HeightGrid& grid, double sun_az
     // Only horizons across the disc change the fraction; the band is widened by 1e-5 rad to
     // cover fast_atan's 1.7e-6 rad error, so the fraction is the same as from the full horizon.
     constexpr double kInf = std::numeric_limits<double>::infinity(), kSlack = 1e-5;
-    const double lo = e - options.sun_radius_rad - kSlack, hi = e + options.sun_radius_rad + kSlack;
+    const double half_band = horizon_above_sun ? std::max(options.sun_radius_rad, kSunHorizonBandRad) : options.sun_radius_rad;
+    const double lo = e - half_band - kSlack, hi = e + half_band + kSlack;
     const double band_lo = lo <= -kPi / 2 ? -kInf : std::tan(lo);
     const double band_hi = hi >= kPi / 2 ? kInf : std::tan(hi);
     std::vector<float> horizon =
         horizon_in_azimuth(grid, geo::azimuth_cw_from_north_to_phi(sun_azimuth_deg), h, band_lo, band_hi);
+    if (horizon_above_sun) {
+        horizon_above_sun->resize(horizon.size());
+        for (std::size_t t = 0; t < horizon.size(); ++t)
+            (*horizon_above_sun)[t] = std::isnan(horizon[t])
+                                          ? horizon[t]
+                                          : float(std::clamp(double(horizon[t]) - e, -kSunHorizonBandRad, kSunHorizonBandRad));
+    }
     for (float& v : horizon)  // NaN (void receiver) stays NaN
         if (!std::isnan(v)) v = float(sun_disc_visible_fraction(v, e, options.sun_radius_rad));
     return horizon;

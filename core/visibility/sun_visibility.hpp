@@ -14,6 +14,11 @@ namespace ts::visibility {
 // horizon line at elevation h (all radians): the circular-segment area over the disc's area.
 double sun_disc_visible_fraction(double horizon_rad, double sun_elevation_rad, double sun_radius_rad);
 
+// The inverse: the horizon above the sun's centre (h - e, radians, within [-r, r]) that leaves
+// `fraction` of the disc visible. What a texel darkened by other shadows (meshes, terrain
+// beyond the grid) is given, so its horizon agrees with its fraction.
+double horizon_above_sun_for_fraction(double fraction, double sun_radius_rad);
+
 // How a renderer computes the sun's visible fraction each frame: `sweep` (SunShadowSweep,
 // sun_sweep.hpp: shadow heights along the sweep lines, built once per grid, much faster) or
 // `exact` (sun_visibility below: the reference).
@@ -21,6 +26,13 @@ enum class SunMethod { sweep, exact };
 // "sweep" | "exact"; anything else throws ts::InputError naming the choices.
 SunMethod parse_sun_method(const std::string& name);
 std::string sun_method_name(SunMethod method);
+
+// How far from the sun's elevation a horizon asked of the sweep is exact (and where it is
+// clamped): a view that interpolates the horizon between texels finds a shadow's edge where
+// the interpolated h - e crosses zero, so both sides of an edge need their true values, not
+// the disc's band alone. 5 degrees: a texel beside a cliff's shadow can be several degrees from
+// the sun on either side.
+inline constexpr double kSunHorizonBandRad = 5.0 * 3.14159265358979323846 / 180.0;
 
 struct SunVisibilityOptions {
     bool curvature = true;             // as HorizonOptions::curvature
@@ -43,7 +55,10 @@ std::vector<float> exact_horizon_in_azimuth(const terrain::HeightGrid& grid, dou
 
 // Visible fraction of the sun disc per receiver texel; NaN for void receivers. The sun is
 // given as the user sees it: azimuth clockwise from north, elevation above the horizon.
+// With `horizon_above_sun`: each texel's horizon elevation less the sun's (radians), exact
+// within kSunHorizonBandRad and clamped to it, as SunShadowSweep::compute gives it.
 std::vector<float> sun_visibility(const terrain::HeightGrid& grid, double sun_azimuth_deg, double sun_elevation_deg,
-                                  const SunVisibilityOptions& options = {});
+                                  const SunVisibilityOptions& options = {},
+                                  std::vector<float>* horizon_above_sun = nullptr);
 
 }  // namespace ts::visibility

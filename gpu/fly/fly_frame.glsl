@@ -7,7 +7,7 @@
 
 layout(std430, set = 0, binding = 0) readonly buffer Frame {
     mat4 view_projection;  // eye-relative metres -> clip (reversed Z, infinite far)
-    vec4 eye;              // xyz: the eye in the grid frame's metres
+    vec4 eye;              // xyz: the eye in the grid frame's metres, w: the sun's angular radius (rad)
     vec4 grid;             // width, height, centre column, haze distance (m; 0 = no haze)
     vec4 sun_direction;    // xyz unit ENU, w: cos of the disc's angular radius
     vec4 sun_radiance;     // rgb radiance inside the disc, w: exposure scale
@@ -31,9 +31,11 @@ layout(std430, set = 0, binding = 3) readonly buffer Radiance { uvec2 radiance[]
 layout(std430, set = 0, binding = 4) readonly buffer Sky { vec4 sky[]; };              // [elevation][azimuth]
 // The aircraft: 3 vertices per triangle, each position (xyz, model metres), normal, colour.
 layout(std430, set = 0, binding = 5) readonly buffer Aircraft { vec4 aircraft[]; };
-// The sun's part of Radiance (what an aircraft's shadow takes away), packed the same way, and
-// in the fourth half the texel's open-sky fraction (core/render/open_sky_fraction.hpp).
-layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec2 terrain_sun[]; };
+// Radiance holds each texel's radiance less the sun's diffuse term; this the term's parts
+// (core/render/texel_sun_split.hpp, core/fly/radiance_pack.hpp): packHalf2x16 of (a.r, a.g),
+// (a.b, open-sky fraction), (n.x, n.y), (h - e, 0), with a = albedo E_sun / pi, n the texel's
+// unit normal (east, north; up implied), h - e its horizon in the sun's azimuth above the sun.
+layout(std430, set = 0, binding = 6) readonly buffer TerrainSun { uvec4 terrain_sun[]; };
 // The aircraft's sphere hierarchy this frame, depth-first (core/blockers/sphere_hierarchy.hpp,
 // FlatSphereNode), two vec4 a node: its bound (eye-relative centre, radius; metres), then (the
 // index past its subtree, 1 for a leaf, the share of its bound's sky cover its leaves keep from

@@ -163,7 +163,7 @@ FlyRenderer::FlyRenderer(const Context& context, const FlyTerrain& terrain, int 
     indices_ = upload(context, indices.data(), indices.size() * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     frame_ = context.create_buffer(sizeof(FlyFrameUniforms), MemoryKind::host_visible);
     radiance_ = zeroed(context, (std::size_t(overview_texels_) + atlas) * 8);
-    sun_radiance_ = zeroed(context, radiance_.size());
+    sun_radiance_ = zeroed(context, 2 * radiance_.size());
     spheres_ = zeroed(context, 16);
     sky_ = zeroed(context, 16);
     aircraft_ = zeroed(context, 16);
@@ -256,7 +256,7 @@ void FlyRenderer::set_tile(int slot, int sx, int sy, std::span<const float> heig
                            std::span<const std::uint32_t> radiance, std::span<const std::uint32_t> sun) {
     if (slot < 0 || slot >= atlas_slots_ || sx > atlas_samples_ || sy > atlas_samples_ ||
         heights.size() != std::size_t(sx) * std::size_t(sy) || radiance.size() != 2 * heights.size() ||
-        sun.size() != radiance.size())
+        sun.size() != 2 * radiance.size())
         throw std::logic_error("FlyRenderer::set_tile: wrong slot or size");
     const std::size_t stride = std::size_t(atlas_samples_);
     const std::size_t base = std::size_t(overview_texels_) + std::size_t(slot) * stride * stride;
@@ -267,7 +267,7 @@ void FlyRenderer::set_tile(int slot, int sx, int sy, std::span<const float> heig
         const std::size_t to = std::size_t(r) * stride, from = std::size_t(r) * std::size_t(sx);
         std::copy_n(heights.data() + from, sx, rows.data() + to);
         std::memcpy(l + 2 * (base + to), radiance.data() + 2 * from, std::size_t(sx) * 8);
-        std::memcpy(s + 2 * (base + to), sun.data() + 2 * from, std::size_t(sx) * 8);
+        std::memcpy(s + 4 * (base + to), sun.data() + 4 * from, std::size_t(sx) * 16);
     }
     copy_into(context_, heights_, base * sizeof(float), rows.data(), rows.size() * sizeof(float));
 }
@@ -278,7 +278,7 @@ void FlyRenderer::set_radiance(std::span<const std::uint32_t> packed) {
 }
 
 void FlyRenderer::set_sun_radiance(std::span<const std::uint32_t> packed) {
-    if (packed.size_bytes() != std::size_t(overview_texels_) * 8)
+    if (packed.size_bytes() != std::size_t(overview_texels_) * 16)
         throw std::logic_error("FlyRenderer::set_sun_radiance: wrong size");
     std::memcpy(sun_radiance_.mapped(), packed.data(), packed.size_bytes());
 }

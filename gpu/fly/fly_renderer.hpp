@@ -76,15 +76,15 @@ public:
     int height() const { return height_; }
     void resize(int width, int height);  // the device must be idle
 
-    // A detail tile into atlas slot `slot`: samples_x x samples_y heights, radiance and sun part
-    // (2 words a sample, as set_radiance / set_sun_radiance), rows of samples_x.
+    // A detail tile into atlas slot `slot`: samples_x x samples_y heights, radiance (2 words a
+    // sample) and sun light (4 words), as set_radiance / set_sun_radiance, rows of samples_x.
     void set_tile(int slot, int samples_x, int samples_y, std::span<const float> heights,
                   std::span<const std::uint32_t> radiance, std::span<const std::uint32_t> sun);
 
-    // Per-texel radiance, 2 words per texel (packHalf2x16 of r,g and of b,0).
+    // Per-texel radiance less the sun's diffuse term, 2 words per texel (core/fly/radiance_pack.hpp).
     void set_radiance(std::span<const std::uint32_t> packed);
-    // The sun's part of that radiance (albedo/pi E_sun max(0, n.s) times the terrain's sun
-    // visibility), packed the same way: what an aircraft's shadow takes away.
+    // That term's parts (render::split_texel_sun), 4 words per texel (fly::pack_sun_light): the
+    // fragments shade the sun from them, and an aircraft's shadow takes it away.
     void set_sun_radiance(std::span<const std::uint32_t> packed);
     // Sky radiance table, [elevation][azimuth] rgb_.
     void set_sky(std::span<const glm::vec4> table);

@@ -13,7 +13,7 @@
 #include "core/light/sky.hpp"
 #include "core/mesh/placement.hpp"
 #include "core/fly/radiance_pack.hpp"
-#include "core/render/diffuse_sun_part.hpp"
+#include "core/render/texel_sun_split.hpp"
 #include "core/terrain/dem_height_grid.hpp"
 #include "core/render/tone_map.hpp"
 #include "core/visibility/far_field_horizons.hpp"
@@ -33,6 +33,7 @@ std::unique_ptr<render::Scene> make_scene(const dem::Dem& dem, const FlySettings
     options.renderer.directions = s.directions;
     options.renderer.bounce = s.bounce;
     options.renderer.sky_light = s.sky_light;
+    options.renderer.keep_sun_horizon = s.pixel_sun_shadows;  // the fragments place shadow edges inside texels
     ProgressBar bar("visibility", std::uint64_t(dem.width) * std::uint64_t(dem.height) * std::uint64_t(s.directions),
                     "rays");
     options.renderer.progress = &bar;
@@ -100,6 +101,7 @@ Flythrough::Flythrough(const dem::DemSource& source, const FlySettings& settings
     co.shading.directions = settings_.directions;
     co.shading.bounce = settings_.bounce;
     co.shading.sky_light = settings_.sky_light;
+    co.shading.sun_horizon = settings_.pixel_sun_shadows;
     co.shading.sky = settings_.sky;
     co.shading.colors = settings_.colors;  // the cache fits it on the overview, as make_scene does
     cache_ = std::make_unique<fly::DetailTileCache>(source, *overview_, *far_, frame_, settings_.lod.patch_quads, co);
@@ -146,14 +148,17 @@ double Flythrough::set_time(light::UtcTime time) {
     const light::Sky& sky = *scene_->last_sky();
     const std::size_t texels = radiance_.rgb.size();
     packed_.resize(2 * texels);
-    packed_sun_.resize(2 * texels);
-    // The sun's part of each texel's radiance is what an aircraft's shadow takes away; with the
-    // texel's open-sky fraction, which scales what it takes of the rest.
-    std::vector<glm::vec3> sun_part;
-    render::diffuse_sun_part(*scene_, sun_, sky, radiance_.rgb, sun_part);
+    packed_sun_.resize(4 * texels);
+    // The sun's diffuse term apart, for the fragments to shade between texels (and what an
+    // aircraft's shadow takes away), with the texel's open-sky fraction, which scales what the
+    // aircraft takes of the rest.
+    render::TexelSunSplit split;
+    render::split_texel_sun(*scene_, sun_, sky, radiance_.rgb, split);
+    const render::NormalField& nf = scene_->state().normals();
     for (std::size_t t = 0; t < texels; ++t) {
-        fly::pack_radiance(radiance_.rgb[t], 0.0f, &packed_[2 * t]);
-        fly::pack_radiance(sun_part[t], open_sky_[t], &packed_sun_[2 * t]);
+        fly::pack_radiance(split.rest[t], 0.0f, &packed_[2 * t]);
+        fly::pack_sun_light(split.sun_albedo[t], open_sky_[t], {nf.x[t], nf.y[t], nf.z[t]},
+                            split.horizon_above_sun[t], &packed_sun_[4 * t]);
     }
     renderer_->set_radiance(packed_);
     renderer_->set_sun_radiance(packed_sun_);
@@ -391,7 +396,7 @@ void Flythrough::prepare(const fly::CameraPose& camera, FlyFrameUniforms& u, Fly
 
     const fly::CameraAxes axes = fly::camera_axes(camera.heading_deg, camera.pitch_deg, camera.roll_deg);
     u.view_projection = glm::mat4(vp);
-    u.eye = glm::vec4(glm::vec3(camera.eye), 0.0f);
+    u.eye = glm::vec4(glm::vec3(camera.eye), float(sun_radius_rad_));
     u.grid = glm::vec4(float(frame_.width()), float(frame_.height()), float(frame_.centre_col()),
                        float(settings_.haze_km * 1000.0));
     u.sun_direction = glm::vec4(sun_dir_, float(sun_cos_radius_));

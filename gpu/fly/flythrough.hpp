@@ -54,6 +54,10 @@ struct FlySettings {
     fly::CdlodOptions lod;
     double haze_km = 250.0;
     double fov_deg = 60.0;
+    // --shadow-detail: true (pixel) places the sun's shadow edges inside texels, where each
+    // fragment's interpolated horizon in the sun's azimuth crosses the sun; false (texel)
+    // blends the texels' visible shares of the disc (texel-wide ramps along the texel lines).
+    bool pixel_sun_shadows = true;
     int width = 960, height = 540;
     // The aircraft's spheres shadow the terrain (sun and sky) and the aircraft itself (sun).
     bool aircraft_shadows = true;

@@ -4,6 +4,8 @@
 // the renderer once, and its worker thread brings requested tiles and stops with it.
 #include "core/fly/detail_tile_cache.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/packing.hpp>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -21,6 +23,8 @@
 #include "core/render/render_scene.hpp"
 #include "core/util/error.hpp"
 #include "core/visibility/far_field_horizons.hpp"
+#include "core/visibility/sun_disc_shared.hpp"
+#include "core/visibility/sun_sweep.hpp"
 
 namespace ts::fly {
 namespace {
@@ -60,6 +64,11 @@ struct Streamed {
     }
 };
 
+struct Lit {
+    double radiance;
+    float open_sky, horizon;
+};
+
 render::SunState sun_of(const Streamed& s) {
     return render::sun_at(render::sun_site(s.overview.points), light::parse_utc_time("2024-06-21T16:00:00Z"));
 }
@@ -79,24 +88,41 @@ TEST(DetailTile, HeightsAreTheDemsTexelsAndNeighboursShareTheirEdge) {
     for (int r = 0; r < west.samples_y(); r += 7)
         for (int c = 0; c < west.samples_x(); c += 5)
             ASSERT_EQ(west.heights()[std::size_t(r) * 257 + std::size_t(c)], whole.at(c, 256 + r));
-    std::vector<glm::vec3> lw, le, sw, se;
-    std::vector<float> ow, oe;
+    std::vector<std::uint32_t> lw, le, sw, se;
     const render::SunState sun = sun_of(s);
-    west.light(sun, lw, sw, ow);
-    east.light(sun, le, se, oe);
+    west.light(sun, lw, sw);
+    east.light(sun, le, se);
+    ASSERT_EQ(lw.size(), 2 * west.heights().size());
+    ASSERT_EQ(sw.size(), 4 * west.heights().size());
+    // A sample's radiance at its centre as the fragments put it together (fly_terrain_frag.glsl).
+    const glm::vec3 s_dir = glm::vec3(render::sun_direction(sun));
+    const double radius = visibility::SunSweepOptions{}.sun_radius_rad;
+    auto lit = [&](const std::vector<std::uint32_t>& l, const std::vector<std::uint32_t>& p, std::size_t i) {
+        const glm::vec2 rg = glm::unpackHalf2x16(l[2 * i]), b0 = glm::unpackHalf2x16(l[2 * i + 1]);
+        const glm::vec2 ar = glm::unpackHalf2x16(p[4 * i]), ab = glm::unpackHalf2x16(p[4 * i + 1]);
+        const glm::vec2 en = glm::unpackHalf2x16(p[4 * i + 2]), h = glm::unpackHalf2x16(p[4 * i + 3]);
+        const glm::vec3 n = glm::normalize(glm::vec3(en, std::sqrt(std::max(0.0f, 1.0f - glm::dot(en, en)))));
+        const double f = visibility::shared::ts_sun_disc_fraction(-double(h.x) / radius);
+        const double sun_term = (ar.x + ar.y + ab.x) * std::max(0.0f, glm::dot(n, s_dir)) * f;
+        return Lit{rg.x + rg.y + b0.x + sun_term, ab.y, h.x};
+    };
     // The shared column: the same heights; radiance from two windows within a few per cent.
-    double worst = 0;
+    double worst = 0, worst_h = 0;
     for (int r = 0; r < west.samples_y(); ++r) {
         const std::size_t a = std::size_t(r) * std::size_t(west.samples_x()) + 256, b = std::size_t(r) * std::size_t(east.samples_x());
         ASSERT_EQ(west.heights()[a], east.heights()[b]);
-        const double la = lw[a].x + lw[a].y + lw[a].z, lb = le[b].x + le[b].y + le[b].z;
-        ASSERT_GT(la, 0.0);
-        worst = std::max(worst, std::abs(la - lb) / la);
-        ASSERT_GE(ow[a], 0.0f);
-        ASSERT_LE(ow[a], 1.001f);
+        const Lit la = lit(lw, sw, a), lb = lit(le, se, b);
+        ASSERT_GT(la.radiance, 0.0);
+        worst = std::max(worst, std::abs(la.radiance - lb.radiance) / la.radiance);
+        worst_h = std::max(worst_h, double(std::abs(la.horizon - lb.horizon)));
+        ASSERT_GE(la.open_sky, 0.0f);
+        ASSERT_LE(la.open_sky, 1.001f);
+        ASSERT_GE(std::abs(la.horizon), 0.0f);
+        ASSERT_LE(std::abs(la.horizon), float(visibility::kSunHorizonBandRad) * 1.001f);
     }
-    std::printf("shared column: largest relative radiance difference %.4f\n", worst);
+    std::printf("shared column: largest relative radiance difference %.4f, horizon %.5f rad\n", worst, worst_h);
     EXPECT_LT(worst, 0.02);
+    EXPECT_LT(worst_h, 0.01);
 }
 
 TEST(DetailTileCache, KeepsWithinItsSlotsAndUploadsEachTileOnce) {
@@ -115,7 +141,7 @@ TEST(DetailTileCache, KeepsWithinItsSlotsAndUploadsEachTileOnce) {
     ASSERT_EQ(up.size(), 3u);
     for (const DetailSlotData& d : up) {
         EXPECT_EQ(d.radiance.size(), 2 * d.heights->size());
-        EXPECT_EQ(d.sun.size(), d.radiance.size());
+        EXPECT_EQ(d.sun.size(), 2 * d.radiance.size());
     }
     EXPECT_TRUE(cache.take_uploads().empty());
     glm::vec2 z;

@@ -67,8 +67,9 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
                    "sky's exact horizons)")
         ->capture_default_str();
     cmd.add_option("--resampling", a.resampling,
-                   "relief/svf/color: between source texels, cubic (Catmull-Rom: crisp where a zoom magnifies its "
-                   "DEM level) or bilinear")
+                   "between source texels (relief/svf/color: the shading; hillshade/multidirectional: the heights), "
+                   "cubic (Catmull-Rom: crisp, no bands along the texel rows where a zoom magnifies its DEM level) or "
+                   "bilinear")
         ->capture_default_str();
     cmd.add_option("--relief-contrast", a.relief_contrast,
                    "relief: the shading's contrast in stops about open flat ground, 0.25..4 (1 = physical; 1.5 for "

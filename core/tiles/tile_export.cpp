@@ -129,6 +129,10 @@ std::string describe_job(const TileJob& job) {
         rendered && s.bounce.bounces > 0 && s.bounce.sun == render::BounceSettings::SunPart::gather
             ? ",\"bounce_sun\":\"gather\""
             : "";
+    // The Horn styles' heights follow --resampling (before, they were bilinear whatever it said:
+    // a set made then is another job).
+    const std::string horn_heights =
+        !s.style->uses_visibility() && s.resampling == Resampling::cubic ? ",\"heights\":\"cubic\"" : "";
     // Everything that changes a tile's bytes (not the zoom range: a resumed run may extend it).
     return std::string("{\"style\":\"") + std::string(s.style->name()) + "\",\"tile_size\":" +
            std::to_string(job.tile_size) + ",\"sun_azimuth\":" + number(s.sun_azimuth_deg) +
@@ -138,7 +142,8 @@ std::string describe_job(const TileJob& job) {
            ",\"halo\":" + std::to_string(s.block_halo_texels) + ",\"far_field\":\"" +
            std::string(far_field_name(s.far_field)) + "\",\"resampling\":\"" + std::string(resampling_name(s.resampling)) +
            "\"" + ",\"sky\":\"" + sky_fingerprint(s.sky) + "\"" + contrast + bias +
-           by_zoom + max_error + dem + colors + insolation + light + bounce + sky_light + bounce_sun + "}\n";
+           by_zoom + max_error + dem + colors + insolation + light + bounce + sky_light + bounce_sun + horn_heights +
+           "}\n";
 }
 
 LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) {
@@ -208,7 +213,7 @@ TileHeights tile_heights(const dem::Dem& dem, const TileJob& job, const TileId& 
     heights_only.style = find_tile_style("hillshade");  // a style shaded from heights
     const ShadeSource source = make_shade_source(dem, heights_only, zs.level, zs.vertical_scale);
     TileScratch scratch;
-    sample_tile_heights(TilePixelMap(dem), source, f, scratch);
+    sample_tile_heights(TilePixelMap(dem), source, f, scratch, job.shading.resampling);
     const double res = pixel_size_m(f.pixel_zoom);
     geo::GeoTransform g;
     g.x0 = pixel_centre_m(f.col0 - 1, f.pixel_zoom) - 0.5 * res, g.dx_col = res, g.dx_row = 0;

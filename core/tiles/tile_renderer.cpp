@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "core/raster/srgb.hpp"
 #include "core/render/tone_map.hpp"
@@ -202,24 +203,31 @@ std::vector<std::uint8_t> encode_data_tile(const TilePixelMap& map, const ShadeS
 
 }  // namespace
 
-void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& sc) {
+void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& sc,
+                         Resampling resampling) {
     const int m = f.size + 2;
     map.locate(f, 1, sc.at);
     const double inv_scale = 1.0 / double(1 << source.level);
     sc.values.resize(std::size_t(m) * m);
+    const bool cubic = resampling == Resampling::cubic && source.width >= 2 && source.height >= 2;
     if (map.separable()) {
-        // The same bilinear sample as below, with the taps of each column and row found once:
+        // The same samples as below, with the taps of each column and row found once:
         // identical numbers, a fraction of the work.
-        struct Tap {
-            int i0, i1;
-            float f;
+        struct Taps {
+            int i[4];    // cubic: the four taps, clamped; bilinear: i[1], i[2]
+            float w[4];  // cubic weights
+            float f;     // bilinear weight of i[2]
         };
         auto taps = [](double v, int n) {
             v = std::clamp(v, 0.0, double(n - 1));
             const int i0 = std::min(int(v), n - 1);
-            return Tap{i0, std::min(i0 + 1, n - 1), float(v - i0)};
+            Taps t{};
+            t.f = float(v - i0);
+            for (int k = 0; k < 4; ++k) t.i[k] = std::clamp(i0 - 1 + k, 0, n - 1);
+            CatmullRom::weights(t.f, t.w);
+            return t;
         };
-        std::vector<Tap> cols(static_cast<std::size_t>(m)), rows(static_cast<std::size_t>(m));
+        std::vector<Taps> cols(static_cast<std::size_t>(m)), rows(static_cast<std::size_t>(m));
         for (int i = 0; i < m; ++i) {
             cols[std::size_t(i)] = taps(sc.at[std::size_t(i)].x * inv_scale - 0.5, source.width);
             rows[std::size_t(i)] = taps(sc.at[std::size_t(i) * m].y * inv_scale - 0.5, source.height);
@@ -227,23 +235,41 @@ void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, con
         const float* v = source.values.data();
         const std::size_t w = std::size_t(source.width);
         for (int j = 0; j < m; ++j) {
-            const Tap r = rows[std::size_t(j)];
-            const float* top = v + std::size_t(r.i0) * w;
-            const float* bottom = v + std::size_t(r.i1) * w;
+            const Taps& r = rows[std::size_t(j)];
+            const float* top = v + std::size_t(r.i[1]) * w;
+            const float* bottom = v + std::size_t(r.i[2]) * w;
             float* out = sc.values.data() + std::size_t(j) * m;
             for (int i = 0; i < m; ++i) {
-                const Tap c = cols[std::size_t(i)];
-                out[i] = (top[c.i0] * (1 - c.f) + top[c.i1] * c.f) * (1 - r.f) +
-                         (bottom[c.i0] * (1 - c.f) + bottom[c.i1] * c.f) * r.f;
+                const Taps& c = cols[std::size_t(i)];
+                const float bilinear = (top[c.i[1]] * (1 - c.f) + top[c.i[2]] * c.f) * (1 - r.f) +
+                                       (bottom[c.i[1]] * (1 - c.f) + bottom[c.i[2]] * c.f) * r.f;
+                float z = bilinear;
+                if (cubic) {
+                    float sum = 0;
+                    for (int b = 0; b < 4; ++b) {
+                        const float* line = v + std::size_t(r.i[b]) * w;
+                        sum += r.w[b] * (c.w[0] * line[c.i[0]] + c.w[1] * line[c.i[1]] + c.w[2] * line[c.i[2]] +
+                                         c.w[3] * line[c.i[3]]);
+                    }
+                    if (!std::isnan(sum)) z = sum;
+                }
+                out[i] = z;
             }
         }
         return;
     }
     const Bilinear sample{source};
+    const CatmullRom smooth{source};
     for (std::size_t k = 0; k < sc.values.size(); ++k) {
         const glm::dvec2 p = sc.at[k];
         // Off the CRS's domain: any height (the pixel is transparent and its neighbours too).
-        sc.values[k] = std::isfinite(p.x) ? sample(p.x * inv_scale - 0.5, p.y * inv_scale - 0.5, 0) : 0.0f;
+        if (!std::isfinite(p.x)) {
+            sc.values[k] = 0.0f;
+            continue;
+        }
+        const double x = p.x * inv_scale - 0.5, y = p.y * inv_scale - 0.5;
+        const float z = cubic ? smooth(x, y, 0) : std::numeric_limits<float>::quiet_NaN();
+        sc.values[k] = std::isnan(z) ? sample(x, y, 0) : z;
     }
 }
 
@@ -254,7 +280,7 @@ void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileS
     const int halo = horn ? 1 : 0;
     const int n = f.size, m = n + 2 * halo;
     if (horn)
-        sample_tile_heights(map, source, f, sc);
+        sample_tile_heights(map, source, f, sc, shading.resampling);
     else
         map.locate(f, halo, sc.at);
     // Level-0 edge coordinates -> the source level's texel-centre coordinates.

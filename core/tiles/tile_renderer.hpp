@@ -30,8 +30,13 @@ struct TileScratch {
 };
 
 // The heights a Horn style shades the tile from: (size + 2)^2 floats with the 1-px halo, into
-// scratch.values (scratch.at holds the pixels' DEM positions). render_tile calls it.
-void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& scratch);
+// scratch.values (scratch.at holds the pixels' DEM positions). render_tile calls it. Cubic
+// (Catmull-Rom, where all 16 taps have a height; bilinear beside voids) keeps the surface's
+// slope continuous across texel lines: where a zoom magnifies its level (a 1-degree grid near
+// the poles, any DEM past its native zoom) bilinear heights give each texel row its own constant
+// slope, and Horn drew them as bands.
+void sample_tile_heights(const TilePixelMap& map, const ShadeSource& source, const TileFrame& f, TileScratch& scratch,
+                         Resampling resampling = Resampling::cubic);
 
 // A data style's tile (TileStyle::data_tile) comes out in `out.encoded`, `lightable` its encoding.
 void render_tile(const TilePixelMap& map, const ShadeSource& source, const TileShading& shading, const TileFrame& f,

@@ -95,6 +95,16 @@ void expect_agreement(const ts::terrain::HeightGrid& grid, const std::string& na
 }
 
 
+// A plateau kPlateauTop high east of column kPlateauEdge over flat ground.
+constexpr int kPlateauWidth = 120, kPlateauHeight = 40, kPlateauEdge = 90;
+constexpr double kPlateauSpacing = 10.0, kPlateauTop = 50.0;
+std::vector<float> plateau_heights() {
+    std::vector<float> z(std::size_t(kPlateauWidth) * kPlateauHeight, 0.0f);
+    for (int r = 0; r < kPlateauHeight; ++r)
+        for (int c = kPlateauEdge; c < kPlateauWidth; ++c) z[std::size_t(r) * kPlateauWidth + c] = float(kPlateauTop);
+    return z;
+}
+
 }  // namespace
 
 // Real DEMs (projected-like and geographic, mountains and equatorial relief): the masks agree
@@ -126,11 +136,9 @@ TEST(SunSweep, AgreesWithExactWhereRowSpacingVaries) {
 // A plateau of height H east of column x0 over flat ground, sun from the east: ground at
 // distance d from the edge sees it at tan = H / d, so the fraction is known in closed form.
 TEST(SunSweep, PlateauEdgeCastsTheAnalyticShadow) {
-    const int w = 120, h = 40, x0 = 90;
-    const double dx = 10.0, height = 50.0;
-    std::vector<float> z(std::size_t(w) * h, 0.0f);
-    for (int r = 0; r < h; ++r)
-        for (int c = x0; c < w; ++c) z[std::size_t(r) * w + c] = float(height);
+    const int w = kPlateauWidth, h = kPlateauHeight, x0 = kPlateauEdge;
+    const double dx = kPlateauSpacing, height = kPlateauTop;
+    const std::vector<float> z = plateau_heights();
     const auto grid = ts::terrain::HeightGrid::uniform(w, h, z, dx, dx);
     SunSweepOptions so;
     so.curvature = false;
@@ -317,11 +325,9 @@ TEST(SunSweep, TheHorizonItGivesPlacesShadowEdgesAsTheExactOne) {
 // A plateau's edge: ground at distance d sees its top at atan(H / d); the horizon given is that
 // less the sun's elevation where the ground is shaded or near the edge.
 TEST(SunSweep, TheHorizonItGivesBesideAPlateauIsAnalytic) {
-    const int w = 120, h = 40, x0 = 90;
-    const double dx = 10.0, height = 50.0;
-    std::vector<float> z(std::size_t(w) * h, 0.0f);
-    for (int r = 0; r < h; ++r)
-        for (int c = x0; c < w; ++c) z[std::size_t(r) * w + c] = float(height);
+    const int w = kPlateauWidth, h = kPlateauHeight, x0 = kPlateauEdge;
+    const double dx = kPlateauSpacing, height = kPlateauTop;
+    const std::vector<float> z = plateau_heights();
     const auto grid = ts::terrain::HeightGrid::uniform(w, h, z, dx, dx);
     SunSweepOptions so;
     so.curvature = false;

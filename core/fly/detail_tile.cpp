@@ -123,18 +123,16 @@ glm::vec2 DetailTile::node_z(int level, int ix, int iy) const {
 void DetailTile::light(const render::SunState& sun, std::vector<std::uint32_t>& radiance,
                        std::vector<std::uint32_t>& sun_light) {
     scene_->render(sun, image_);
-    render::TexelSunSplit split;  // per window texel, for this frame only
-    render::split_texel_sun(*scene_, sun, *scene_->last_sky(), image_.rgb, split);
-    const render::NormalField& nf = scene_->state().normals();
+    const render::TexelSunSplitter split(*scene_, sun, *scene_->last_sky());
     const std::size_t n = std::size_t(samples_x_) * std::size_t(samples_y_);
     radiance.resize(2 * n), sun_light.resize(4 * n);
     for (int r = 0; r < samples_y_; ++r)
         for (int c = 0; c < samples_x_; ++c) {
             const std::size_t from = window_->index(col0_ - window_col0_ + c, row0_ - window_row0_ + r);
             const std::size_t to = std::size_t(r) * std::size_t(samples_x_) + std::size_t(c);
-            pack_radiance(split.rest[from], 0.0f, &radiance[2 * to]);
-            pack_sun_light(split.sun_albedo[from], open_sky_[from], {nf.x[from], nf.y[from], nf.z[from]},
-                           split.horizon_above_sun[from], &sun_light[4 * to]);
+            const render::TexelSunLight l = split(from, image_.rgb[from]);
+            pack_radiance(l.rest, 0.0f, &radiance[2 * to]);
+            pack_sun_light(l.sun_albedo, open_sky_[from], l.normal, l.horizon_above_sun, &sun_light[4 * to]);
         }
 }
 

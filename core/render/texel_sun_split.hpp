@@ -10,7 +10,7 @@
 // and evaluates the rest per pixel: a shadow's edge falls where the interpolated horizon crosses
 // the sun, inside the texels, rather than on a texel-wide ramp of blended radiance. At a texel
 // centre both sides agree; rest keeps the sky's, the bounce's and the specular terms.
-#include <span>
+#include <cstddef>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -20,17 +20,33 @@
 
 namespace ts::render {
 
-struct TexelSunSplit {
-    std::vector<glm::vec3> rest;        // the radiance less the sun's diffuse term
-    std::vector<glm::vec3> sun_albedo;  // a = albedo E_sun / pi
+// One texel's radiance, split.
+struct TexelSunLight {
+    glm::vec3 rest{0.0f};        // the radiance less the sun's diffuse term
+    glm::vec3 sun_albedo{0.0f};  // a = albedo E_sun / pi
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
     // h - e, radians, within visibility::kSunHorizonBandRad: the frame's sun_horizon() when the
     // scene keeps it (RendererOptions::keep_sun_horizon), else the one its visible fraction
     // implies (within the disc's radius). +band over voids and with the sun down.
-    std::vector<float> horizon_above_sun;
+    float horizon_above_sun = 0.0f;
 };
 
-// `radiance`: the frame the scene rendered last for `sun` under `sky` (its grid's texels).
-void split_texel_sun(const Scene& scene, const SunState& sun, const light::Sky& sky,
-                     std::span<const glm::vec3> radiance, TexelSunSplit& out);
+// Splits the texels of the frame the scene rendered last for `sun` under `sky`, one at a time,
+// so a caller splits only the texels it keeps (a detail tile: its samples, not its window's halo)
+// and packs them as it goes. The scene must outlive it and not render another frame meanwhile.
+class TexelSunSplitter {
+public:
+    TexelSunSplitter(const Scene& scene, const SunState& sun, const light::Sky& sky);
+    // `radiance`: the frame's radiance at texel `t` of the scene's grid.
+    TexelSunLight operator()(std::size_t t, glm::vec3 radiance) const;
+
+private:
+    const MaterialRaster& materials_;
+    const NormalField& normals_;
+    const std::vector<float>& sun_vis_;
+    const std::vector<float>& horizon_;
+    glm::vec3 sun_dir_, e_over_pi_;
+    double sun_radius_rad_;
+};
 
 }  // namespace ts::render

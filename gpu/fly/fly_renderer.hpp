@@ -29,7 +29,7 @@ namespace ts::gpu {
 // The Frame block of gpu/fly/fly_frame.glsl, field by field (std430: mat4 then vec4s).
 struct FlyFrameUniforms {
     glm::mat4 view_projection{1.0f};
-    glm::vec4 eye{0.0f};
+    glm::vec4 eye{0.0f};  // xyz: the eye (grid-frame metres), w: the sun's angular radius (rad)
     glm::vec4 grid{0.0f};
     glm::vec4 sun_direction{0.0f};
     glm::vec4 sun_radiance{0.0f};

@@ -152,13 +152,11 @@ double Flythrough::set_time(light::UtcTime time) {
     // The sun's diffuse term apart, for the fragments to shade between texels (and what an
     // aircraft's shadow takes away), with the texel's open-sky fraction, which scales what the
     // aircraft takes of the rest.
-    render::TexelSunSplit split;
-    render::split_texel_sun(*scene_, sun_, sky, radiance_.rgb, split);
-    const render::NormalField& nf = scene_->state().normals();
+    const render::TexelSunSplitter split(*scene_, sun_, sky);
     for (std::size_t t = 0; t < texels; ++t) {
-        fly::pack_radiance(split.rest[t], 0.0f, &packed_[2 * t]);
-        fly::pack_sun_light(split.sun_albedo[t], open_sky_[t], {nf.x[t], nf.y[t], nf.z[t]},
-                            split.horizon_above_sun[t], &packed_sun_[4 * t]);
+        const render::TexelSunLight l = split(t, radiance_.rgb[t]);
+        fly::pack_radiance(l.rest, 0.0f, &packed_[2 * t]);
+        fly::pack_sun_light(l.sun_albedo, open_sky_[t], l.normal, l.horizon_above_sun, &packed_sun_[4 * t]);
     }
     renderer_->set_radiance(packed_);
     renderer_->set_sun_radiance(packed_sun_);

@@ -105,6 +105,19 @@ std::vector<float> plateau_heights() {
     return z;
 }
 
+SunSweepOptions without_curvature() {
+    SunSweepOptions so;
+    so.curvature = false;
+    return so;
+}
+
+// The plateau's heights, its grid and a sweep over it without curvature (the analytic shadow has none).
+struct Plateau {
+    std::vector<float> z = plateau_heights();
+    ts::terrain::HeightGrid grid = ts::terrain::HeightGrid::uniform(kPlateauWidth, kPlateauHeight, z, kPlateauSpacing, kPlateauSpacing);
+    SunShadowSweep sweep{grid, without_curvature()};
+};
+
 }  // namespace
 
 // Real DEMs (projected-like and geographic, mountains and equatorial relief): the masks agree
@@ -138,17 +151,14 @@ TEST(SunSweep, AgreesWithExactWhereRowSpacingVaries) {
 TEST(SunSweep, PlateauEdgeCastsTheAnalyticShadow) {
     const int w = kPlateauWidth, h = kPlateauHeight, x0 = kPlateauEdge;
     const double dx = kPlateauSpacing, height = kPlateauTop;
-    const std::vector<float> z = plateau_heights();
-    const auto grid = ts::terrain::HeightGrid::uniform(w, h, z, dx, dx);
-    SunSweepOptions so;
-    so.curvature = false;
-    SunShadowSweep sweep(grid, so);
+    Plateau plateau;
+    SunShadowSweep& sweep = plateau.sweep;
     for (double el : {3.0, 10.0, 30.0}) {
         const std::vector<float> v = sweep.compute(90.0, el);
         for (int r = 0; r < h; ++r)
             for (int c = 0; c + 1 < x0; ++c) {
                 const double horizon = std::atan(height / ((x0 - c) * dx));
-                const double want = sun_disc_visible_fraction(horizon, radians(el), so.sun_radius_rad);
+                const double want = sun_disc_visible_fraction(horizon, radians(el), sweep.options().sun_radius_rad);
                 ASSERT_NEAR(v[std::size_t(r) * w + c], want, 1e-3) << "el " << el << " col " << c << " row " << r;
             }
     }
@@ -325,13 +335,10 @@ TEST(SunSweep, TheHorizonItGivesPlacesShadowEdgesAsTheExactOne) {
 // A plateau's edge: ground at distance d sees its top at atan(H / d); the horizon given is that
 // less the sun's elevation where the ground is shaded or near the edge.
 TEST(SunSweep, TheHorizonItGivesBesideAPlateauIsAnalytic) {
-    const int w = kPlateauWidth, h = kPlateauHeight, x0 = kPlateauEdge;
+    const int w = kPlateauWidth, x0 = kPlateauEdge;
     const double dx = kPlateauSpacing, height = kPlateauTop;
-    const std::vector<float> z = plateau_heights();
-    const auto grid = ts::terrain::HeightGrid::uniform(w, h, z, dx, dx);
-    SunSweepOptions so;
-    so.curvature = false;
-    SunShadowSweep sweep(grid, so);
+    Plateau plateau;
+    SunShadowSweep& sweep = plateau.sweep;
     const double el = 10.0, e = radians(el);
     std::vector<float> v, rel;
     sweep.compute(90.0, el, v, &rel);

@@ -322,55 +322,76 @@ export function texelColor(tile, light, exposure) {
   return [r, g, b];
 }
 
-// The filmic curve and sRGB encoding of an exposed channel value (the twin of srgb8_code,
-// core/render/tone_map.hpp: ts_filmic and ts_srgb_oetf of core/raster/display_shared.h), in
-// float as the C++: the smallest value of each code found once by bisection, then tabulated, so
-// a pixel costs a table look-up instead of a pow.
+// The display transform of a pixel of exposed light (the twin of Srgb8Encoder::pixel,
+// core/render/tone_map.hpp: ts_display_gain and ts_srgb_oetf of core/raster/display_shared.h),
+// in float as the C++: the filmic curve's gain at the largest channel scales all three alike,
+// so a colour keeps its chromaticity (beyond the curve's white it turns white); then each
+// display-linear value's sRGB code, the smallest value of each code found once by bisection and
+// tabulated, so a channel costs a table look-up instead of a pow.
 const f32 = Math.fround;
-function srgb8Code(x) {
-  x = Math.max(f32(x), 0);
-  let y = f32(f32(x * f32(f32(f32(2.51) * x) + f32(0.03))) / f32(f32(x * f32(f32(f32(2.43) * x) + f32(0.59))) + f32(0.14)));
-  y = Math.min(1, Math.max(0, y));
+function filmicGain(m) {
+  m = Math.max(f32(m), 0);
+  if (m >= 8) return f32(1 / m);
+  const g = f32(f32(f32(f32(2.51) * m) + f32(0.03)) / f32(f32(m * f32(f32(f32(2.43) * m) + f32(0.59))) + f32(0.14)));
+  return f32(m * g) > 1 ? f32(1 / m) : g;
+}
+function srgb8Code(y) {
+  y = Math.min(1, Math.max(0, f32(y)));
   const v = y <= 0.0031308 ? f32(12.92 * y) : f32(f32(1.055 * f32(Math.pow(y, 1 / 2.4))) - f32(0.055));
   return Math.round(f32(255 * v));
 }
-const FILMIC_UP = (() => {
-  const up = new Float64Array(256);  // up[k]: the smallest x with code >= k
+const OETF_UP = (() => {
+  const up = new Float64Array(256);  // up[k]: the smallest display-linear value with code >= k
   for (let k = 1; k <= 255; ++k) {
-    let lo = 0, hi = 64;
+    let lo = 0, hi = 1;
     for (let it = 0; it < 60; ++it) { const m = 0.5 * (lo + hi); if (srgb8Code(m) >= k) hi = m; else lo = m; }
     up[k] = hi;
   }
   return up;
 })();
-// The code at each of FILMIC_BINS equal steps of x in [0, FILMIC_TOP) and the x inside the
-// step where the code goes up (a step holds at most one change: checked when built, else
-// filmicCode falls back to bisection).
-const FILMIC_TOP = 16, FILMIC_BINS = 1 << 16;
-const FILMIC_TABLE = (() => {
-  const code = new Uint8Array(FILMIC_BINS), step = new Float64Array(FILMIC_BINS).fill(Infinity);
+// The code at each of OETF_BINS equal steps of [0, 1) and the value inside the step where the
+// code goes up (a step holds at most one change: checked when built, else oetfCode falls back
+// to bisection).
+const OETF_BINS = 1 << 16;
+const OETF_TABLE = (() => {
+  const code = new Uint8Array(OETF_BINS), step = new Float64Array(OETF_BINS).fill(Infinity);
   let k = 1;
-  for (let b = 0; b < FILMIC_BINS; ++b) {
-    const start = b * FILMIC_TOP / FILMIC_BINS, end = (b + 1) * FILMIC_TOP / FILMIC_BINS;
-    while (k <= 255 && FILMIC_UP[k] <= start) ++k;
+  for (let b = 0; b < OETF_BINS; ++b) {
+    const start = b / OETF_BINS, end = (b + 1) / OETF_BINS;
+    while (k <= 255 && OETF_UP[k] <= start) ++k;
     code[b] = k - 1;
-    if (k <= 255 && FILMIC_UP[k] < end) {
-      if (k + 1 <= 255 && FILMIC_UP[k + 1] < end) return null;
-      step[b] = FILMIC_UP[k];
+    if (k <= 255 && OETF_UP[k] < end) {
+      if (k + 1 <= 255 && OETF_UP[k + 1] < end) return null;
+      step[b] = OETF_UP[k];
     }
   }
   return {code, step};
 })();
-function filmicCode(x) {
-  if (!(x >= FILMIC_UP[1])) return 0;
-  if (x >= FILMIC_UP[255]) return 255;
-  if (FILMIC_TABLE) {
-    const b = Math.floor(x * (FILMIC_BINS / FILMIC_TOP));
-    return FILMIC_TABLE.code[b] + (x >= FILMIC_TABLE.step[b] ? 1 : 0);
+function oetfCode(y) {
+  if (!(y >= OETF_UP[1])) return 0;
+  if (y >= OETF_UP[255]) return 255;
+  if (OETF_TABLE) {
+    const b = Math.floor(y * OETF_BINS);
+    return OETF_TABLE.code[b] + (y >= OETF_TABLE.step[b] ? 1 : 0);
   }
-  let lo = 1, hi = 255;  // up[lo] <= x; find the largest such k
-  while (hi - lo > 1) { const m = (lo + hi) >> 1; if (FILMIC_UP[m] <= x) lo = m; else hi = m; }
+  let lo = 1, hi = 255;  // up[lo] <= y; find the largest such k
+  while (hi - lo > 1) { const m = (lo + hi) >> 1; if (OETF_UP[m] <= y) lo = m; else hi = m; }
   return lo;
+}
+// The curve's white (TS_FILMIC_WHITE): beyond it a pixel is mixed towards white by 1 - white / m.
+const FILMIC_WHITE = f32(7.2416563);
+function displayChannel(c, gain, whitening) {
+  const v = Math.min(f32(c * gain), 1);
+  return f32(v + f32(f32(1 - v) * whitening));
+}
+// The RGB codes of an exposed pixel (finite channels) into out[o .. o + 2].
+function displayCodes(r, g, b, out, o) {
+  r = Math.max(f32(r), 0), g = Math.max(f32(g), 0), b = Math.max(f32(b), 0);
+  const m = Math.max(r, g, b), gain = filmicGain(m);
+  const whitening = Math.max(f32(1 - f32(FILMIC_WHITE / Math.max(m, FILMIC_WHITE))), 0);
+  out[o] = oetfCode(displayChannel(r, gain, whitening));
+  out[o + 1] = oetfCode(displayChannel(g, gain, whitening));
+  out[o + 2] = oetfCode(displayChannel(b, gain, whitening));
 }
 
 // Catmull-Rom (a = -0.5) weights at t, as the C++ tiles' CatmullRom.
@@ -519,7 +540,7 @@ function relightColors(tile, light, out, exposure) {
     const [r, g, b] = texels.map((t) => resampleToPixels(tile, t));
     for (let k = 0, o = 0; k < r.length; ++k, o += 4) {
       if (Number.isNaN(r[k] + g[k] + b[k])) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
-      out[o] = filmicCode(r[k]), out[o + 1] = filmicCode(g[k]), out[o + 2] = filmicCode(b[k]);
+      displayCodes(r[k], g[k], b[k], out, o);
       out[o + 3] = 255;
     }
     return out;
@@ -540,7 +561,8 @@ function relightColors(tile, light, out, exposure) {
       const y = w0 * ag[a0 + i] + w1 * ag[a1 + i] + w2 * ag[a2 + i] + w3 * ag[a3 + i];
       const z = w0 * ab[a0 + i] + w1 * ab[a1 + i] + w2 * ab[a2 + i] + w3 * ab[a3 + i];
       if (x !== x || y !== y || z !== z) { out[o] = out[o + 1] = out[o + 2] = out[o + 3] = 0; continue; }
-      out[o] = filmicCode(x), out[o + 1] = filmicCode(y), out[o + 2] = filmicCode(z), out[o + 3] = 255;
+      displayCodes(x, y, z, out, o);
+      out[o + 3] = 255;
     }
   }
   return out;

@@ -7,6 +7,7 @@
 namespace ts::raster::shared {
 using std::clamp;
 using std::max;
+using std::min;
 using std::pow;
 #include "core/raster/display_shared.h"
 }  // namespace ts::raster::shared

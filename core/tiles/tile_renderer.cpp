@@ -107,8 +107,14 @@ void shade_pixels(const Sampler& sample, int channels, bool filmic, const TileSc
         const double x = level_x(p.x), y = level_x(p.y);
         const float rgb[3] = {sample(x, y, 0), sample(x, y, 1), sample(x, y, 2)};
         if (std::isnan(rgb[0] + rgb[1] + rgb[2])) continue;  // next to texels outside the terrain
-        for (int c = 0; c < 3; ++c) out.pixels[4 * k + std::size_t(c)] = filmic ? film(rgb[c]) : plain(rgb[c]);
-        out.pixels[4 * k + 3] = 255;
+        std::uint8_t* o = &out.pixels[4 * k];
+        if (filmic) {
+            const std::array<std::uint8_t, 3> code = film.pixel(glm::vec3(rgb[0], rgb[1], rgb[2]));
+            o[0] = code[0], o[1] = code[1], o[2] = code[2];
+        } else {
+            for (int c = 0; c < 3; ++c) o[c] = plain(rgb[c]);
+        }
+        o[3] = 255;
     }
 }
 

@@ -70,10 +70,3 @@ vec3 sky_radiance(vec3 dir) {
     vec3 bottom = mix(sky[e1 * na + a0].rgb, sky[e1 * na + a1].rgb, fu);
     return mix(top, bottom, fv);
 }
-
-// The display transform of every 8-bit picture (core/raster/display_shared.h), per channel, on
-// exposed radiance.
-vec3 display_code(vec3 exposed) {
-    return vec3(ts_srgb_oetf(ts_filmic(exposed.r)), ts_srgb_oetf(ts_filmic(exposed.g)),
-                ts_srgb_oetf(ts_filmic(exposed.b)));
-}

@@ -137,5 +137,6 @@ void main() {
     if (n.z < 0.0) n = -n;
     if (frame.aircraft_bound.w > 0.0) l = aircraft_shadowed(l, l_sun, sun.a_open.a, v_rel, n);
     l = l * v_transmittance + v_haze * (1.0 - v_transmittance);
-    out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
+    // The display transform of every 8-bit picture (core/raster/display_shared.h).
+    out_color = vec4(ts_display(l * frame.sun_radiance.w), 1.0);
 }

@@ -64,5 +64,5 @@ void main() {
     vec3 e_sun = frame.sun_radiance.rgb * sun_solid_angle * cos_s * frame.aircraft_light.x * self_sun;
     float self_sky = frame.aircraft_shadow.w > 0.0 ? (gl_FrontFacing ? v_self_sky.x : v_self_sky.y) : 1.0;
     vec3 l = v_color / 3.14159265 * (max(e_sky, vec3(0.0)) * self_sky + e_sun);
-    out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
+    out_color = vec4(ts_display(l * frame.sun_radiance.w), 1.0);
 }

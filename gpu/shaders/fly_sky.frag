@@ -12,5 +12,5 @@ void main() {
                          v_ndc.y * frame.camera_up.w * frame.camera_up.xyz);
     vec3 l = sky_radiance(dir);
     if (dot(dir, frame.sun_direction.xyz) > frame.sun_direction.w) l += frame.sun_radiance.rgb;
-    out_color = vec4(display_code(l * frame.sun_radiance.w), 1.0);
+    out_color = vec4(ts_display(l * frame.sun_radiance.w), 1.0);
 }

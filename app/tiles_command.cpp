@@ -115,6 +115,10 @@ void run_tiles(const TilesCommandArgs& a) {
     const std::string job_text = tiles::describe_job(job);
     const tiles::TileSetInfo info =
         tile_set_info(a.name, a.attribution, a.dem.files, dem, job, tile_set_legend(a.tiles, job));
+    if (a.attribution.empty() && dem.credit.empty())
+        std::fprintf(stderr,
+                     "terrashade: note: the DEM does not say who made it, so the maps credit its file name; "
+                     "credit its source with --attribution (e.g. 'elevation data: NOAA ETOPO1')\n");
     // A lightable set's sky tables and site, for the reader that relights it.
     const std::string lightable = job.shading.style->data_tile() ? tiles::lightable_json(dem, job.shading) : "";
     std::unique_ptr<tiles::TileSink> sink;
@@ -196,8 +200,9 @@ void add_tiles_command(CLI::App& root) {
                     "The tile set's name in its MBTiles metadata, or its tiles.json and viewer page (default: the DEM "
                     "file's name and the style)");
     cmd->add_option("--attribution", a->attribution,
-                    "Who made the data, shown on maps of the tiles (MBTiles metadata, tiles.json; may hold HTML links; "
-                    "default: 'elevation data: ' and the DEM file names: credit the DEM's source here)");
+                    "Who made the data, shown on maps of the tiles (MBTiles metadata, tiles.json, the viewer; may hold "
+                    "HTML links; default: 'elevation data: ' and the source the DEM files record (GeoTIFF copyright, "
+                    "Copernicus or SRTM metadata), else their names, with a note)");
     cmd->add_option("--debug-heights", a->debug_heights,
                     "Also write the heights tile Z/X/Y is shaded from (1-px halo) as Z-X-Y-heights.tif beside the "
                     "tiles, for checking against gdaldem");

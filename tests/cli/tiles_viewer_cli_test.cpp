@@ -212,3 +212,21 @@ TEST(TilesViewer, ResumeAndOverwriteKeepTheViewerTrueAndAUsersPageSafe) {
     EXPECT_EQ(bytes_of(d / "site" / "index.html"), "my page");
     EXPECT_FALSE(fs::exists(d / "site" / "10"));
 }
+
+// A DEM that does not say who made it (the shared ETOPO1 GeoTIFF) is credited by its file
+// name, with a note that says how to credit its source; --attribution silences the note.
+const std::string kUncreditedDem = ts::cli_test::kSharedDems + "etopo1_global_1deg.tif";
+
+TEST(TilesViewer, AnUncreditedDemIsCreditedByItsNameWithANote) {
+    const fs::path d = temp_dir("viewer_uncredited");
+    const std::string base = quote(terrashade()) + " tiles " + quote(kUncreditedDem) + " --zoom 0 --style hillshade";
+    const auto r = run(base + " --out " + quote((d / "named").string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("does not say who made it"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--attribution"), std::string::npos) << r.err;
+    EXPECT_EQ(tilejson(d / "named").at("attribution"), "elevation data: etopo1_global_1deg.tif");
+    const auto given = run(base + " --attribution 'ETOPO1: NOAA NCEI' --out " + quote((d / "given").string()));
+    ASSERT_EQ(given.exit_code, 0) << given.err;
+    EXPECT_EQ(given.err.find("does not say who made it"), std::string::npos) << given.err;
+    EXPECT_EQ(tilejson(d / "given").at("attribution"), "ETOPO1: NOAA NCEI");
+}

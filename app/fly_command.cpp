@@ -428,6 +428,7 @@ void add_fly_command(CLI::App& root) {
     cmd->footer(kKeys);
     add_dem_input_options(*cmd, args->dem);
     add_time_option(*cmd, args->time);  // [ and ] change it in the window
+    cmd->get_option("--time")->capture_default_str();
     add_sky_option(*cmd, args->sky);
     add_colors_options(*cmd, args->colors);
     cmd->add_option("--size", args->size, "window or frame size WIDTHxHEIGHT")->capture_default_str();
@@ -459,7 +460,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--frames", args->frames, "render N >= 1 frames of the path offscreen instead of a window (needs --out)")
         ->each([a = args.get()](const std::string&) { a->frames_given = true; });
     cmd->add_option("--exit-after", args->exit_after, "close the window after N frames (scripts and tests; 0 = never)");
-    cmd->add_option("--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
+    cmd->add_option("-o,--out", args->out, "directory for --frames (frame_NNNN.png, frames.csv) and screenshots");
     cmd->add_option("--record", args->record, "where K writes the recorded flight (CSV)")->capture_default_str();
     add_directions_option(*cmd, args->directions, &args->directions_given);  // once per DEM
     add_bounce_options(*cmd, args->bounce);
@@ -493,7 +494,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--overview-level", args->overview_level,
                     "streamed DEMs: the overview keeps every 2^L-th texel (0: the finest that fits a quarter of the budget)")
         ->capture_default_str();
-    add_verbose_flag(*cmd, args->verbose);
+    add_verbose_flag(*cmd, args->verbose, "the aircraft mesh's assumed forward axis");
     cmd->callback([args] { run_fly(*args); });
 }
 

@@ -259,7 +259,7 @@ void add_insolation_command(CLI::App& root) {
                     "Spacing of the latitude bands of the sun tables, degrees (each texel takes the nearest)")
         ->capture_default_str()
         ->check(within(0.001, 5.0));
-    cmd->add_option("--out", o->out,
+    cmd->add_option("-o,--out", o->out,
                     "Float32 Cloud-Optimized GeoTIFF, bands described with quantity, period and unit")->required();
     cmd->add_option("--quicklook", o->quicklook, "PNG of the global irradiation with a colour ramp and legend");
     cmd->add_option("--materials", o->materials,

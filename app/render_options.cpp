@@ -244,10 +244,14 @@ void print_stages(const RenderArgs& a, const render::Scene& scene) {
     if (const render::MeshView* mv = scene.mesh_view())
         std::printf("meshes cover %zu pixels of the view\n", mv->covered_pixels());
     if (!a.device.verbose) return;
-    for (const visibility::VisibilityStage& s : scene.state().visibility_stages())
+    bool blockers_on_device = false;
+    for (const visibility::VisibilityStage& s : scene.state().visibility_stages()) {
         std::printf("stage: %s on %s, %.3f s\n", s.label.c_str(), s.path.c_str(), s.seconds);
+        blockers_on_device |= s.label.rfind("sphere blockers", 0) == 0 && s.path != "cpu";
+    }
     if (!scene.blockers().empty() && scene.state().visibility_path() != "cpu")
-        std::printf("stage: the mesh blockers' log-SH and sun shadows are computed on the CPU (no device kernel yet)\n");
+        std::printf("stage: the mesh blockers' %s computed on the CPU (docs/gpu.md)\n",
+                    blockers_on_device ? "sun shadows are" : "log-SH and sun shadows are");
 }
 
 render::ReliefContrast parse_relief_contrast(const std::string& text) {

@@ -50,6 +50,7 @@ struct VisibilityOptions {
     float log_eps = visibility::kDefaultVisibilityLogEps;
     bool no_curvature = false;
     double max_error = 0;  // --max-error: svf RMSE bound; 0 = the given settings
+    bool directions_given = false, near_field_given = false;  // what --max-error would override
     std::string svf, sky_visible, horizons, sh, log_sh;
     DeviceArgs device;
 };
@@ -128,6 +129,9 @@ void run_visibility(VisibilityOptions& o) {
     o.horizon.curvature = !o.no_curvature;
     if (o.max_error > 0 && o.horizon.method != visibility::HorizonMethod::exact)
         throw InputError("--max-error chooses the exact method's settings; drop --method " + o.method);
+    if (o.max_error > 0 && (o.directions_given || o.near_field_given))
+        throw InputError(std::string("--max-error chooses ") +
+                         (o.directions_given ? "--directions" : "--exact-near-field") + " itself; drop one of them");
     const sh::ExpMethod exp_method = sh::parse_exp_method(o.exp_method);
     if ((!o.sh.empty() || !o.log_sh.empty()) && o.horizon.directions < 4)
         throw InputError("--sh/--log-sh: need at least 4 --directions");
@@ -247,7 +251,8 @@ void add_visibility_command(CLI::App& root) {
     cmd->add_option("--directions", o->horizon.directions,
                     "Azimuths D, evenly spaced (--horizons bands: clockwise from north, from the smallest azimuth)")
         ->capture_default_str()
-        ->check(within(1, 4096));
+        ->check(within(1, 4096))
+        ->each([o](const std::string&) { o->directions_given = true; });
     cmd->add_option("--method", o->method,
                     "exact: convex-hull sweep (fast, exact up to sweep-line interpolation); pyramid: the slides' "
                     "multi-resolution marching (approximate); raymarch: brute force reference (slow)")
@@ -263,12 +268,14 @@ void add_visibility_command(CLI::App& root) {
         ->check(within(1, 4));
     cmd->add_option("--max-error", o->max_error,
                     "Adaptive quality: the cheapest --directions and --exact-near-field whose predicted svf RMSE "
-                    "stays under this for the DEM's roughness (e.g. 0.001); prints what it chose and why")
+                    "stays under this for the DEM's roughness (e.g. 0.001); prints what it chose and why (so not "
+                    "with either of them)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--exact-near-field", o->horizon.exact_near_field_texels,
                     "exact: march each receiver's first N texels from the texel centre itself (0 = pure sweep)")
         ->capture_default_str()
-        ->check(within(0.0, 64.0));
+        ->check(within(0.0, 64.0))
+        ->each([o](const std::string&) { o->near_field_given = true; });
     cmd->add_flag_callback(
         "--exact-scalar", [o] { o->horizon.exact_simd_lines = false; },
         "exact: sweep one line at a time even where the CPU has AVX-512 (bit-identical, slower; for comparisons)");

@@ -15,6 +15,7 @@
 #include "app/bench/error_stats.hpp"
 #include "app/dem_input.hpp"
 #include "app/job_memory.hpp"
+#include "app/options/mesh_forward_option.hpp"
 #include "core/blockers/sphere_cache.hpp"
 #include "core/blockers/sphere_decomposition.hpp"
 #include "core/dem/dem_source.hpp"
@@ -38,7 +39,7 @@ struct BenchFlyArgs {
     int directions = 16;
     std::string time = "2024-06-21T07:30:00Z";
     std::string mesh;  // an aircraft 60 m ahead of the camera: the run is repeated with it
-    std::string mesh_forward = "+y";
+    std::string mesh_forward = "auto";
     std::vector<int> spheres = {64, 400};  // the aircraft's shadows at each count (0: none)
     std::string sphere_cache_dir;
     // The first run again with the DEM streamed by tile within this budget (MB; 0: not run).
@@ -176,7 +177,7 @@ void run_bench_fly(const BenchFlyArgs& a) {
     const mesh::TriangleMesh aircraft_mesh = a.mesh.empty() ? mesh::TriangleMesh{} : mesh::import_mesh(a.mesh);
     const std::filesystem::path cache =
         a.sphere_cache_dir.empty() ? blockers::default_sphere_cache_dir() : std::filesystem::path(a.sphere_cache_dir);
-    const double yaw = a.mesh_forward == "-x" ? -90.0 : a.mesh_forward == "+x" ? 90.0 : a.mesh_forward == "-y" ? 180.0 : 0.0;
+    const double yaw = a.mesh.empty() ? 0.0 : mesh::forward_yaw_deg(mesh_forward_axis(a.mesh_forward, a.mesh));
     double whole_start_ms = 0;
     if (!whole_fits) runs.clear();
     for (const Run& run : runs) {
@@ -252,7 +253,7 @@ void add_bench_fly_command(CLI::App& bench) {
     cmd->add_option("--directions", a->directions, "horizon azimuths of the visibility")->capture_default_str();
     cmd->add_option("--time", a->time, "UTC time of the sun")->capture_default_str();
     cmd->add_option("--mesh", a->mesh, "an aircraft mesh: the first run again with it 60 m ahead of the camera");
-    cmd->add_option("--mesh-forward", a->mesh_forward, "its nose axis: +x, -x, +y, -y")->capture_default_str();
+    add_mesh_forward_option(*cmd, a->mesh_forward);
     cmd->add_option("--spheres", a->spheres, "with --mesh: its shadows' sphere counts, one run each (0: none)")
         ->delimiter(',')
         ->capture_default_str();

@@ -1,6 +1,9 @@
 #include "app/options/bounce_option.hpp"
 
+#include <string>
+
 #include "app/options/within_range.hpp"
+#include "core/render/bounce_sun_gather.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::app {
@@ -12,7 +15,8 @@ void add_bounce_options(CLI::App& cmd, render::BounceSettings& b) {
         ->capture_default_str()
         ->check(CLI::IsMember({0, 1, 2}));
     cmd.add_option("--bounce-directions", b.gather.directions,
-                   "Azimuths of the bounced light's gather (a divisor of --directions; more: finer, slower)")
+                   "Azimuths of the bounced light's gather, at most this many (the largest divisor of --directions up "
+                   "to it: its horizons are exact there; more: finer, slower)")
         ->capture_default_str()
         ->check(within(1, 1024));
     cmd.add_option_function<std::string>(
@@ -26,7 +30,8 @@ void add_bounce_options(CLI::App& cmd, render::BounceSettings& b) {
         ->default_str("gather")
         ->check(CLI::IsMember({"gather", "sh"}));
     cmd.add_option("--bounce-radius", b.gather.radius_texels,
-                   "How far the bounced light's gather looks, texels (farther terrain is lit like open flat land)")
+                   "How far the bounced light's gather looks, texels (farther terrain is lit like open flat land; at "
+                   "most " + std::to_string(render::kBounceSunGatherReach) + " with --bounce-sun gather)")
         ->capture_default_str()
         ->check(within(1, 1024));
     cmd.add_option("--bounce-growth", b.gather.growth,

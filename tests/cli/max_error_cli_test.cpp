@@ -120,7 +120,11 @@ TEST(MaxErrorCli, BadBoundsAndConflictingFlagsAreRefusedBeforeAnyWork) {
                           Case{"tiles " + quote(kDem) + " --zoom 9 --max-error 0.05 --directions 8 --out " +
                                quote((dir / "t").string()), "--max-error chooses --directions"},
                           Case{"tiles " + quote(kDem) + " --zoom 9 --style hillshade --max-error 0.05 --out " +
-                               quote((dir / "t").string()), "relief or color"}}) {
+                               quote((dir / "t").string()), "relief or color"},
+                          Case{"visibility " + quote(kDem) + " --max-error 0.001 --directions 64 --svf " +
+                               quote((dir / "svf.tif").string()), "--max-error chooses --directions"},
+                          Case{"visibility " + quote(kDem) + " --max-error 0.001 --exact-near-field 4 --svf " +
+                               quote((dir / "svf.tif").string()), "--max-error chooses --exact-near-field"}}) {
         const Result r = run(ts_cmd(c.args));
         EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
@@ -129,6 +133,7 @@ TEST(MaxErrorCli, BadBoundsAndConflictingFlagsAreRefusedBeforeAnyWork) {
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
     EXPECT_FALSE(std::filesystem::exists(dir / "f"));
     EXPECT_FALSE(std::filesystem::exists(dir / "t"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "svf.tif"));
 }
 
 #ifdef TS_TEST_FLY

@@ -35,9 +35,7 @@ void add_device_options(CLI::App& cmd, DeviceArgs& a) {
                                   "device index as `terrashade devices` lists it")
                        ->capture_default_str();
     cmd.add_flag("--cpu", a.cpu, "The same as --device cpu")->excludes(device);
-    const bool meshes = cmd.get_name() == "render" || cmd.get_name() == "relight";
-    add_verbose_flag(cmd, a.verbose,
-                     std::string("the device and where each stage ran") + (meshes ? ", a mesh's assumed forward axis" : ""));
+    add_verbose_flag(cmd, a.verbose);
 }
 
 #ifdef TERRASHADE_HAS_GPU

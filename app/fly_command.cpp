@@ -494,7 +494,7 @@ void add_fly_command(CLI::App& root) {
     cmd->add_option("--overview-level", args->overview_level,
                     "streamed DEMs: the overview keeps every 2^L-th texel (0: the finest that fits a quarter of the budget)")
         ->capture_default_str();
-    add_verbose_flag(*cmd, args->verbose, "the aircraft mesh's assumed forward axis");
+    add_verbose_flag(*cmd, args->verbose);
     cmd->callback([args] { run_fly(*args); });
 }
 

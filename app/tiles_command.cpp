@@ -187,7 +187,8 @@ void add_tiles_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "tiles",
         "Web Mercator map tiles of a shaded DEM: an XYZ directory DIR/z/x/y.png or one MBTiles file, with "
-        "seamless edges and crash-safe --resume (docs/tiles.md)");
+        "seamless edges and crash-safe --resume (docs/tiles.md). Without --time or --sun-azimuth/--sun-elevation "
+        "the shaded styles take the cartographers' light: azimuth 315, 45 degrees up.");
     add_dem_input_options(*cmd, a->dem);
     add_tiles_options(*cmd, a->tiles);
     cmd->add_option("-o,--out", a->out, "Output: a directory (XYZ tiles DIR/z/x/y.png) or FILE.mbtiles")->required();

@@ -12,9 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "app/dem_sun_tables.hpp"
@@ -51,12 +49,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
         ->capture_default_str();
     cmd.add_option("--style", a.style, tiles::tile_style_names(" | ") + " (docs/tiles.md)")
         ->capture_default_str();
-    add_sun_options(cmd, a.time, a.sun_azimuth, a.sun_elevation);
-    // Neither --time nor the angles: the cartographers' light from the north-west, 45 degrees up.
-    for (const auto& [name, value] : {std::pair{"--sun-azimuth", "315"}, std::pair{"--sun-elevation", "45"}}) {
-        CLI::Option* o = cmd.get_option(name);
-        o->description(o->get_description() + " (default without --time: " + value + ")");
-    }
+    add_sun_options(cmd, a.time, a.sun_azimuth, a.sun_elevation);  // neither: azimuth 315, elevation 45
     add_sky_option(cmd, a.sky);  // relief and color
     add_colors_options(cmd, a.colors);  // color
     cmd.add_option("--z-factor", a.z_factor, "Vertical exaggeration on top of the zoom's (> 0)")->capture_default_str();
@@ -111,7 +104,7 @@ void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
     add_bounce_options(cmd, a.bounce);  // relief, color, lightable
     add_sky_light_options(cmd, a.sky_light);  // relief, color
     add_threads_option(cmd, a.threads);
-    add_verbose_flag(cmd, a.verbose, "the sun, and per zoom the DEM level, the height exaggeration and the directions");
+    add_verbose_flag(cmd, a.verbose);
 }
 
 namespace {

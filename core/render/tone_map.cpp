@@ -211,8 +211,8 @@ __attribute__((target("avx2"))) std::size_t display_values_avx2(const glm::vec3*
             x[k] = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(raw, vscale), zero), largest);
             _mm256_storeu_ps(v + 8 * k, x[k]);
         }
-        const __m256 m = _mm256_max_ps(_mm256_max_ps(_mm256_i32gather_ps(v, stride, 4), _mm256_i32gather_ps(v + 1, stride, 4)),
-                                       _mm256_i32gather_ps(v + 2, stride, 4));
+        const __m256 red = _mm256_i32gather_ps(v, stride, 4), green = _mm256_i32gather_ps(v + 1, stride, 4);
+        const __m256 m = _mm256_max_ps(_mm256_max_ps(red, green), _mm256_i32gather_ps(v + 2, stride, 4));
         // ts_filmic_gain and ts_display_whitening (core/raster/display_shared.h).
         const __m256 num = _mm256_add_ps(_mm256_mul_ps(k251, m), k003);
         const __m256 den = _mm256_add_ps(_mm256_mul_ps(m, _mm256_add_ps(_mm256_mul_ps(k243, m), k059)), k014);
@@ -258,7 +258,8 @@ void Srgb8Encoder::encode_rgb(const glm::vec3* rgb, std::size_t count, float sca
         encode_values(v, 3 * n, o);
         if (!any_not_finite) continue;
         for (std::size_t j = 0; j < n; ++j)
-            if (!finite(rgb[begin + j])) o[3 * j] = nan_colour[0], o[3 * j + 1] = nan_colour[1], o[3 * j + 2] = nan_colour[2];
+            if (!finite(rgb[begin + j]))
+                o[3 * j] = nan_colour[0], o[3 * j + 1] = nan_colour[1], o[3 * j + 2] = nan_colour[2];
     }
 }
 

@@ -171,7 +171,8 @@ TEST(ToneMap, LargeImagesUseTheTable) {
     px[17] = glm::vec3(NAN);
     // The table's edges and beyond: 0, negative, below 2^-14, the curve's clamp (7.24) and 8,
     // above, the largest floats.
-    const float edges[] = {0.0f, -0.0f, -2.0f, 0x1p-15f, 0x1p-14f, 0x1.000002p-14f, 7.24f, 7.9999995f, 8.0f, 26.0f, 3e38f};
+    const float edges[] = {0.0f,  -0.0f,      -2.0f, 0x1p-15f, 0x1p-14f, 0x1.000002p-14f,
+                           7.24f, 7.9999995f, 8.0f,  26.0f,    3e38f};
     for (std::size_t k = 0; k < std::size(edges); ++k)
         px[100 + k] = glm::vec3(edges[k], 0.5f * edges[k], -edges[k]);
     px[200] = glm::vec3(1.0f, INFINITY, 1.0f);

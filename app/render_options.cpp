@@ -250,8 +250,8 @@ void print_stages(const RenderArgs& a, const render::Scene& scene) {
         blockers_on_device |= s.label.rfind("sphere blockers", 0) == 0 && s.path != "cpu";
     }
     if (!scene.blockers().empty() && scene.state().visibility_path() != "cpu")
-        std::printf("stage: the mesh blockers' %s computed on the CPU (docs/gpu.md)\n",
-                    blockers_on_device ? "sun shadows are" : "log-SH and sun shadows are");
+        std::printf("stage: the mesh blockers' %s are computed on the CPU (docs/gpu.md)\n",
+                    blockers_on_device ? "sun shadows" : "log-SH and sun shadows");
 }
 
 render::ReliefContrast parse_relief_contrast(const std::string& text) {

@@ -18,6 +18,7 @@ DemSunTables build_dem_sun_tables(const dem::Dem& dem, solar::InsolationSettings
     if (!std::isfinite(centre.x) || !std::isfinite(centre.y))
         throw InputError(dem.source + ": its CRS gives no longitude and latitude");
     settings.clock_longitude_deg = centre.x;
+    settings.grid_north_deg = dem.georef.grid_azimuth_of_north_deg();
     settings.periods = solar::make_periods(first, last, split, centre.x);
 
     DemSunTables out;

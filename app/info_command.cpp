@@ -98,6 +98,10 @@ void print_text(const dem::Dem& d, const dem::HeightStats& s) {
     }
     const glm::dvec2 cell = g.cell_size_m();
     std::printf("  cell size    %.3f m east-west x %.3f m north-south (geodesic, at the centre)\n", cell.x, cell.y);
+    if (!g.crs().is_geographic())
+        std::printf("  true north   %+.4f deg from the grid's north, clockwise, at the centre (meridian convergence; "
+                    "sun azimuths are true, turned onto the grid by it)\n",
+                    g.grid_azimuth_of_north_deg());
     if (s.valid_count)
         std::printf("  heights      min %.6g m, max %.6g m, mean %.3f m (%s)\n", s.min, s.max, s.mean,
                     d.vertical_datum.c_str());

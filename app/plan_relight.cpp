@@ -79,7 +79,7 @@ void run_plan_relight(const PlanRelightArgs& a) {
             for (int k = 0; k < n; ++k) {
                 // Spread over the series: dawn and noon frames cost the same, but compress differently.
                 const auto& t = times[std::size_t(k) * (times.size() - 1) / std::max(1, n - 1)];
-                scene.render(render::sun_at(render::sun_site(dem), t), image);
+                scene.render(scene.sun_at(t), image);
                 writer.write((dir / ("frame_" + std::to_string(k) + "." + a.format)).string(), image, exposure,
                              scene.target().georef());
             }

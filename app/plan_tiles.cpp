@@ -50,6 +50,7 @@ void run_plan_tiles(const PlanTilesArgs& a) {
     if (a.rate < 0) throw InputError("--rate: tiles per second per shard, > 0");
     if (a.sample < 0) throw InputError("--sample: a number of tiles >= 0");
     const dem::Dem dem = load_dem_input(a.dem);
+    job.shading.grid_north_deg = dem.georef.grid_azimuth_of_north_deg();
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;

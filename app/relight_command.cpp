@@ -189,7 +189,7 @@ void run_relight(const RelightArgs& a) {
         const render::SunSite sun_place = render::sun_site(dem);
         for (const auto& t : times)
             if (const render::SunState s = render::sun_at(sun_place, t); !skip_night || s.elevation_deg >= kNightElevationDeg)
-                suns.push_back(s);
+                suns.push_back(render::sun_on_grid(s, dem.georef.grid_azimuth_of_north_deg()));
         apply_max_error(render_args, dem, suns, options);
     }
     const int directions = options.renderer.directions;
@@ -283,7 +283,7 @@ void run_relight(const RelightArgs& a) {
         for (std::size_t k = 1; k < frames.size(); ++k)
             if (frames[k].sun.elevation_deg > frames[brightest].sun.elevation_deg) brightest = k;
         place_mesh(frames[brightest]);
-        scene->render(frames[brightest].sun, image);
+        scene->render(scene->on_grid(frames[brightest].sun), image);
         reference_ev = render::ev100_of_scale(render::image_exposure_scale(image, exposure));
         render::SequenceExposureOptions sequence_options;
         sequence_options.max_boost_ev = a.exposure_boost_ev.value_or(sequence_options.max_boost_ev);
@@ -325,7 +325,7 @@ void run_relight(const RelightArgs& a) {
             Frame& fr = frames[k];
             const Stopwatch tf;
             place_mesh(fr);
-            scene->render(fr.sun, image);
+            scene->render(scene->on_grid(fr.sun), image);
             render_s += tf.seconds();
             width = image.width, height = image.height;
             if (sequence)

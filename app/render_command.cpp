@@ -55,7 +55,8 @@ void run_render(const RenderCommandArgs& a) {
     warn_if_single_line(dem);
     attach_meshes(a.render, dem, options);
     const render::SunState sun = time ? render::sun_at_dem_centre(dem, *time) : render::SunState{*a.sun_azimuth, *a.sun_elevation};
-    apply_max_error(a.render, dem, {sun}, options);
+    const render::SunState grid_sun = render::sun_on_grid(sun, dem.georef.grid_azimuth_of_north_deg());
+    apply_max_error(a.render, dem, {grid_sun}, options);
     const int directions = options.renderer.directions;
     check_job_memory("render of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions, !options.meshes.empty()),
@@ -76,7 +77,7 @@ void run_render(const RenderCommandArgs& a) {
 
     const Stopwatch t1;
     render::LinearImage image;
-    scene->render(sun, image);
+    scene->render(grid_sun, image);
     const double frame_s = t1.seconds();
 
     // Both outputs change together at the end, or neither does.
@@ -94,7 +95,7 @@ void run_render(const RenderCommandArgs& a) {
             visibility::SunVisibilityOptions so;
             so.curvature = options.renderer.curvature;
             so.threads = options.renderer.threads;
-            swept = visibility::sun_visibility(scene->grid(), sun.azimuth_deg, sun.elevation_deg, so);
+            swept = visibility::sun_visibility(scene->grid(), grid_sun.azimuth_deg, grid_sun.elevation_deg, so);
         }
         outputs.stage(a.sun_visibility, [&](const std::filesystem::path& tmp) {
             raster::write_float_raster(tmp, dem.width, dem.height, 1,
@@ -106,6 +107,10 @@ void run_render(const RenderCommandArgs& a) {
 
     std::printf("sun: azimuth %.2f deg, elevation %.2f deg%s\n", sun.azimuth_deg, sun.elevation_deg,
                 time ? (" at " + light::format_utc_time(*time)).c_str() : "");
+    if (scene->grid_north_deg() != 0.0)
+        std::printf("grid: true north lies %+.2f deg from the grid's north at the DEM's centre (the sun at %.2f deg "
+                    "on the grid)\n",
+                    scene->grid_north_deg(), grid_sun.azimuth_deg);
     std::printf("sky: %s\n", scene->last_sky()->describe().c_str());
     if (scene->camera()) std::printf("camera: %s\n", render::format_camera(*scene->camera()).c_str());
     const render::HorizonSkyLight* horizon_sky = scene->state().horizon_sky();

@@ -89,6 +89,7 @@ void run_tiles(const TilesCommandArgs& a) {
     const dem::Dem dem = load_dem_input(a.dem);
     job.dem = tiles::dem_identity(dem);
     job.shading.colors = render::fit_colors(job.shading.colors, dem);
+    job.shading.grid_north_deg = dem.georef.grid_azimuth_of_north_deg();
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;

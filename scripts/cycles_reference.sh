@@ -6,6 +6,9 @@
 # *_decided: without the texels where Cycles itself is undecided, which a second Cycles render
 # with shadow rays leaving the facets themselves finds, --terminator-offset 0; scripts/cycles_compare.py)
 # Usage: scripts/cycles_reference.sh BUILD_DIR CROP.tif OUT_DIR SKY ALBEDO BOUNCES SAMPLES [AZIMUTH ELEVATION]
+#   AZIMUTH    the sun's, clockwise from the crop's grid north (Cycles' scene is the grid; terrashade
+#              takes true azimuths, so it gets AZIMUTH less where true north lies on the grid, from
+#              terrashade info)
 #   BUILD_DIR  a build with terrashade and tests/light/sky_equirect_dump (ninja terrashade sky_equirect_dump)
 #   CROP.tif   a DEM crop in a projected CRS with square texels (scripts/cycles_bench.sh makes one)
 #   SKY        clear | overcast (terrashade's models; their ground below the horizon gets ALBEDO)
@@ -50,10 +53,13 @@ if [ "${UNDECIDED:-1}" = 1 ]; then
   alternative=(--alternative "$alt")
 fi
 
+# terrashade's --sun-azimuth is from true north: the grid's AZIMUTH less the meridian convergence.
+north=$("$build/app/terrashade" info "$crop" | awk '$1 == "true" && $2 == "north" {print $3}')
+true_azimuth=$(echo "$azimuth - (${north:-0})" | bc -l)
 t0=$(date +%s.%N)
 "$build/app/terrashade" render "$crop" --colors "grey:$albedo" --bounces "${TERRASHADE_BOUNCES:-1}" \
   --terrain-transfer "${TERRASHADE_TRANSFER:-exact}" --sky-light "${TERRASHADE_SKY_LIGHT:-horizons}" \
-  --bounce-sun "${TERRASHADE_BOUNCE_SUN:-gather}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$azimuth" \
+  --bounce-sun "${TERRASHADE_BOUNCE_SUN:-gather}" ${TERRASHADE_ARGS:-} --sky "$spec" --sun-azimuth "$true_azimuth" \
   --sun-elevation "$elevation" --no-curvature --cpu --threads "$threads" -o "$out/terrashade_$tag.exr" >/dev/null
 t1=$(date +%s.%N)
 terrashade_s=$(echo "$t1 - $t0" | bc)

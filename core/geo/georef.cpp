@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <GeographicLib/Geodesic.hpp>
@@ -42,6 +43,20 @@ glm::dvec2 Georef::cell_size_m(double col, double row) const {
     const double dx = geodesic_m(pixel_to_lonlat(col - 0.5, row), pixel_to_lonlat(col + 0.5, row));
     const double dy = geodesic_m(pixel_to_lonlat(col, row - 0.5), pixel_to_lonlat(col, row + 0.5));
     return {dx, dy};
+}
+
+double Georef::grid_azimuth_of_north_deg(double col, double row) const {
+    if (crs_->is_geographic()) return 0.0;
+    // A step of 0.001 degree of latitude (~110 m) towards the pole, or away from it beside it.
+    const glm::dvec2 ll = pixel_to_lonlat(col, row);
+    const double step = ll.y + 1e-3 > 90.0 ? -1e-3 : 1e-3;
+    const glm::dvec2 p = lonlat_to_pixel({ll.x, ll.y + step});
+    const glm::dvec2 cell = cell_size_m(col, row);
+    const double sign = step > 0 ? 1.0 : -1.0;
+    const double east = sign * (p.x - col) * cell.x, north = -sign * (p.y - row) * cell.y;
+    const double a = std::atan2(east, north) * 180.0 / std::numbers::pi;
+    // Grids whose columns run along meridians (Web Mercator) give 0 up to rounding.
+    return std::abs(a) < 1e-7 ? 0.0 : a;
 }
 
 Georef Georef::window(int col0, int row0, int w, int h) const {

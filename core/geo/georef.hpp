@@ -51,6 +51,15 @@ public:
     // The same at the raster centre.
     glm::dvec2 cell_size_m() const { return cell_size_m(width_ * 0.5, height_ * 0.5); }
 
+    // Where true north points on the grid at (col, row) (edge coordinates): its azimuth in
+    // degrees clockwise from the grid's up (-row), in the metric frame of cell_size_m, in
+    // (-180, 180]. 0 on geographic and Web Mercator grids; on a projected grid the meridian
+    // convergence, with its sign (UTM east of the central meridian: negative). A direction of
+    // true azimuth A lies at A + this on the grid.
+    double grid_azimuth_of_north_deg(double col, double row) const;
+    // The same at the raster centre.
+    double grid_azimuth_of_north_deg() const { return grid_azimuth_of_north_deg(width_ * 0.5, height_ * 0.5); }
+
     // A georef for the sub-window starting at pixel (col0, row0), of size w x h.
     Georef window(int col0, int row0, int w, int h) const;
 

@@ -80,7 +80,9 @@ Camera default_camera(const terrain::HeightGrid& g, const geo::Georef& georef) {
     c.pitch_deg = -16.0;
     c.fov_deg = 55.0;
     const double back = 0.62 * extent;  // horizontal distance from the centre
-    const double east = -back * std::sin(radians(c.heading_deg)), north = -back * std::cos(radians(c.heading_deg));
+    // Back along the heading as the grid sees it (a projected grid's north is not true north).
+    const double grid_heading = radians(c.heading_deg + georef.grid_azimuth_of_north_deg());
+    const double east = -back * std::sin(grid_heading), north = -back * std::cos(grid_heading);
     const double col = (g.width - 1) * 0.5 + east / dx, row = (g.height - 1) * 0.5 - north / dy;
     const glm::dvec2 ll = georef.pixel_to_lonlat(col + 0.5, row + 0.5);
     c.lon_deg = ll.x, c.lat_deg = ll.y;
@@ -106,7 +108,9 @@ PerspectiveView::PerspectiveView(const terrain::HeightGrid& g, const geo::Georef
     ground_m_ = double(ground);
 
     march_ = std::make_unique<SurfaceMarch>(g, options_.threads);
-    const double h = radians(camera.heading_deg), p = radians(camera.pitch_deg);
+    // The heading is from true north; the grid's axes may lie elsewhere (a projected grid).
+    const double h = radians(camera.heading_deg + georef.grid_azimuth_of_north_deg(px.x, px.y));
+    const double p = radians(camera.pitch_deg);
     const glm::dvec3 forward{std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
     const glm::dvec3 right{std::cos(h), -std::sin(h), 0.0};
     const glm::dvec3 up{right.y * forward.z - right.z * forward.y, right.z * forward.x - right.x * forward.z,

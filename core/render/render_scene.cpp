@@ -48,7 +48,9 @@ geo::Georef extent_georef(const ExtentRequest& e, const geo::Georef& dem_georef)
     return geo::Georef(e.width, e.height, t, crs, true);
 }
 
-Scene::Scene(const dem::Dem& dem, const SceneOptions& options) : dem_(dem), options_(options) {
+Scene::Scene(const dem::Dem& dem, const SceneOptions& options)
+    : dem_(dem), options_(options),
+      grid_north_deg_(dem.georef.valid() ? dem.georef.grid_azimuth_of_north_deg() : 0.0) {
     // The log-SH terrain transfer has no horizons to integrate the sky over; the sky follows
     // the sky light (its aureole in the sun's beam only for SH).
     if (options_.renderer.terrain_transfer != RendererOptions::TerrainTransfer::exact)
@@ -138,7 +140,8 @@ void Scene::attach_mesh_views(const PerspectiveView& view) {
         if (!m.triangles || m.triangles->triangle_count() == 0) continue;
         const glm::dvec2 anchor = mesh_anchor(dem_.georef, m.placement, m.name);
         const double ground = ground_height(*grid_, anchor);
-        PlacedMesh pm = place_mesh(*m.triangles, m.placement, anchor, std::isnan(ground) ? 0.0 : ground, m.name);
+        PlacedMesh pm = place_mesh(*m.triangles, placement_on_grid(dem_.georef, m.placement, anchor), anchor,
+                                   std::isnan(ground) ? 0.0 : ground, m.name);
         const blockers::PlacedSpheres* spheres = k < blockers_.meshes.size() ? &blockers_.meshes[k] : nullptr;
         mesh_lighting_.push_back(
             std::make_unique<MeshLighting>(*grid_, std::move(pm), spheres, options_.blocker_options, lo));
@@ -159,8 +162,8 @@ visibility::TexelRect Scene::move_mesh(std::size_t k, const mesh::Placement& pla
         throw input_error(m.name, "an agl height over a void of the DEM: give the height above the datum");
     m.placement = placement;
     std::shared_ptr<const blockers::TriangleBvh> triangles = std::move(blockers_.meshes[k].model_triangles);
-    blockers_.meshes[k] = blockers::place_spheres(m.model_spheres, placement, anchor, std::isnan(ground) ? 0.0 : ground,
-                                                  m.name);
+    blockers_.meshes[k] = blockers::place_spheres(m.model_spheres, placement_on_grid(dem_.georef, placement, anchor),
+                                                  anchor, std::isnan(ground) ? 0.0 : ground, m.name);
     blockers_.meshes[k].model_triangles = std::move(triangles);  // one model frame for every placement
     return state_->move_mesh(k, blockers_.meshes[k]);
 }
@@ -192,7 +195,9 @@ SunState sun_at(const SunSite& site, light::UtcTime time) {
 
 SunState sun_at_dem_centre(const dem::Dem& dem, light::UtcTime time) { return sun_at(sun_site(dem), time); }
 
-SunState Scene::sun_at(light::UtcTime time) const { return sun_at_dem_centre(dem_, time); }
+SunState Scene::sun_at(light::UtcTime time) const { return on_grid(sun_at_dem_centre(dem_, time)); }
+
+SunState Scene::on_grid(const SunState& true_sun) const { return sun_on_grid(true_sun, grid_north_deg_); }
 
 std::vector<float> Scene::open_sky_fraction() { return render::open_sky_fraction(*renderer_); }
 

@@ -94,11 +94,18 @@ public:
     Scene(const dem::Dem& dem, const SceneOptions& options);
     ~Scene();
 
-    // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`.
+    // Sun position at the DEM's centre (lon/lat from its georef, its mean height) at `time`,
+    // on the grid (on_grid): what render() takes.
     SunState sun_at(light::UtcTime time) const;
+    // A sun of true azimuth (sun_position's, or the user's --sun-azimuth) on this DEM's grid:
+    // turned by where true north lies at its centre (0 on geographic and Web Mercator grids;
+    // the meridian convergence on a projected one, e.g. -2.1 degrees 3 degrees east of a UTM
+    // zone's meridian at 45 N).
+    SunState on_grid(const SunState& true_sun) const;
+    double grid_north_deg() const { return grid_north_deg_; }
 
-    // Renders one frame: the sky from options.sky for this sun, per-texel radiance, then the
-    // target's picture. `image` keeps its storage from frame to frame.
+    // Renders one frame: the sky from options.sky for this sun (on the grid: on_grid), per-texel
+    // radiance, then the target's picture. `image` keeps its storage from frame to frame.
     void render(const SunState& sun, LinearImage& image);
     // Mesh k (of options.meshes) moves to `placement` for the frames that follow: its spheres
     // are placed again and the shading state recomputes only its old and new footprints
@@ -140,6 +147,7 @@ private:
 
     const dem::Dem& dem_;
     SceneOptions options_;
+    double grid_north_deg_ = 0.0;  // where true north lies on the grid at the DEM's centre
     std::unique_ptr<terrain::HeightGrid> grid_;
     blockers::SphereBlockers blockers_;  // the state points to it: declared before the state
     std::vector<std::string> warnings_;

@@ -25,6 +25,12 @@ glm::dvec2 mesh_anchor(const geo::Georef& georef, const mesh::Placement& placeme
     return {px.x - 0.5, px.y - 0.5};
 }
 
+mesh::Placement placement_on_grid(const geo::Georef& georef, const mesh::Placement& placement, glm::dvec2 anchor) {
+    mesh::Placement p = placement;
+    if (georef.valid()) p.heading_deg += georef.grid_azimuth_of_north_deg(anchor.x + 0.5, anchor.y + 0.5);
+    return p;
+}
+
 double ground_height(const terrain::HeightGrid& g, glm::dvec2 t) {
     const double x = std::clamp(t.x, 0.0, double(g.width - 1)), y = std::clamp(t.y, 0.0, double(g.height - 1));
     float fc = 0, fr = 0;
@@ -44,7 +50,7 @@ blockers::SphereBlockers place_scene_meshes(std::span<const SceneMesh> meshes, c
         const double ground = ground_height(grid, anchor);
         if (m.placement.above_ground && std::isnan(ground))
             throw input_error(m.name, "an agl height over a void of the DEM: give the height above the datum");
-        out.meshes.push_back(blockers::place_spheres(m.model_spheres, m.placement, anchor,
+        out.meshes.push_back(blockers::place_spheres(m.model_spheres, placement_on_grid(georef, m.placement, anchor), anchor,
                                                      std::isnan(ground) ? 0.0 : ground, m.name));
         if (m.triangles && options.sun_caster == blockers::SphereBlockerOptions::SunCaster::triangles)
             out.meshes.back().model_triangles = blockers::model_triangle_bvh(*m.triangles);

@@ -30,6 +30,9 @@ struct SceneMesh {
 // Texel-centre coordinates (col, row) of the placement's lon/lat. Throws ts::InputError naming
 // the mesh when it lies off the DEM (outside its outer edges) or the placement is invalid.
 glm::dvec2 mesh_anchor(const geo::Georef& georef, const mesh::Placement& placement, const std::string& name);
+// The placement with its heading (from true north) turned onto the grid at `anchor` (texel
+// centres): a projected grid's north is not true north (Georef::grid_azimuth_of_north_deg).
+mesh::Placement placement_on_grid(const geo::Georef& georef, const mesh::Placement& placement, glm::dvec2 anchor);
 
 // The terrain's height at texel-centre coordinates (bilinear over valid texels; NaN if void).
 double ground_height(const terrain::HeightGrid& grid, glm::dvec2 texel);

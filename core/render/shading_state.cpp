@@ -25,6 +25,13 @@
 
 namespace ts::render {
 
+SunState sun_on_grid(const SunState& true_sun, double grid_north_deg) {
+    if (grid_north_deg == 0.0) return true_sun;
+    double az = std::fmod(true_sun.azimuth_deg + grid_north_deg, 360.0);
+    if (az < 0) az += 360.0;
+    return {az, true_sun.elevation_deg};
+}
+
 glm::dvec3 sun_direction(const SunState& sun) {
     return geo::enu_direction(geo::azimuth_cw_from_north_to_phi(sun.azimuth_deg),
                               radians(sun.elevation_deg));

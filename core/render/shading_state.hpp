@@ -54,11 +54,18 @@ namespace ts::render {
 class RenderBackend;
 class ShadeField;
 
-// What the sun does this frame (user-facing angles, as sun_position gives them).
+// What the sun does this frame: degrees above the horizon, and clockwise from north as the
+// grid sees it. On geographic and Web Mercator grids that is true north (sun_position's
+// azimuth); on a projected grid north lies elsewhere (Georef::grid_azimuth_of_north_deg), and
+// sun_on_grid turns a true azimuth onto it.
 struct SunState {
     double azimuth_deg = 180.0;
     double elevation_deg = 45.0;
 };
+
+// The sun of true azimuth `true_sun.azimuth_deg` on a grid whose true north points at
+// `grid_north_deg`: azimuth + grid_north_deg, in [0, 360).
+SunState sun_on_grid(const SunState& true_sun, double grid_north_deg);
 
 struct RendererOptions {
     int directions = 32;           // horizon azimuths D for the visibility

@@ -102,7 +102,7 @@ InsolationModel::InsolationModel(const InsolationSettings& settings, double lat_
         std::vector<Up> up;
         up.reserve(path.size() / 2 + 16);
         for (std::size_t i = 0; i < path.size(); ++i) {
-            const LocalSun sun = local_sun(path[i], band_lat_[std::size_t(b)], lon, settings_.refraction);
+            const LocalSun sun = local_sun(path[i], band_lat_[std::size_t(b)], lon, settings_.refraction, settings_.grid_north_deg);
             if (!(sun.elevation_rad > 0)) continue;
             const int bin = int(std::lround(sun.phi_rad * bins / (2 * kPi))) % bins;
             up.push_back({sun, i, bin});

@@ -38,6 +38,7 @@ struct InsolationSettings {
     double clear_sky_index = 1.0;  // scales beam and diffuse (and so the reflected light)
     double step_minutes = 2.0;     // the sun path's step for the tables
     double clock_longitude_deg = 0;  // the clock of periods, months and days (the DEM's centre)
+    double grid_north_deg = 0;       // where true north lies on the DEM's grid (its centre): the sun turns by it
     bool refraction = true;          // the sun's apparent elevation (SPA) hides behind horizons
     int azimuth_bins = 256;
     // The tilted sky view factor and the diffuse sky are integrated over every svf_stride-th bin

@@ -95,13 +95,15 @@ std::vector<double> reference_insolation(const InsolationSettings& settings, con
     double seen_share = 0;  // seen sky / horizontal, for the current group of steps
     for (std::size_t i = 0; i < path.size(); ++i) {
         const EphemerisSample& s = path[i];
-        const LocalSun sun = local_sun(s, latitude_deg, settings.clock_longitude_deg, settings.refraction);
+        const LocalSun sun = local_sun(s, latitude_deg, settings.clock_longitude_deg, settings.refraction,
+                                         settings.grid_north_deg);
         if (!(sun.elevation_rad > 0)) continue;
         if (i / std::size_t(stride) != group) {
             group = i / std::size_t(stride);
             // The group's middle step when the sun is up then, else this one.
             std::size_t mid = std::min(path.size() - 1, group * std::size_t(stride) + std::size_t(stride) / 2);
-            LocalSun at = local_sun(path[mid], latitude_deg, settings.clock_longitude_deg, settings.refraction);
+            LocalSun at = local_sun(path[mid], latitude_deg, settings.clock_longitude_deg, settings.refraction,
+                                settings.grid_north_deg);
             if (!(at.elevation_rad > 0)) at = sun;
             seen_share = sky_integral(seen, at.direction) / open_sky_at(at.elevation_rad);
         }

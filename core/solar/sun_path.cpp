@@ -84,7 +84,8 @@ std::vector<EphemerisSample> sample_sun_path(const std::vector<InsolationPeriod>
     return samples;
 }
 
-LocalSun local_sun(const EphemerisSample& s, double latitude_deg, double longitude_deg, bool refraction) {
+LocalSun local_sun(const EphemerisSample& s, double latitude_deg, double longitude_deg, bool refraction,
+                   double grid_north_deg) {
     const double lat = radians(latitude_deg);
     const double h = s.greenwich_hour_angle_rad + radians(longitude_deg);
     const double sd = std::sin(s.declination_rad), cd = std::cos(s.declination_rad);
@@ -100,7 +101,7 @@ LocalSun local_sun(const EphemerisSample& s, double latitude_deg, double longitu
         light::Atmosphere standard;
         sun.elevation_rad += radians(light::refraction_correction_deg(degrees(sun.altitude_rad), standard));
     }
-    double phi = std::atan2(north, east);
+    double phi = std::fmod(std::atan2(north, east) - radians(grid_north_deg), 2 * kPi);
     if (phi < 0) phi += 2 * kPi;
     sun.phi_rad = phi;
     const double ce = std::cos(sun.elevation_rad);

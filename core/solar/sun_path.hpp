@@ -37,6 +37,9 @@ struct LocalSun {
     double phi_rad = 0;            // internal azimuth, counter-clockwise from east, [0, 2 pi)
 };
 // refraction: the SPA's refraction correction at a standard atmosphere (1013.25 hPa, 15 C).
-LocalSun local_sun(const EphemerisSample& s, double latitude_deg, double longitude_deg, bool refraction);
+// grid_north_deg: where true north lies on the grid the direction is for (0: true north;
+// Georef::grid_azimuth_of_north_deg on a projected grid); phi and direction are the grid's.
+LocalSun local_sun(const EphemerisSample& s, double latitude_deg, double longitude_deg, bool refraction,
+                   double grid_north_deg = 0.0);
 
 }  // namespace ts::solar

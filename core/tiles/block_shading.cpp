@@ -49,7 +49,7 @@ std::vector<glm::vec3> render_frame(const terrain::HeightGrid& grid, render::Mat
     }
     const render::ViewShading view = render::compute_view_shading(*state, {});
     render::FrameRenderer frame(*state, view);
-    const render::SunState sun{s.sun_azimuth_deg, s.sun_elevation_deg};
+    const render::SunState sun = render::sun_on_grid({s.sun_azimuth_deg, s.sun_elevation_deg}, s.grid_north_deg);
     const auto sky = light::make_sky(render::sky_for(s.sky, s.sky_light), render::sun_direction(sun));
     std::vector<glm::vec3> radiance;
     frame.render(*sky, sun, radiance);

@@ -116,6 +116,10 @@ struct TileShading {
     // the north-west, 45 deg up. --time sets them from the sun's position instead.
     double sun_azimuth_deg = 315.0;
     double sun_elevation_deg = 45.0;
+    // Where true north lies on the DEM's grid (Georef::grid_azimuth_of_north_deg at its centre):
+    // the styles shaded on the DEM's levels (relief, color) turn the sun by it. Tiles' own pixels
+    // (hillshade) are Web Mercator, whose north is true north.
+    double grid_north_deg = 0.0;
     double z_factor = 1.0;
     // Replaces the zoom-dependent exaggeration (zoom_exaggeration.hpp) when set.
     std::optional<double> exaggeration;

@@ -93,3 +93,29 @@ TEST(Georef, WindowShiftsTheOrigin) {
     EXPECT_DOUBLE_EQ(a.y, b.y);
     EXPECT_FALSE(w.pixel_is_area());
 }
+
+TEST(Georef, TrueNorthOnAGeographicOrWebMercatorGridIsTheGridsNorth) {
+    EXPECT_EQ(srtm3_equator().grid_azimuth_of_north_deg(), 0.0);
+    const auto mercator = Crs::from_epsg(3857);
+    const glm::dvec2 o = mercator->from_lonlat({5.7, 45.2});
+    const Georef g(100, 100, GeoTransform{o.x, 30, 0, o.y, 0, -30}, mercator, true);
+    EXPECT_EQ(g.grid_azimuth_of_north_deg(), 0.0);
+}
+
+TEST(Georef, TrueNorthOnUtmIsTurnedByTheMeridianConvergence) {
+    // 2.7 degrees east of UTM 31N's central meridian (3 E) at 45.2 N: true north lies west of
+    // the grid's north by atan(tan(dlon) sin(lat)), 1.917 degrees (third-order terms ~1e-3).
+    const auto crs = Crs::from_epsg(32631);
+    const glm::dvec2 c = crs->from_lonlat({5.7, 45.2});
+    const Georef g(100, 100, GeoTransform{c.x - 1500, 30, 0, c.y + 1500, 0, -30}, crs, true);
+    const double expected = -std::atan(std::tan(radians(2.7)) * std::sin(radians(45.2))) * 180 / M_PI;
+    EXPECT_NEAR(g.grid_azimuth_of_north_deg(), expected, 5e-3);
+}
+
+TEST(Georef, TrueNorthOnAPolarStereographicGridPointsAtThePole) {
+    // EPSG:3413: grid north along 45 W; at 5.5 E true north lies 50.5 degrees west of it.
+    const auto crs = Crs::from_epsg(3413);
+    const glm::dvec2 c = crs->from_lonlat({5.5, 45.2});
+    const Georef g(10, 10, GeoTransform{c.x - 500, 100, 0, c.y + 500, 0, -100}, crs, true);
+    EXPECT_NEAR(g.grid_azimuth_of_north_deg(), -50.5, 1e-3);
+}

@@ -77,14 +77,6 @@ void check_output_directory(const std::string& what, const std::string& path) {
         fail(path, "cannot create it in " + ancestor.string() + ": " + std::strerror(errno), what);
 }
 
-// Two outputs are the same file when their absolute, normalised paths agree (or, once they
-// exist, their inodes).
-bool same_file(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    const fs::path ca = fs::weakly_canonical(a, ec), cb = fs::weakly_canonical(b, ec);
-    return ca == cb;
-}
-
 // A file or folder as the file system knows it: the same (device, inode) is the same file
 // whatever path names it (a symlink, "..", a hard link).
 struct FileId {
@@ -97,6 +89,16 @@ std::optional<FileId> file_id(const fs::path& p) {
     struct stat st {};
     if (::stat(p.c_str(), &st) != 0) return std::nullopt;
     return FileId{st.st_dev, st.st_ino};
+}
+
+// Two outputs are the same file when their absolute, normalised paths agree (or, once they
+// exist, their inodes).
+bool same_file(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec), cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    if (ca == cb) return true;
+    const std::optional<FileId> ia = file_id(a), ib = file_id(b);
+    return ia && ib && *ia == *ib;
 }
 
 // `p` and the folders holding it, innermost first, after symlinks and "..". A path that does not
@@ -165,7 +167,7 @@ IoPlan& IoPlan::output_directory(std::string what, std::string path) {
     return *this;
 }
 
-void IoPlan::check() const {
+void IoPlan::check() {
     for (const Entry& e : inputs_) check_input(e.what, e.path);
     for (const Entry& e : input_directories_) {
         std::error_code ec;
@@ -185,6 +187,8 @@ void IoPlan::check() const {
             if (same_file(outputs_[i].path, outputs_[k].path))
                 fail(outputs_[i].path, "written twice", outputs_[k].what + " and " + outputs_[i].what);
     }
+    for (const auto* outs : {&directories_, &outputs_})
+        for (const Entry& o : *outs) locks_.push_back(std::make_unique<OutputLock>(o.path, o.what));
 }
 
 }  // namespace ts::app

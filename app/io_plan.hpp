@@ -14,8 +14,11 @@
 // No output may be an input, and no output folder (written into, or cleared by --overwrite)
 // may hold one: compared as the same file (device and inode, after symlinks and ".."), so
 // `hillshade G.tif --out G.tif`, a symlink to G.tif or `dir/../G.tif` are refused before any work.
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "app/output_lock.hpp"
 
 namespace ts::app {
 
@@ -33,8 +36,10 @@ public:
     // A directory the command writes its files into; it may not exist yet.
     IoPlan& output_directory(std::string what, std::string path);
 
-    // Throws ts::InputError for the first problem: "PATH: problem (WHAT)".
-    void check() const;
+    // Throws ts::InputError for the first problem: "PATH: problem (WHAT)". Then locks every
+    // output and output directory until the plan is destroyed (output_lock.hpp): another
+    // terrashade job on one of them is refused here. Keep the plan alive while the command runs.
+    void check();
 
 private:
     struct Entry {
@@ -42,6 +47,7 @@ private:
         std::vector<std::string> extensions;
     };
     std::vector<Entry> inputs_, input_directories_, outputs_, directories_;
+    std::vector<std::unique_ptr<OutputLock>> locks_;
 };
 
 }  // namespace ts::app

@@ -196,13 +196,17 @@ void run_relight(const RelightArgs& a) {
     check_job_memory("relight of " + std::to_string(dem.width) + "x" + std::to_string(dem.height) + " texels",
                      render_peak_bytes(std::uint64_t(dem.width) * dem.height, directions, !options.meshes.empty()),
                      "use --crop, or fewer --directions (4 bytes per texel each)");
-    // The output directory only once the inputs are known good: a refused DEM leaves nothing.
-    // One series per folder: a folder that is not empty is refused, or its old series removed.
-    // A folder made here is known to the interrupt before it exists (else a signal between the
-    // two would leave it empty).
-    std::error_code ec;
-    if (!std::filesystem::exists(a.out_dir, ec)) temp_files::track_created_directory(a.out_dir);
-    render::claim_frame_folder(a.out_dir, a.overwrite);
+    // One series per folder: a folder that is not empty is refused here, or (--overwrite) its old
+    // series removed, but only once the new one is about to be written (claim_folder, after the
+    // visibility): an error or an interrupt before then leaves the folder as it was. A folder
+    // made then is known to the interrupt before it exists (else a signal between the two would
+    // leave it empty).
+    render::check_frame_folder(a.out_dir, a.overwrite);
+    const auto claim_folder = [&] {
+        std::error_code ec;
+        if (!std::filesystem::exists(a.out_dir, ec)) temp_files::track_created_directory(a.out_dir);
+        render::claim_frame_folder(a.out_dir, a.overwrite);
+    };
     // The sun of every instant first: night frames are known (and skipped) before any work.
     const render::SunSite site = render::sun_site(dem);
     std::vector<Frame> frames;
@@ -239,6 +243,7 @@ void run_relight(const RelightArgs& a) {
                     part.end == 0 ? 0 : part.end - 1, frames.size());
         frames = std::vector<Frame>(frames.begin() + std::ptrdiff_t(part.begin), frames.begin() + std::ptrdiff_t(part.end));
         if (frames.empty()) {
+            claim_folder();
             write_times_csv(std::filesystem::path(a.out_dir) / "times.csv", frames, a.format == "exr");
             write_shard_marker(a.out_dir, shard);
             std::printf("shard %s has no frames (more shards than frames)\n", shard_text(shard).c_str());
@@ -246,10 +251,6 @@ void run_relight(const RelightArgs& a) {
         }
     }
     interrupt::report_progress("frames", frames.size());
-    // An interrupt leaves times.csv listing exactly the frames on disk.
-    interrupt::InterruptIndex& index_of_frames =
-        interrupt::index_on_interrupt((std::filesystem::path(a.out_dir) / "times.csv").string(), kTimesHeader,
-                                      frames.size());
 
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
@@ -264,6 +265,11 @@ void run_relight(const RelightArgs& a) {
     }
     print_stages(render_args, *scene);
     const double setup_s = t0.seconds();
+    claim_folder();
+    // An interrupt leaves times.csv listing exactly the frames on disk.
+    interrupt::InterruptIndex& index_of_frames =
+        interrupt::index_on_interrupt((std::filesystem::path(a.out_dir) / "times.csv").string(), kTimesHeader,
+                                      frames.size());
     MeshMotion motion;
     auto place_mesh = [&](const Frame& fr) {
         if (path.empty()) return;

@@ -9,6 +9,7 @@
 #include "app/job_memory.hpp"
 #include "app/options/quantity_flags.hpp"
 #include "core/util/error.hpp"
+#include "core/util/temp_files.hpp"
 
 namespace ts::app {
 namespace {
@@ -22,6 +23,13 @@ std::string command_path(const CLI::App& root) {
         app = subs.front();
         path += (path.empty() ? "" : " ") + app->get_name();
     }
+}
+// A command that failed leaves nothing behind: the temporaries it had in flight, and an output
+// folder it created that holds nothing (or only its job file), go as after an interrupt.
+int failed(int code) {
+    temp_files::hold_for_exit();
+    temp_files::remove_held();
+    return code;
 }
 }  // namespace
 
@@ -39,23 +47,23 @@ int run_command_line(CLI::App& root, int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // One line, naming the problem, then where to look.
         std::fprintf(stderr, "terrashade: %s (see --help)\n", e.what());
-        return kExitBadInput;
+        return failed(kExitBadInput);
     } catch (const ts::OccupiedOutputError& e) {
         std::fprintf(stderr, "terrashade: %s\n", flag_message(e).c_str());
-        return kExitBadInput;
+        return failed(kExitBadInput);
     } catch (const ts::QuantityError& e) {
         // core named the quantity; the user reads the flag they typed for it.
         std::fprintf(stderr, "terrashade: %s\n", flag_message(e, command_path(root)).c_str());
-        return kExitBadInput;
+        return failed(kExitBadInput);
     } catch (const ts::InputError& e) {
         std::fprintf(stderr, "terrashade: %s\n", e.what());
-        return kExitBadInput;
+        return failed(kExitBadInput);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "terrashade: out of memory\n");
-        return kExitBadInput;
+        return failed(kExitBadInput);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "terrashade: internal error: %s\n", e.what());
-        return kExitBug;
+        return failed(kExitBug);
     }
     return kExitOk;
 }

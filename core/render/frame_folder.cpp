@@ -22,14 +22,20 @@ bool is_frame_series_file(const std::string& name) {
     return false;
 }
 
+void check_frame_folder(const fs::path& dir, bool overwrite) {
+    std::error_code ec;
+    if (!fs::exists(dir, ec)) return;
+    if (!fs::is_directory(dir, ec)) throw input_error(dir.string(), "is a file; a frame series goes to a folder");
+    if (!overwrite && !fs::is_empty(dir, ec))
+        throw OccupiedOutputError(
+            {dir.string(), "is not empty (another frame series?)", false, "its frames and times.csv", "folder"});
+}
+
 bool claim_frame_folder(const fs::path& dir, bool overwrite) {
+    check_frame_folder(dir, overwrite);
     std::error_code ec;
     const bool existed = fs::exists(dir, ec);
-    if (existed && !fs::is_directory(dir, ec)) throw input_error(dir.string(), "is a file; a frame series goes to a folder");
     if (existed && !fs::is_empty(dir, ec)) {
-        if (!overwrite)
-            throw OccupiedOutputError(
-                {dir.string(), "is not empty (another frame series?)", false, "its frames and times.csv", "folder"});
         std::vector<fs::path> old;
         for (const auto& e : fs::directory_iterator(dir, ec))
             if (e.is_regular_file(ec) && is_frame_series_file(e.path().filename().string())) old.push_back(e.path());

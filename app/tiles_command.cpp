@@ -17,6 +17,7 @@
 #include "app/shard_option.hpp"
 #include "app/tile_set_viewer.hpp"
 #include "app/tiles_options.hpp"
+#include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
 #include "core/render/render_scene.hpp"
@@ -46,11 +47,25 @@ struct TilesCommandArgs {
 
 // --debug-heights Z/X/Y: the tile's heights with their halo as a float GeoTIFF in EPSG:3857,
 // beside the tiles (the input gdaldem gets in tests/cli/tiles_cli_test.cpp).
-void write_debug_heights(const dem::Dem& dem, const tiles::TileJob& job, const std::string& zxy,
-                         const std::string& out) {
+// --debug-heights Z/X/Y, checked before any work: a tile of one of the job's zooms.
+std::optional<tiles::TileId> parse_debug_heights(const std::string& zxy, const tiles::TileJob& job) {
+    if (zxy.empty()) return std::nullopt;
     tiles::TileId t;
-    if (std::sscanf(zxy.c_str(), "%d/%d/%d", &t.z, &t.x, &t.y) != 3)
+    char rest = 0;
+    if (std::sscanf(zxy.c_str(), "%d/%d/%d%c", &t.z, &t.x, &t.y, &rest) != 3)
         throw InputError("--debug-heights " + zxy + ": give Z/X/Y");
+    if (t.z < job.z0 || t.z > job.z1)
+        throw InputError("--debug-heights " + zxy + ": zoom " + std::to_string(t.z) + " is not one of the job's (" +
+                         std::to_string(job.z0) + "-" + std::to_string(job.z1) + ")");
+    const long long n = 1LL << t.z;
+    if (t.x < 0 || t.y < 0 || t.x >= n || t.y >= n)
+        throw InputError("--debug-heights " + zxy + ": zoom " + std::to_string(t.z) + " has tiles 0.." +
+                         std::to_string(n - 1) + " in x and y");
+    return t;
+}
+
+void write_debug_heights(const dem::Dem& dem, const tiles::TileJob& job, const tiles::TileId& t,
+                         const std::string& out) {
     const tiles::TileHeights h = tiles::tile_heights(dem, job, t);
     const std::filesystem::path dir = raster::written_as(out, raster::ImageWriter::mbtiles) ? std::filesystem::path(out).parent_path()
                                                                 : std::filesystem::path(out);
@@ -66,8 +81,10 @@ void run_tiles(const TilesCommandArgs& a) {
     const bool mbtiles = raster::written_as(a.out, raster::ImageWriter::mbtiles);
     if (a.out.empty()) throw InputError("tiles: --out DIR or FILE.mbtiles");
     if (a.resume && a.overwrite) throw InputError("tiles: --resume keeps the tiles, --overwrite replaces them: give one");
+    const std::optional<tiles::TileId> debug_tile = parse_debug_heights(a.debug_heights, job);
     IoPlan plan;
     plan.inputs("DEM", a.dem.files);
+    plan.input("--sky", job.shading.sky.hdr_path);
     plan_colors_input(plan, a.tiles.colors);
     if (mbtiles) {
         plan.output("--out", a.out, raster::tile_set_extensions());
@@ -93,6 +110,10 @@ void run_tiles(const TilesCommandArgs& a) {
     if (!a.tiles.time.empty()) {
         const render::SunState sun = render::sun_at_dem_centre(dem, light::parse_utc_time(a.tiles.time));
         job.shading.sun_azimuth_deg = sun.azimuth_deg, job.shading.sun_elevation_deg = sun.elevation_deg;
+        const std::string_view style = job.shading.style->name();  // the styles lit by the sun
+        if (sun.elevation_deg < -0.27 && (style == "relief" || style == "color" || style == "hillshade"))
+            std::fprintf(stderr, "terrashade: warning: the sun is below the horizon (elevation %.2f deg): sky light only\n",
+                         sun.elevation_deg);
     }
     if (job.shading.style->uses_visibility()) choose_tile_directions(a.tiles, dem, job);
     const std::vector<tiles::TileId> tile_plan = tiles::plan_tiles(dem, job);
@@ -111,6 +132,11 @@ void run_tiles(const TilesCommandArgs& a) {
     }
     if (tile_plan.empty() && job.shard.whole())
         throw input_error(dem.source, "covers no Web Mercator tile (it lies beyond +-85.05 deg latitude?)");
+
+    // The sky once before the output is touched: an unreadable --sky map fails here, not after an
+    // old tile set was replaced.
+    if (job.shading.style->uses_visibility() && job.shading.sky.kind == light::SkyOptions::Kind::hdr)
+        light::make_sky(job.shading.sky, render::sun_direction({job.shading.sun_azimuth_deg, job.shading.sun_elevation_deg}));
 
     // The output, before any shading: an unwritable one fails here.
     const std::string job_text = tiles::describe_job(job);
@@ -178,7 +204,7 @@ void run_tiles(const TilesCommandArgs& a) {
                     parts.c_str());
     }
     std::printf("wrote %s\n", a.out.c_str());
-    if (!a.debug_heights.empty()) write_debug_heights(dem, job, a.debug_heights, a.out);
+    if (debug_tile) write_debug_heights(dem, job, *debug_tile, a.out);
 }
 
 }  // namespace

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <map>
 #include <memory>
+#include <string_view>
 #include <tuple>
 #include <utility>
 
@@ -163,9 +165,13 @@ std::string lightable_json(const dem::Dem& dem, const TileShading& s) {
 
 std::string dem_identity(const dem::Dem& dem) {
     const LonLatBox b = dem_footprint(dem.georef);
-    char text[160];
-    std::snprintf(text, sizeof text, "%dx%d %.9f,%.9f,%.9f,%.9f", dem.width, dem.height, b.west, b.south, b.east,
-                  b.north);
+    // The heights themselves too: a DEM edited in place (same size, same place) is another job,
+    // whose tiles must not be resumed from the old ones. (~0.1 s for 10^8 heights.)
+    const std::size_t heights = std::hash<std::string_view>{}(
+        std::string_view(reinterpret_cast<const char*>(dem.z.data()), dem.z.size() * sizeof(float)));
+    char text[192];
+    std::snprintf(text, sizeof text, "%dx%d %.9f,%.9f,%.9f,%.9f heights %016zx", dem.width, dem.height, b.west,
+                  b.south, b.east, b.north, heights);
     return text;
 }
 

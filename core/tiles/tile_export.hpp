@@ -35,7 +35,7 @@ struct TileJob {
     // aliases). Clamped to the DEM's levels.
     int level_bias = 0;
     Shard shard;  // this process's part of the tile set (core/tiles/tile_shard.hpp); not in describe_job
-    // The DEM the tiles show (its size and footprint: dem_identity), so that tiles of another
+    // The DEM the tiles show (its size, footprint and heights: dem_identity), so that tiles of another
     // DEM are another job; in describe_job when set.
     std::string dem;
 };
@@ -59,7 +59,8 @@ void check_tile_job(const TileJob& job);
 // The tiles to make (of job.shard), in order, and the description of the job that --resume compares.
 std::vector<TileId> plan_tiles(const dem::Dem& dem, const TileJob& job);
 std::string describe_job(const TileJob& job);
-// "WxH west,south,east,north": equal for the same DEM (and its shards' runs), different for another.
+// "WxH west,south,east,north heights HASH": equal for the same DEM (and its shards' runs), different for
+// another, also one edited in place.
 std::string dem_identity(const dem::Dem& dem);
 
 // How a lightable job's tiles are encoded: its light directions and components, the directions

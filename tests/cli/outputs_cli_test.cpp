@@ -211,5 +211,82 @@ TEST(OneJobPerOutputCli, RelightFolderHoldsOneSeries) {
     EXPECT_EQ(slurp(dir / "notes.txt"), "mine");
 }
 
+
+// --overwrite replaces the old series only once the new one is about to be written: a new job
+// refused for its camera, or one with only night instants, leaves the old frames as they were.
+TEST(OneJobPerOutputCli, AFailedOverwriteLeavesTheOldSeries) {
+    const fs::path dir = temp_dir("failed_overwrite");
+    const std::string base = "relight " + quote(kDem) + kCrop + " --directions 8 --exposure 13 --out " +
+                             quote(dir.string()) + " --times 2025-06-21T08:00Z/2025-06-21T09:00Z/PT1H";
+    ASSERT_EQ(run(ts_cmd(base)).exit_code, 0);
+    const std::map<std::string, std::string> first = snapshot(dir);
+    for (const std::string& bad : {std::string(" --overwrite --view perspective --camera 5.75,45.2,-5000,0,-10,60"),
+                                   std::string(" --overwrite --times 2025-06-21T22:00Z/2025-06-21T23:00Z/PT1H")}) {
+        const Result r = run(ts_cmd(base + bad));
+        EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.err;
+        EXPECT_EQ(snapshot(dir), first) << bad;
+    }
+    // A new folder for a refused job is not left behind.
+    const fs::path fresh = temp_dir("failed_overwrite_new") / "frames";
+    EXPECT_EQ(run(ts_cmd("relight " + quote(kDem) + kCrop + " --out " + quote(fresh.string()) +
+                         " --times 2025-06-21T08:00Z/2025-06-21T09:00Z/PT1H --view perspective --camera 5.75,45.2,-5000,0,-10,60"))
+                  .exit_code,
+              2);
+    EXPECT_FALSE(fs::exists(fresh));
+}
+
+// A tile set is replaced only by a job whose inputs are read: an unreadable --sky map, or a
+// --debug-heights that names no tile of the job, is refused before the folder is touched, and
+// a folder made for such a job does not stay.
+TEST(OneJobPerOutputCli, ATilesJobWithBadInputsLeavesTheOldSet) {
+    const fs::path root = temp_dir("tiles_bad_inputs");
+    const fs::path dir = root / "t";
+    const std::string base = "tiles " + quote(kDem) + kCrop + " --zoom 9 --out " + quote(dir.string());
+    ASSERT_EQ(run(ts_cmd(base)).exit_code, 0);
+    const std::map<std::string, std::string> first = snapshot(dir);
+    std::ofstream(root / "bad.hdr") << "not a picture";
+    for (const std::string& bad : {" --overwrite --sky hdr:" + quote((root / "bad.hdr").string()),
+                                   " --overwrite --sky hdr:" + quote((root / "none.hdr").string()),
+                                   std::string(" --overwrite --sun-azimuth 200 --debug-heights 99/1/1"),
+                                   std::string(" --overwrite --sun-azimuth 200 --debug-heights nine")}) {
+        const Result r = run(ts_cmd(base + bad));
+        EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.err;
+        EXPECT_EQ(snapshot(dir), first) << bad;
+    }
+    const fs::path fresh = root / "new";
+    EXPECT_EQ(run(ts_cmd("tiles " + quote(kDem) + kCrop + " --zoom 9 --out " + quote(fresh.string()) + " --sky hdr:" +
+                         quote((root / "bad.hdr").string())))
+                  .exit_code,
+              2);
+    EXPECT_FALSE(fs::exists(fresh));
+}
+
+// Two outputs that are one file, however spelt, are refused.
+TEST(OneJobPerOutputCli, OneFileIsNotTwoOutputs) {
+    const fs::path dir = temp_dir("written_twice");
+    const Result r = run("cd " + quote(dir.string()) + " && " +
+                         ts_cmd("visibility " + quote(kDem) + kCrop + " --directions 8 --svf a.tif --sky-visible ./a.tif"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("written twice"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "a.tif"));
+}
+
+// A DEM edited in place (same size and place, other heights) is another tile job: its tiles are
+// made anew, not resumed from the old DEM's.
+TEST(OneJobPerOutputCli, TilesOfAnEditedDemAreNotResumed) {
+    const fs::path root = temp_dir("edited_dem");
+    const fs::path dem = root / "d.tif", dir = root / "t";
+    ASSERT_EQ(run("gdal_translate -q -srcwin 100 100 120 120 " + quote(kDem) + " " + quote(dem.string())).exit_code, 0);
+    const std::string cmd = "tiles " + quote(dem.string()) + " --zoom 10 --style hillshade --out " + quote(dir.string());
+    ASSERT_EQ(run(ts_cmd(cmd)).exit_code, 0);
+    ASSERT_EQ(run("gdal_calc.py --quiet -A " + quote(dem.string()) + " --outfile=" + quote((root / "e.tif").string()) +
+                  " --calc=A*2 && mv " + quote((root / "e.tif").string()) + " " + quote(dem.string()))
+                  .exit_code,
+              0);
+    const Result again = run(ts_cmd(cmd));
+    EXPECT_EQ(again.exit_code, 2) << again.out << again.err;  // another job: refused without --overwrite
+    EXPECT_NE(again.err.find("another job"), std::string::npos) << again.err;
+}
+
 }  // namespace
 }  // namespace ts::cli_test

@@ -110,10 +110,19 @@ Atmosphere Atmosphere::standard_at(double height_m) {
 }
 
 double refraction_correction_deg(double e0, const Atmosphere& atm) {
-    if (e0 < -(kSunRadiusDeg + kHorizonRefractionDeg)) return 0.0;  // the sun is below the horizon
     // Eq. 42: Saemundsson (1986) for the unrefracted elevation, arcminutes -> degrees.
-    return (atm.pressure_hpa / 1010.0) * (283.0 / (273.0 + atm.temperature_c)) * 1.02 /
-           (60.0 * std::tan(rad(e0 + 10.3 / (e0 + 5.11))));
+    const auto saemundsson = [&](double e) {
+        return (atm.pressure_hpa / 1010.0) * (283.0 / (273.0 + atm.temperature_c)) * 1.02 /
+               (60.0 * std::tan(rad(e + 10.3 / (e + 5.11))));
+    };
+    const double threshold = -(kSunRadiusDeg + kHorizonRefractionDeg);
+    if (e0 >= threshold) return saemundsson(e0);
+    // The SPA stops refracting here, where a sea-level observer's sun has set: the sun would drop
+    // 0.6 degree from one minute to the next, and a peak, whose horizon lies lower, would see
+    // its light go out at once. Faded instead, linearly to nothing at kRefractionEndDeg (where
+    // the formula nears its pole at -5.11): continuous, and the apparent sun still sinks.
+    if (e0 <= kRefractionEndDeg) return 0.0;
+    return saemundsson(threshold) * (e0 - kRefractionEndDeg) / (threshold - kRefractionEndDeg);
 }
 
 SunPosition sun_position(const SunPositionInput& in) {

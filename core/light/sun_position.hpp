@@ -75,7 +75,10 @@ struct SunPosition {
 SunPosition sun_position(const SunPositionInput& input);
 
 // The SPA's refraction correction (Saemundsson's formula with pressure and temperature), in
-// degrees, for an unrefracted topocentric elevation; 0 below the threshold above.
+// degrees, for an unrefracted topocentric elevation. Below the threshold above, where the SPA
+// gives 0, it fades linearly from the threshold's value to 0 at kRefractionEndDeg, so the sun
+// sets and rises without a jump (a mountain still sees it there).
+constexpr double kRefractionEndDeg = -5.0;
 double refraction_correction_deg(double elevation_unrefracted_deg, const Atmosphere& atmosphere);
 
 // The unit vector towards the sun in the local ENU frame (x east, y north, z up), from the

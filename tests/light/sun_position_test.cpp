@@ -190,10 +190,21 @@ TEST(SunPosition, RefractionFollowsTheSpaFormula) {
     const Atmosphere standard{1010.0, 10.0};
     // 1.02 / tan(10.3 / 5.11 deg) arcmin at the horizon, 28.98'.
     EXPECT_NEAR(refraction_correction_deg(0.0, standard), 28.98 / 60.0, 0.01 / 60.0);
-    // Nothing once the whole disc is below the horizon, something just above that.
+    // Below the SPA's threshold (the whole disc below a sea-level horizon) it fades, without a
+    // jump, to nothing at kRefractionEndDeg; the refracted sun still sinks as the true one does.
     const double threshold = -(kSunRadiusDeg + kHorizonRefractionDeg);
-    EXPECT_EQ(refraction_correction_deg(threshold - 1e-6, standard), 0.0);
+    EXPECT_NEAR(refraction_correction_deg(threshold - 1e-6, standard), refraction_correction_deg(threshold, standard),
+                1e-5);
     EXPECT_GT(refraction_correction_deg(threshold + 1e-6, standard), 0.5);
+    EXPECT_EQ(refraction_correction_deg(kRefractionEndDeg, standard), 0.0);
+    EXPECT_EQ(refraction_correction_deg(-10.0, standard), 0.0);
+    double last = 2.0 + refraction_correction_deg(2.0, standard);
+    for (double e = 1.99; e >= -6.0; e -= 0.01) {
+        const double apparent = e + refraction_correction_deg(e, standard);
+        EXPECT_LT(apparent, last) << e;
+        EXPECT_LT(last - apparent, 0.02) << e;  // no jump: 0.01 degree steps move it < 0.02
+        last = apparent;
+    }
     // Proportional to pressure, zero in vacuum, and small high up.
     EXPECT_NEAR(refraction_correction_deg(10.0, {505.0, 10.0}), 0.5 * refraction_correction_deg(10.0, standard), 1e-12);
     EXPECT_EQ(refraction_correction_deg(10.0, {0.0, 10.0}), 0.0);

@@ -5,6 +5,26 @@
 #include <limits>
 
 namespace ts::tiles {
+namespace {
+
+// A DEM around a pole (a polar stereographic grid) has an outline that never reaches it: the
+// box then runs up to Web Mercator's edge, all the way round. `has_terrain(col, row)`: whether
+// the texel holding the pole is terrain.
+template <class HasTerrain>
+void include_poles(const geo::Georef& g, double& west, double& south, double& east, double& north,
+                   HasTerrain has_terrain) {
+    for (const double lat : {90.0, -90.0}) {
+        const glm::dvec2 px = g.lonlat_to_pixel({0.0, lat});
+        if (!(std::isfinite(px.x) && std::isfinite(px.y) && px.x >= 0 && px.y >= 0 && px.x <= g.width() &&
+              px.y <= g.height()))
+            continue;
+        if (!has_terrain(std::min(int(px.x), g.width() - 1), std::min(int(px.y), g.height() - 1))) continue;
+        west = -180.0, east = 180.0;
+        (lat > 0 ? north : south) = lat;
+    }
+}
+
+}  // namespace
 
 LonLatBox dem_footprint(const geo::Georef& g) {
     constexpr int kPerEdge = 64;
@@ -19,6 +39,7 @@ LonLatBox dem_footprint(const geo::Georef& g) {
         add(f * g.width(), 0), add(f * g.width(), g.height());
         add(0, f * g.height()), add(g.width(), f * g.height());
     }
+    if (!g.crs().is_geographic()) include_poles(g, w, s, e, n, [](int, int) { return true; });
     LonLatBox box{std::max(w, -180.0), std::max(s, -kMaxLatitudeDeg), std::min(e, 180.0),
                   std::min(n, kMaxLatitudeDeg)};
     if (box.empty()) return {};
@@ -52,6 +73,9 @@ LonLatBox terrain_footprint(const dem::Dem& dem) {
         if (row_first[std::size_t(r)] >= 0) add_texel(row_first[std::size_t(r)], r), add_texel(row_last[std::size_t(r)], r);
     for (int c = 0; c < w; ++c)
         if (col_first[std::size_t(c)] >= 0) add_texel(c, col_first[std::size_t(c)]), add_texel(c, col_last[std::size_t(c)]);
+    if (!dem.georef.crs().is_geographic())
+        include_poles(dem.georef, west, south, east, north,
+                      [&](int c, int r) { return !std::isnan(dem.z[dem.index(c, r)]); });
     LonLatBox box{std::max(west, -180.0), std::max(south, -kMaxLatitudeDeg), std::min(east, 180.0),
                   std::min(north, kMaxLatitudeDeg)};
     if (box.empty()) return {};

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/geo/crs.hpp"
 #include "core/tiles/tile_export.hpp"
 #include "core/tiles/zoom_exaggeration.hpp"
 
@@ -49,6 +50,34 @@ TEST(DemFootprint, TheTerrainsFootprintLeavesTheCollarOut) {
     EXPECT_NEAR(b.north, 40.0, 1e-9);
     EXPECT_NEAR(b.south, 40.0 - 700.0 / 1200, 1e-9);
     EXPECT_LT(tiles_covering(b, 14, 14).size(), tiles_covering(outline, 14, 14).size());
+}
+
+// A DEM around a pole (polar stereographic, 6000 km square on the North Pole) reaches Web
+// Mercator's edge all the way round: its outline never does, the pole inside it does.
+TEST(DemFootprint, ADemAroundAPoleReachesTheMapsEdge) {
+    for (const int epsg : {3413, 3031}) {
+        const auto crs = geo::Crs::from_epsg(epsg);
+        geo::GeoTransform t{-3e6, 50000, 0, 3e6, 0, -50000};
+        dem::Dem d;
+        d.width = d.height = 120;
+        d.georef = geo::Georef(120, 120, t, crs, true);
+        d.z.assign(std::size_t(120) * 120, 100.0f);
+        d.void_mask.assign(d.z.size(), 0);
+        for (const LonLatBox& b : {dem_footprint(d.georef), terrain_footprint(d)}) {
+            EXPECT_EQ(b.west, -180.0) << epsg;
+            EXPECT_EQ(b.east, 180.0) << epsg;
+            if (epsg == 3413) EXPECT_EQ(b.north, kMaxLatitudeDeg);
+            else EXPECT_EQ(b.south, -kMaxLatitudeDeg);
+            // Zoom 2's polar row is planned: 4 tiles across.
+            int polar = 0;
+            for (const TileId& id : tiles_covering(b, 2, 2)) polar += epsg == 3413 ? id.y == 0 : id.y == 3;
+            EXPECT_EQ(polar, 4) << epsg;
+        }
+        // Without terrain at the pole (its texels void), the terrain's box stops at its outline.
+        for (int r = 50; r < 70; ++r)
+            for (int c = 50; c < 70; ++c) d.z[d.index(c, r)] = NAN;
+        EXPECT_LT(std::abs(epsg == 3413 ? terrain_footprint(d).north : terrain_footprint(d).south), kMaxLatitudeDeg);
+    }
 }
 
 TEST(DemFootprint, TilesCoveringAreTheIntersectingOnes) {

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/util/error.hpp"
+#include "core/util/temp_files.hpp"
 
 namespace ts::app {
 namespace fs = std::filesystem;
@@ -31,22 +32,23 @@ std::string normalised(const fs::path& p) {
 fs::path lock_folder() {
     std::error_code ec;
     fs::path base = fs::temp_directory_path(ec);
-    if (ec) base = "/tmp";
-    const fs::path dir = base / ("terrashade-locks-" + std::to_string(::getuid()));
-    ::mkdir(dir.c_str(), 0700);  // exists already: fine
-    return dir;
+    return ec ? fs::path("/tmp") : base;
 }
 
 }  // namespace
 
 OutputLock::OutputLock(const fs::path& output, const std::string& what) {
     const std::string key = normalised(output);
-    char name[32];
-    std::snprintf(name, sizeof name, "%016zx.lock", std::hash<std::string>{}(key));
+    char name[64];
+    std::snprintf(name, sizeof name, "terrashade-%u-%016zx.lock", unsigned(::getuid()), std::hash<std::string>{}(key));
     file_ = lock_folder() / name;
+    temp_files::track(file_);  // an interrupt removes it with the temporaries
     for (;;) {
         fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
-        if (fd_ < 0) return;  // no lock folder (a read-only /tmp): run unguarded rather than not at all
+        if (fd_ < 0) {  // a read-only temporary folder: run unguarded rather than not at all
+            temp_files::forget(file_);
+            return;
+        }
         if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) break;
         // The holder before us removes the file as it lets go: a lock on a file no longer at
         // the path guards nothing, so take the one there now.
@@ -69,6 +71,7 @@ OutputLock::OutputLock(const fs::path& output, const std::string& what) {
         if (*c == '\n') *c = '\0';
     ::close(fd_);
     fd_ = -1;
+    temp_files::forget(file_);  // the other job's
     const std::string who = *pid ? " (process " + std::string(pid) + ")" : "";
     throw input_error(output.string(),
                       "another terrashade job" + who + " is writing it; wait for it to end, or write elsewhere (" + what + ")");
@@ -77,7 +80,8 @@ OutputLock::OutputLock(const fs::path& output, const std::string& what) {
 OutputLock::~OutputLock() {
     if (fd_ < 0) return;
     ::unlink(file_.c_str());  // nothing left behind; a job waiting on it retries (above)
-    ::close(fd_);             // closing drops the flock
+    temp_files::forget(file_);
+    ::close(fd_);  // closing drops the flock
 }
 
 }  // namespace ts::app

@@ -19,14 +19,15 @@ namespace fs = std::filesystem;
 TEST(OutputLock, ASecondHolderIsRefusedWhateverThePathsSpelling) {
     const fs::path dir = temp_dir("output_lock");
     const fs::path out = dir / "tiles";
-    const auto locks_before = [] {
+    const auto lock_files = [] {  // terrashade-UID-HASH.lock in the temporary folder
         std::size_t n = 0;
         std::error_code ec;
-        for (const auto& e : fs::directory_iterator(fs::temp_directory_path() / ("terrashade-locks-" + std::to_string(::getuid())), ec))
-            n += e.path().extension() == ".lock";
+        const std::string prefix = "terrashade-" + std::to_string(::getuid()) + "-";
+        for (const auto& e : fs::directory_iterator(fs::temp_directory_path(), ec))
+            n += e.path().filename().string().starts_with(prefix) && e.path().extension() == ".lock";
         return n;
     };
-    const std::size_t before = locks_before();
+    const std::size_t before = lock_files();
     {
         app::OutputLock held(out, "--out");
         for (const fs::path& other : {out, fs::path(out.string() + "/"), dir / "." / "tiles", dir / "x" / ".." / "tiles"})
@@ -40,8 +41,11 @@ TEST(OutputLock, ASecondHolderIsRefusedWhateverThePathsSpelling) {
         }
         app::OutputLock elsewhere(dir / "other", "--out");  // another output is free
     }
-    app::OutputLock after(out, "--out");  // let go: free again
-    EXPECT_LE(locks_before(), before + 1);
+    {
+        app::OutputLock after(out, "--out");  // let go: free again
+        EXPECT_EQ(lock_files(), before + 1);
+    }
+    EXPECT_EQ(lock_files(), before);  // nothing left behind
 }
 
 // A tiles job on a folder another job holds is refused at once and the folder is left as it was.

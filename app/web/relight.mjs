@@ -155,9 +155,18 @@ export function siteOf(meta) {
   return {latitudeDeg: meta.site.latitude_deg, longitudeDeg: meta.site.longitude_deg, heightM: meta.site.height_m};
 }
 
+// The sun ({azimuthDeg, elevationDeg}, azimuth from true north as sunPosition gives it) on the
+// DEM's grid, where the tiles' horizons, normals and transfers are: a projected grid's north is
+// not true north (site.grid_north_deg, the meridian convergence; 0 on geographic grids).
+export function onGrid(meta, sun) {
+  const turn = meta.site.grid_north_deg ?? 0;
+  return turn === 0 ? sun : {...sun, azimuthDeg: (((sun.azimuthDeg + turn) % 360) + 360) % 360};
+}
+
 // The light of one instant: the sun at {azimuthDeg, elevationDeg} (sunPosition's) under the
 // tile set's `sky` ('clear' or 'overcast'; default the job's). Luminance-weighted for relief.
-export function lightFor(meta, sun, skyName = meta.sky) {
+export function lightFor(meta, trueSun, skyName = meta.sky) {
+  const sun = onGrid(meta, trueSun);
   const table = meta.skies[skyName];
   if (!table) throw new Error(`no sky "${skyName}" in lightable.json`);
   const {sh, sun: e} = skyAtElevation(table, sun.elevationDeg);
@@ -579,7 +588,7 @@ export function sunHoursTexels(tile, meta, date, sunAt, stepMinutes = 10) {
   const day = Date.UTC(date.getUTCFullYear(), date.getUTCMonth(), date.getUTCDate());
   const radius = meta.skies.clear.sun_radius_rad;
   for (let m = stepMinutes / 2; m < 24 * 60; m += stepMinutes) {
-    const sun = sunAt(new Date(day + m * 60000));
+    const sun = onGrid(meta, sunAt(new Date(day + m * 60000)));
     if (sun.elevationDeg < -1) continue;
     const s = sunDirection(sun);
     sunVisibility(tile, {azimuthDeg: sun.azimuthDeg, el: sun.elevationDeg * DEG, radius}, vis);

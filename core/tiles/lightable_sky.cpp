@@ -94,7 +94,7 @@ std::string lightable_json(const TileShading& s, const LightableSite& site, cons
                                ",\"exposure\":" + number(kColorExposure) + "}";
     return "{\"format\":\"terrashade-lightable\",\"version\":2,\"site\":{\"longitude_deg\":" + number(site.longitude_deg) +
            ",\"latitude_deg\":" + number(site.latitude_deg) + ",\"height_m\":" + number(site.height_m) +
-           "},\"relief_contrast\":" + number(s.relief_contrast) + ",\"flat_grey\":0.5,\"light_directions\":" +
+           ",\"grid_north_deg\":" + number(site.grid_north_deg) + "},\"relief_contrast\":" + number(s.relief_contrast) + ",\"flat_grey\":0.5,\"light_directions\":" +
            std::to_string(s.light_directions) + ",\"stored_directions\":[" + dirs + "],\"components\":" +
            std::to_string(s.light_components) + ",\"flat_transfer\":[" + flat + "],\"colors\":" + colors + ",\"sky\":\"" + default_sky +
            "\",\"skies\":{\"clear\":" + sky_table_json(clear) + ",\"overcast\":" + sky_table_json(overcast) + "}}\n";

@@ -23,6 +23,9 @@ namespace ts::tiles {
 
 struct LightableSite {
     double longitude_deg = 0, latitude_deg = 0, height_m = 0;
+    // Where true north lies on the DEM's grid (Georef::grid_azimuth_of_north_deg): the stored
+    // directions are the grid's, so the reader turns the sun's true azimuth by it.
+    double grid_north_deg = 0;
 };
 
 // The sun elevations tabulated (degrees): 0.25 apart from -6 to 12 (light changes fastest near

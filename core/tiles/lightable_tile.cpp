@@ -104,7 +104,7 @@ double max_sun_elevation_rad(double latitude_deg) {
     return (90.0 - std::max(0.0, std::abs(latitude_deg) - kObliquityDeg)) * std::numbers::pi / 180.0;
 }
 
-std::vector<SunBand> sun_bands(double latitude_deg, int directions) {
+std::vector<SunBand> sun_bands(double latitude_deg, int directions, double grid_north_deg) {
     const double deg = std::numbers::pi / 180.0;
     const double phi = latitude_deg * deg;
     // Per interval between adjacent directions: the sun's lowest and highest elevation there.
@@ -117,9 +117,9 @@ std::vector<SunBand> sun_bands(double latitude_deg, int directions) {
             const double sin_el = std::sin(phi) * std::sin(d) + std::cos(phi) * std::cos(d) * std::cos(h);
             const double el = std::asin(std::clamp(sin_el, -1.0, 1.0));
             if (el < -2.0 * deg) continue;
-            // Clockwise from north.
+            // Clockwise from north, then on the grid (whose directions are stored).
             double az = std::atan2(std::sin(h), std::cos(h) * std::sin(phi) - std::tan(d) * std::cos(phi)) / deg + 180.0;
-            az = std::fmod(az + 360.0, 360.0);
+            az = std::fmod(az + grid_north_deg + 720.0, 360.0);
             const std::size_t i = std::size_t(int(std::floor(az / step)) % directions);
             lo[i] = std::min(lo[i], el), hi[i] = std::max(hi[i], el);
         }
@@ -258,8 +258,13 @@ std::vector<std::uint8_t> encode_lightable_tile(const LightableTexels& tx, const
     for (double v : w_hi) put_float(header, v);
     for (double v : b_lo) put_float(header, v);
     for (double v : b_hi) put_float(header, v);
-    for (float v : px.x) put_float(header, v);
-    for (float v : px.y) put_float(header, v);
+    if (px.separable) {
+        for (float v : px.x) put_float(header, v);
+        for (float v : px.y) put_float(header, v);
+    } else {
+        // x then y per node, as the header comment says and the reader reads.
+        for (std::size_t k = 0; k < px.x.size(); ++k) put_float(header, px.x[k]), put_float(header, px.y[k]);
+    }
     const int header_rows = int((header.size() + std::size_t(width) - 1) / std::size_t(width));
     header[12] = std::uint8_t(header_rows & 255), header[13] = std::uint8_t(header_rows >> 8);
 

@@ -82,7 +82,7 @@ struct LightableEncoding {
 // The directions the sun shines from at `latitude_deg` on some day of a year (above -2 degrees
 // on either side of the direction: the reader interpolates between adjacent directions), each
 // with the sun's band there.
-std::vector<SunBand> sun_bands(double latitude_deg, int directions);
+std::vector<SunBand> sun_bands(double latitude_deg, int directions, double grid_north_deg = 0.0);
 // The sun's highest elevation over a year at a latitude, radians.
 double max_sun_elevation_rad(double latitude_deg);
 

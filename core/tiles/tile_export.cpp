@@ -153,13 +153,15 @@ LightableEncoding lightable_encoding(const dem::Dem& dem, const TileShading& s) 
     LightableEncoding e;
     e.directions = s.light_directions;
     e.components = s.light_components;
-    e.bands = sun_bands(latitude, s.light_directions);
+    e.bands = sun_bands(latitude, s.light_directions, dem.georef.grid_azimuth_of_north_deg());
     return e;
 }
 
 std::string lightable_json(const dem::Dem& dem, const TileShading& s) {
     const render::SunSite site = render::sun_site(dem);
-    return lightable_json(s, {site.longitude_deg, site.latitude_deg, site.height_m}, flat_diffuse_transfer(s),
+    return lightable_json(s,
+                          {site.longitude_deg, site.latitude_deg, site.height_m, dem.georef.grid_azimuth_of_north_deg()},
+                          flat_diffuse_transfer(s),
                           lightable_encoding(dem, s).bands);
 }
 

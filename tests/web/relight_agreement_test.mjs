@@ -6,7 +6,10 @@
 //   node tests/web/relight_agreement_test.mjs TERRASHADE DEM TMPDIR [ZOOM]
 // Prints the differences' percentiles per instant and fails if they exceed the bounds below.
 // LIGHT_ARGS and REF_ARGS add options to the lightable and to the relief/color jobs (studies:
-// e.g. REF_ARGS="--bounces 0" shows what the bounce adds).
+// e.g. REF_ARGS="--bounces 0" shows what the bounce adds). WARP_SRS (and WARP_RES, metres)
+// reprojects the DEM first with gdalwarp: a projected grid, whose pixels sample the level through
+// a non-separable map and whose north is not true north (the polar stereographic EPSG:3413 turns
+// it by 50 degrees at Grenoble).
 import {execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -14,7 +17,7 @@ import {decodePng} from '../../app/web/png.mjs';
 import {readLightableTile, lightFor, relightTile, siteOf} from '../../app/web/relight.mjs';
 import {sunPosition} from '../../app/web/sun_position.mjs';
 
-const [binary, dem, tmp, zoomText = '11'] = process.argv.slice(2);
+const [binary, source, tmp, zoomText = '11'] = process.argv.slice(2);
 if (!tmp) {
   console.error('usage: node tests/web/relight_agreement_test.mjs TERRASHADE DEM TMPDIR [ZOOM]');
   process.exit(2);
@@ -30,12 +33,19 @@ const instants = [['2024-06-21T05:30Z', 'clear'], ['2024-06-21T11:30Z', 'clear']
 // cannot share), and the bounce: the data tiles' transfer bounces off the palette's albedo
 // where relief's bounces off grey 0.18, so shadows relight 0.8 codes too bright.
 // LIGHT_ARGS="--light-directions 64 ..." passes options to the lightable run (studies).
-const bounds = {p50: 0, p90: 1, p99: 5, mean: 0.45};
+// BOUNDS (JSON) replaces some of them: the projected case measures a mean of 0.454 at 05:30.
+const bounds = {p50: 0, p90: 1, p99: 5, mean: 0.45, ...JSON.parse(process.env.BOUNDS ?? '{}')};
 
 fs.mkdirSync(tmp, {recursive: true});
 const work = fs.mkdtempSync(path.join(tmp, 'relight-'));
 let failed = false;
+let dem = source;
 try {
+  if (process.env.WARP_SRS) {
+    dem = path.join(work, 'warped.tif');
+    execFileSync('gdalwarp', ['-q', '-t_srs', process.env.WARP_SRS, '-tr', process.env.WARP_RES ?? '250',
+                              process.env.WARP_RES ?? '250', '-r', 'bilinear', source, dem]);
+  }
   const run = (args) => execFileSync(binary, args, {stdio: ['ignore', 'ignore', 'inherit']});
   const lightable = path.join(work, 'lightable');
   run(['tiles', dem, '--zoom', `${zoom}`, '--style', 'lightable', ...(process.env.LIGHT_ARGS ? process.env.LIGHT_ARGS.split(' ') : []), '--out', lightable]);

@@ -72,6 +72,7 @@ void print_json(const dem::Dem& d, const InfoOptions& opts, const dem::HeightSta
     j["nodata_hole_count"] = kinds.hole_texels;
     j["nodata_holes"] = kinds.holes;
     j["vertical_datum"] = d.vertical_datum;
+    j["height_unit"] = d.height_unit;  // as stored; heights are reported in metres
     j["credit"] = d.credit;
     std::cout << j.dump(2) << "\n";
 }
@@ -103,8 +104,9 @@ void print_text(const dem::Dem& d, const dem::HeightStats& s) {
                     "sun azimuths are true, turned onto the grid by it)\n",
                     g.grid_azimuth_of_north_deg());
     if (s.valid_count)
-        std::printf("  heights      min %.6g m, max %.6g m, mean %.3f m (%s)\n", s.min, s.max, s.mean,
-                    d.vertical_datum.c_str());
+        std::printf("  heights      min %.6g m, max %.6g m, mean %.3f m (%s%s)\n", s.min, s.max, s.mean,
+                    d.vertical_datum.c_str(),
+                    d.height_unit == "metre" ? "" : ("; stored in " + d.height_unit + ", converted").c_str());
     else
         std::printf("  heights      none (every cell is a void)\n");
     if (!d.credit.empty()) std::printf("  credit       %s\n", d.credit.c_str());

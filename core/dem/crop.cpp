@@ -55,6 +55,7 @@ Dem crop(const Dem& dem, const LonLatBox& box) {
         }
     out.georef = dem.georef.window(col0, row0, out.width, out.height);
     out.vertical_datum = dem.vertical_datum;
+    out.height_unit = dem.height_unit;
     out.credit = dem.credit;
     out.source = dem.source;
     return out;
@@ -75,6 +76,7 @@ Dem texel_window(const Dem& dem, int col0, int row0, int width, int height) {
         }
     out.georef = dem.georef.window(col0, row0, out.width, out.height);
     out.vertical_datum = dem.vertical_datum;
+    out.height_unit = dem.height_unit;
     out.credit = dem.credit;
     out.source = dem.source;
     return out;

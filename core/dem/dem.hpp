@@ -21,6 +21,8 @@ struct Dem {
     geo::Georef georef;
     // Vertical datum of the heights, e.g. "EGM96 geoid" for SRTM; "unknown" if the file is silent.
     std::string vertical_datum = "unknown";
+    // The unit the file stored the heights in ("metre", "US survey foot"): z is in metres always.
+    std::string height_unit = "metre";
     // Who made the heights, as the files say (a GeoTIFF's copyright tag, a Copernicus DEM's
     // DTED metadata, SRTM for .hgt); empty when they are silent. Maps credit it.
     std::string credit;

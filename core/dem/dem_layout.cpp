@@ -8,6 +8,7 @@ DemLayout layout_of(const Dem& dem) {
     layout.height = dem.height;
     layout.georef = dem.georef;
     layout.vertical_datum = dem.vertical_datum;
+    layout.height_unit = dem.height_unit;
     layout.credit = dem.credit;
     layout.source = dem.source;
     return layout;
@@ -21,6 +22,7 @@ Dem allocate_dem(const DemLayout& layout) {
     dem.void_mask.assign(dem.z.size(), 0);
     dem.georef = layout.georef;
     dem.vertical_datum = layout.vertical_datum;
+    dem.height_unit = layout.height_unit;
     dem.credit = layout.credit;
     dem.source = layout.source;
     return dem;

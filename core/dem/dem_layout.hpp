@@ -12,6 +12,8 @@ struct DemLayout {
     int width = 0, height = 0;
     geo::Georef georef;                 // as mosaic(read_dem(...)) would give
     std::string vertical_datum = "unknown";
+    // The unit the file stores heights in ("metre", "US survey foot"); readers convert to metres.
+    std::string height_unit = "metre";
     std::string credit;                 // Dem::credit
     std::string source;                 // the file(s), for messages
 };

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "core/geo/crs.hpp"
 #include "core/raster/geotiff_georef.hpp"
 #include "core/util/error.hpp"
 #include "core/util/memory.hpp"
@@ -95,6 +96,43 @@ std::string vertical_datum_from_gdal_metadata(TIFF* tif) {
     if (code == "E96") return "EGM96 geoid";
     if (code == "E08") return "EGM2008 geoid";
     return {};
+}
+
+// The unit of the heights: GDAL's band unit type (GDAL_METADATA, role "unittype"), else
+// VerticalUnitsGeoKey, else the unit of the vertical CRS's axis (EPSG:6360 is in US survey
+// feet); metres when the file is silent. A unit that is not a length is refused: heights taken
+// as metres in the wrong unit would exaggerate the relief 3.28 times without a word.
+geo::LinearUnit height_unit(TIFF* tif, const raster::GeoTiffGeoref& geo, const std::string& source) {
+    const char* xml = nullptr;
+    if (TIFFGetField(tif, TIFFTAG_GDAL_METADATA, &xml) && xml) {
+        const std::string text = xml;
+        const auto role = text.find("role=\"unittype\"");
+        if (role != std::string::npos) {
+            const auto from = text.find('>', role), to = text.find('<', role);
+            std::string name = from != std::string::npos && to != std::string::npos && to > from ? text.substr(from + 1, to - from - 1) : "";
+            std::string key;
+            for (char c : name)
+                if (!std::isspace(static_cast<unsigned char>(c))) key += char(std::tolower(static_cast<unsigned char>(c)));
+            if (key.empty() || key == "m" || key == "metre" || key == "meter" || key == "metres" || key == "meters" ||
+                key == "unknown")
+                return {"metre", 1.0};
+            if (key == "ft" || key == "foot" || key == "feet" || key == "internationalfoot" || key == "ftintl" ||
+                key == "ft_intl")
+                return {"foot", 0.3048};
+            if (key == "ussurveyfoot" || key == "ussurveyfeet" || key == "ftus" || key == "us-ft" || key == "usft" ||
+                key == "foot_us" || key == "usfoot")
+                return {"US survey foot", 1200.0 / 3937.0};
+            throw input_error(source, "heights in '" + name + "' (its GDAL unit type): terrashade reads metres and feet");
+        }
+    }
+    if (geo.vertical_units_code) {
+        if (const auto u = geo::linear_unit(geo.vertical_units_code)) return *u;
+        throw input_error(source, "heights in EPSG unit " + std::to_string(geo.vertical_units_code) +
+                                      " (VerticalUnitsGeoKey), not a length terrashade knows");
+    }
+    if (geo.vertical_cs_code)
+        if (const auto u = geo::vertical_crs_unit(geo.vertical_cs_code)) return *u;
+    return {"metre", 1.0};
 }
 
 // Who made the heights: the copyright tag, else what a Copernicus DEM's DTED metadata says (its
@@ -210,6 +248,9 @@ GeoTiffHeader read_geotiff_header(const raster::TiffFile& file, std::uint64_t ma
     check_blocks_fit_file(tif, h, file_size, source);
 
     h.nodata = gdal_nodata(tif);
+    const geo::LinearUnit unit = height_unit(tif, geo, source);
+    h.metres_per_unit = unit.metres;
+    h.layout.height_unit = unit.metres == 1.0 ? "metre" : unit.name;
     h.layout.georef = std::move(geo.georef);
     h.layout.vertical_datum = geo.vertical_datum;
     if (h.layout.vertical_datum == "unknown")

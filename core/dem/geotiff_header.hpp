@@ -26,7 +26,8 @@ struct TiffBlocks {
 struct GeoTiffHeader {
     DemLayout layout;  // georef, vertical datum (GeoKeys, else GDAL's DTED metadata), source
     SampleType type = SampleType::u8;
-    std::optional<double> nodata;  // GDAL_NODATA
+    std::optional<double> nodata;  // GDAL_NODATA (in the file's unit)
+    double metres_per_unit = 1.0;  // the heights' unit (layout.height_unit): samples are scaled by it
     std::uint16_t compression = 1;
     TiffBlocks blocks;
     // The largest decoded block: a whole tile, or the first (tallest) strip.

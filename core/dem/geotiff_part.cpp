@@ -71,7 +71,7 @@ public:
         auto file = std::make_unique<raster::TiffFile>(path, TiffHandles::kMode);
         header_ = read_geotiff_header(*file, std::uint64_t(-1));
         layout_ = header_.layout;
-        decoder_.emplace(header_.type, header_.nodata);
+        decoder_.emplace(header_.type, header_.nodata, header_.metres_per_unit);
         handles_ = std::make_unique<TiffHandles>(path, std::move(file));
     }
 

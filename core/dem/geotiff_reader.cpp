@@ -16,7 +16,7 @@ Dem read_geotiff(const std::filesystem::path& path) {
                        std::uint64_t(header.layout.height), header.block_bytes);
 
     Dem dem = allocate_dem(header.layout);
-    const SampleDecoder decoder(header.type, header.nodata);
+    const SampleDecoder decoder(header.type, header.nodata, header.metres_per_unit);
     const std::size_t row_bytes = std::size_t(header.blocks.block_w) * std::size_t(decoder.sample_size());
     std::vector<std::uint8_t> block(header.block_bytes);
     for (std::uint32_t i = 0; i < header.blocks.count(); ++i) {

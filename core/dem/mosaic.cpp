@@ -58,8 +58,10 @@ MosaicPlan plan_mosaic(const std::vector<DemLayout>& parts) {
     out.width = int(width);
     out.height = int(height);
     out.vertical_datum = first.vertical_datum;
+    out.height_unit = first.height_unit;
     for (std::size_t k = 0; k < parts.size(); ++k) {
         if (parts[k].vertical_datum != out.vertical_datum) out.vertical_datum = "mixed";
+        if (parts[k].height_unit != out.height_unit) out.height_unit = "mixed (each converted to metres)";
         // Each source credited once.
         if (!parts[k].credit.empty() && out.credit.find(parts[k].credit) == std::string::npos)
             out.credit += (out.credit.empty() ? "" : "; ") + parts[k].credit;

@@ -67,10 +67,11 @@ int sample_bytes(SampleType t) {
 
 // Nodata compares in the sample's own precision (a float32 file's 9999 is 9999.0f); a nodata
 // value no float can hold matches no float32 sample.
-SampleDecoder::SampleDecoder(SampleType type, std::optional<double> nodata)
+SampleDecoder::SampleDecoder(SampleType type, std::optional<double> nodata, double metres_per_unit)
     : type_(type),
       nodata_(nodata),
-      nodata_single_(nodata && is_height(*nodata) ? float(*nodata) : std::numeric_limits<float>::quiet_NaN()) {}
+      nodata_single_(nodata && is_height(*nodata) ? float(*nodata) : std::numeric_limits<float>::quiet_NaN()),
+      metres_per_unit_(metres_per_unit) {}
 
 void SampleDecoder::decode(const std::uint8_t* samples, std::size_t n, float* z, std::uint8_t* voids) const {
     const std::size_t bytes = std::size_t(sample_size());
@@ -79,7 +80,7 @@ void SampleDecoder::decode(const std::uint8_t* samples, std::size_t n, float* z,
         const double v = sample_value(type_, samples + i * bytes);
         bool is_void = !is_height(v);
         if (nodata_ && !is_void) is_void = single ? float(v) == nodata_single_ : v == *nodata_;
-        z[i] = is_void ? std::numeric_limits<float>::quiet_NaN() : float(v);
+        z[i] = is_void ? std::numeric_limits<float>::quiet_NaN() : float(v * metres_per_unit_);
         voids[i] = is_void ? 1 : 0;
     }
 }

@@ -18,7 +18,8 @@ int sample_bytes(SampleType type);
 
 class SampleDecoder {
 public:
-    SampleDecoder(SampleType type, std::optional<double> nodata);
+    // `metres_per_unit`: heights stored in feet come out in metres (nodata compares first).
+    SampleDecoder(SampleType type, std::optional<double> nodata, double metres_per_unit = 1.0);
     int sample_size() const { return sample_bytes(type_); }
     // `n` consecutive samples (host byte order, as libtiff decodes them) -> heights; voids NaN
     // with `voids` 1, else 0.
@@ -32,6 +33,7 @@ private:
     SampleType type_;
     std::optional<double> nodata_;
     float nodata_single_;
+    double metres_per_unit_;
 };
 
 }  // namespace ts::dem

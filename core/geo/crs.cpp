@@ -156,4 +156,40 @@ std::string Crs::to_wkt() const {
     return s ? std::string(s) : std::string();
 }
 
+std::optional<LinearUnit> vertical_crs_unit(int code) {
+    PJ_CONTEXT* ctx = proj_context_create();
+    proj_log_level(ctx, PJ_LOG_NONE);
+    std::optional<LinearUnit> out;
+    const std::string text = std::to_string(code);
+    if (PJ* crs = proj_create_from_database(ctx, "EPSG", text.c_str(), PJ_CATEGORY_CRS, 0, nullptr)) {
+        if (proj_get_type(crs) == PJ_TYPE_VERTICAL_CRS)
+            if (PJ* cs = proj_crs_get_coordinate_system(ctx, crs)) {
+                const char* name = nullptr;
+                double factor = 0;
+                if (proj_cs_get_axis_info(ctx, cs, 0, nullptr, nullptr, nullptr, &factor, &name, nullptr, nullptr) &&
+                    factor > 0)
+                    out = LinearUnit{name ? name : "", factor};
+                proj_destroy(cs);
+            }
+        proj_destroy(crs);
+    }
+    proj_context_destroy(ctx);
+    return out;
+}
+
+std::optional<LinearUnit> linear_unit(int code) {
+    PJ_CONTEXT* ctx = proj_context_create();
+    proj_log_level(ctx, PJ_LOG_NONE);
+    std::optional<LinearUnit> out;
+    const char* name = nullptr;
+    const char* category = nullptr;
+    double factor = 0;
+    const std::string text = std::to_string(code);
+    if (proj_uom_get_info_from_database(ctx, "EPSG", text.c_str(), &name, &factor, &category) && category &&
+        std::string(category) == "linear" && factor > 0)
+        out = LinearUnit{name ? name : "", factor};
+    proj_context_destroy(ctx);
+    return out;
+}
+
 }  // namespace ts::geo

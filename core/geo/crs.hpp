@@ -46,4 +46,15 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// A unit of length: its name and metres per unit.
+struct LinearUnit {
+    std::string name;
+    double metres = 1.0;
+};
+// The unit of the height axis of EPSG vertical CRS `code` (EPSG:6360, NAVD88 height (ftUS): US
+// survey foot), or of EPSG unit of measure `code` (9002: foot); nullopt if PROJ's database does
+// not know it as such.
+std::optional<LinearUnit> vertical_crs_unit(int code);
+std::optional<LinearUnit> linear_unit(int code);
+
 }  // namespace ts::geo

@@ -169,7 +169,11 @@ GeoTiffGeoref read_geotiff_georef(TIFF* tif, int width, int height, const std::s
     }
     GeoTiffGeoref out;
     out.georef = geo::Georef(width, height, edge, crs_from_keys(gt.gt, path), pixel_is_area);
-    if (const auto v = short_key(gt.gt, VerticalCSTypeGeoKey); v && is_code(*v)) out.vertical_datum = vertical_datum_name(*v);
+    if (const auto v = short_key(gt.gt, VerticalCSTypeGeoKey); v && is_code(*v)) {
+        out.vertical_datum = vertical_datum_name(*v);
+        out.vertical_cs_code = *v;
+    }
+    if (const auto u = short_key(gt.gt, VerticalUnitsGeoKey); u && is_code(*u)) out.vertical_units_code = *u;
     return out;
 }
 

@@ -15,6 +15,8 @@ struct GeoTiffGeoref {
     geo::Georef georef;
     // From VerticalCSTypeGeoKey ("EGM96 geoid", "EGM2008 geoid", "EPSG:nnnn"), else "unknown".
     std::string vertical_datum = "unknown";
+    // VerticalCSTypeGeoKey and VerticalUnitsGeoKey as the file gives them (0: absent).
+    int vertical_cs_code = 0, vertical_units_code = 0;
 };
 
 // Throws ts::InputError "path: problem" when the file has no georeferencing or an unknown CRS.

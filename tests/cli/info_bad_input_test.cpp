@@ -179,3 +179,43 @@ TEST(Info, TextAndJsonForATileAndACrop) {
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.out.find("mosaic"), std::string::npos) << help.out;
 }
+
+// Heights stored in feet (a vertical CRS in US survey feet, or GDAL's band unit type) are read
+// as metres: the relief is not exaggerated 3.28 times. A unit that is no length is refused.
+TEST(Info, HeightsInFeetAreConvertedToMetres) {
+    const fs::path dir = temp_dir("info_feet");
+    const std::string metres = (dir / "m.tif").string(), feet = (dir / "ft.tif").string();
+    const std::string vertical = (dir / "ftv.tif").string(), typed = (dir / "ftt.tif").string();
+    ASSERT_EQ(run("gdal_translate -q -ot Float32 -srcwin 0 0 64 64 " + quote(kDem) + " " + quote(metres)).exit_code, 0);
+    ASSERT_EQ(run("gdal_calc.py --quiet -A " + quote(metres) + " --outfile=" + quote(feet) +
+                  " --type=Float32 --calc=A/0.3048006096012192")
+                  .exit_code,
+              0);
+    // The vertical CRS NAVD88 height (ftUS), as a compound CRS's GeoKeys.
+    ASSERT_EQ(run("gdal_translate -q -a_srs EPSG:4326+6360 " + quote(feet) + " " + quote(vertical)).exit_code, 0);
+    // GDAL's band unit type alone.
+    ASSERT_EQ(run("gdal_translate -q " + quote(feet) + " " + quote(typed) + " && gdal_edit.py -units 'US survey foot' " +
+                  quote(typed))
+                  .exit_code,
+              0);
+    auto stats = [](const std::string& file) {
+        const Result r = run(quote(terrashade()) + " info --json " + quote(file));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json{};
+    };
+    const auto m = stats(metres);
+    EXPECT_EQ(m["height_unit"], "metre");
+    for (const std::string& f : {vertical, typed}) {
+        const auto j = stats(f);
+        EXPECT_EQ(j["height_unit"], "US survey foot") << f;
+        EXPECT_NEAR(j["height_max"].get<double>(), m["height_max"].get<double>(), 1e-3) << f;
+        EXPECT_NEAR(j["height_mean"].get<double>(), m["height_mean"].get<double>(), 1e-3) << f;
+    }
+    const std::string odd = (dir / "odd.tif").string();
+    ASSERT_EQ(run("gdal_translate -q " + quote(metres) + " " + quote(odd) + " && gdal_edit.py -units furlong " + quote(odd))
+                  .exit_code,
+              0);
+    const Result r = run(quote(terrashade()) + " info " + quote(odd));
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("furlong"), std::string::npos) << r.err;
+}

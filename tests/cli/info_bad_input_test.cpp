@@ -219,3 +219,33 @@ TEST(Info, HeightsInFeetAreConvertedToMetres) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("furlong"), std::string::npos) << r.err;
 }
+
+// A user-defined CRS with a datum shift (+towgs84, GeogTOWGS84GeoKey) is placed as GDAL places
+// it, and a GeoTIFF written from it keeps the shift: libgeotiff's PROJ strings leave it out,
+// which put ED50 in France 140 m off.
+TEST(Info, ADatumShiftInUserDefinedKeysIsKept) {
+    const fs::path dir = temp_dir("info_towgs84");
+    const std::string ed50 = (dir / "ed50.tif").string(), shade = (dir / "shade.tif").string();
+    const std::string srs = "+proj=tmerc +lat_0=45 +lon_0=5.5 +k=1 +x_0=0 +y_0=0 +ellps=intl "
+                            "+towgs84=-87,-98,-121,0,0,0,0 +units=m";
+    ASSERT_EQ(run("gdalwarp -q -t_srs '" + srs + "' -ts 60 60 " + quote(kDem) + " " + quote(ed50)).exit_code, 0);
+    const auto upper_left = [](const std::string& file) {
+        const Result r = run(quote(terrashade()) + " info --json " + quote(file));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return r.exit_code == 0 ? nlohmann::json::parse(r.out)["corners_lonlat"]["upper_left"] : nlohmann::json{};
+    };
+    const Result gdal = run("gdalinfo -json " + quote(ed50));
+    ASSERT_EQ(gdal.exit_code, 0);
+    const auto g = nlohmann::json::parse(gdal.out)["cornerCoordinates"]["upperLeft"];
+    const Result t = run("echo " + std::to_string(g[0].get<double>()) + " " + std::to_string(g[1].get<double>()) +
+                         " | gdaltransform -output_xy -s_srs '" + srs + "' -t_srs EPSG:4326");
+    double lon = 0, lat = 0;
+    ASSERT_EQ(std::sscanf(t.out.c_str(), "%lf %lf", &lon, &lat), 2) << t.out;
+    const auto mine = upper_left(ed50);
+    EXPECT_NEAR(mine[0].get<double>(), lon, 1e-6);  // 1e-6 degree: 0.1 m; the shift is ~1e-3
+    EXPECT_NEAR(mine[1].get<double>(), lat, 1e-6);
+    ASSERT_EQ(run(quote(terrashade()) + " hillshade " + quote(ed50) + " -o " + quote(shade)).exit_code, 0);
+    const auto written = upper_left(shade);
+    EXPECT_NEAR(written[0].get<double>(), lon, 1e-6);
+    EXPECT_NEAR(written[1].get<double>(), lat, 1e-6);
+}

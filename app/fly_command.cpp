@@ -166,6 +166,20 @@ bool parse_hud(const std::string& text, bool offscreen) {
     throw InputError("--hud " + text + ": give on or off");
 }
 
+// One flight's frames per folder: frame_NNNN.png of another flight (another count or size) beside
+// this one's, under a frames.csv that lists only this one's, would be a mixed series. Refused
+// before any work; the user's other files (and window screenshots) may stay.
+void refuse_another_flight(const std::string& out) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(out, ec)) return;
+    for (const auto& e : std::filesystem::directory_iterator(out, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name == "frames.csv" || (name.starts_with("frame_") && name.ends_with(".png")))
+            throw input_error(out, "holds the frames of another flight (" + name +
+                                       "); remove them (frame_*.png, frames.csv) or write elsewhere");
+    }
+}
+
 void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath& path, fly::CameraMode mode) {
     std::error_code ec;
     if (!std::filesystem::exists(a.out, ec)) {
@@ -180,8 +194,12 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     double worst_error = 0, frame_ms_sum = 0;
     std::size_t tris_sum = 0;
     ProgressBar bar("frames", std::uint64_t(a.frames), "frames");
-    std::string csv = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms,"
-                      "coarse_fallbacks,tiles_resident,tiles_loaded,tiles_ms\n";
+    const std::string header = "frame,t_s,patches,triangles,screen_error_px,screen_error_max_px,select_ms,draw_ms,"
+                               "coarse_fallbacks,tiles_resident,tiles_loaded,tiles_ms\n";
+    std::string csv = header;
+    // An interrupt leaves frames.csv listing exactly the frames on disk.
+    interrupt::InterruptIndex& index =
+        interrupt::index_on_interrupt((std::filesystem::path(a.out) / "frames.csv").string(), header, std::size_t(a.frames));
     const bool hud = parse_hud(a.hud, true);
     double previous_draw_ms = 0;
     for (int i = 0; i < a.frames; ++i) {
@@ -201,12 +219,13 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
         previous_draw_ms = draw_ms;
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
-        gpu::write_rgba_png(std::filesystem::path(a.out) / name, flight.renderer().width(),
-                            flight.renderer().height(), rgba);
         char line[256];
         std::snprintf(line, sizeof line, "%d,%.3f,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%zu,%zu,%zu,%.1f\n", i, t, st.patches,
                       st.triangles, st.screen_error_px, st.screen_error_max_px, st.select_ms, draw_ms, st.coarse_fallbacks,
                       st.tiles_resident, st.tiles_loaded, st.tiles_ms);
+        const std::filesystem::path frame = std::filesystem::path(a.out) / name;
+        index.set(std::size_t(i), frame.string(), line);
+        gpu::write_rgba_png(frame, flight.renderer().width(), flight.renderer().height(), rgba);
         csv += line;
         worst_error = std::max(worst_error, st.screen_error_px);
         frame_ms_sum += draw_ms + st.select_ms;
@@ -217,6 +236,7 @@ void run_frames(const FlyArgs& a, gpu::Flythrough& flight, const fly::FlightPath
     write_atomically(std::filesystem::path(a.out) / "frames.csv", [&](const std::filesystem::path& tmp) {
         std::ofstream(tmp) << csv;
     });
+    index.forget();
     std::printf("wrote %d frames (%dx%d) to %s: %.1f ms and %zu triangles a frame on average, screen-space error <= %.2f px\n",
                 a.frames, flight.renderer().width(), flight.renderer().height(), a.out.c_str(),
                 frame_ms_sum / std::max(1, a.frames), tris_sum / std::size_t(std::max(1, a.frames)), worst_error);
@@ -297,6 +317,7 @@ void run_fly(const FlyArgs& a) {
     plan_colors_input(plan, a.colors);
     if (offscreen) plan.output_directory("--out", a.out);
     plan.check();
+    if (offscreen) refuse_another_flight(a.out);
 
     // The window is the first thing to fail without a display: before any heavy work. The
     // context is made after it (it needs the window's extensions) but must outlive it.

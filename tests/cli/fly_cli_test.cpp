@@ -93,6 +93,16 @@ TEST(FlyCli, FramesOfAPathAreWrittenAndChange) {
     EXPECT_LT(changed, w * h / 10) << "the aircraft covers too much";
     EXPECT_NEAR(cx / changed, w / 2.0, 0.15 * w);
     EXPECT_NEAR(cy / changed, h / 2.0, 0.2 * h);
+
+    // Another flight into the same folder would mix two series under one frames.csv: refused at
+    // once, the first left as it was.
+    const auto csv_before = std::filesystem::last_write_time(bare / "frames.csv");
+    const Result again = run(ts_cmd("fly " + quote(kCopernicusGrenoble) + " --frames 2 --size 160x90 --directions 8 --out " +
+                                    quote(bare.string())));
+    EXPECT_EQ(again.exit_code, 2) << again.err;
+    EXPECT_NE(again.err.find("another flight"), std::string::npos) << again.err;
+    EXPECT_EQ(std::filesystem::last_write_time(bare / "frames.csv"), csv_before);
+    EXPECT_TRUE(std::filesystem::exists(bare / "frame_0002.png"));
 }
 
 // --hud on draws the HUD over the same frame: a dark box with near-white text in the top-left

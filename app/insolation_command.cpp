@@ -119,10 +119,13 @@ void run_insolation(InsolationOptions& o) {
         texel_albedo = solar::shortwave_albedo_of(render::read_landcover_on_grid(o.materials, dem.georef),
                                                   float(settings.albedo));
     // The rows this process sums: all, or its shard's.
-    const IndexRange part = frame_range(std::size_t(dem.height), shard);
-    if (part.size() == 0)
+    // More shards than rows would leave some with no rows to write, and their merge could never
+    // be whole: every shard of such a job refuses, not only the empty ones.
+    if (shard.count > dem.height)
         throw InputError("--shard " + shard_text(shard) + ": the DEM has " + std::to_string(dem.height) +
-                         " rows, fewer than the shards");
+                         " rows, fewer than the " + std::to_string(shard.count) + " shards; use at most " +
+                         std::to_string(dem.height));
+    const IndexRange part = frame_range(std::size_t(dem.height), shard);
     // The first pass covers the rows the reflection's gather reads too (its radius, the bilinear
     // cell and a rounding row, within the DEM), so that a shard's rows get the single run's values.
     const int reach = o.sun.reflection.enabled() ? int(std::ceil(o.sun.reflection.radius_texels)) + 2 : 0;
@@ -220,10 +223,13 @@ void run_insolation(InsolationOptions& o) {
     if (!shard.whole())
         std::printf("shard %s: rows %d..%d of %d\n", shard_text(shard).c_str(), int(part.begin), int(part.end) - 1,
                     dem.height);
-    std::printf("insolation: %dx%d texels, %zu period%s (%s .. %s), %d azimuths x %d bins, %d latitude band%s x %d "
+    const std::string periods = settings.periods.size() == 1
+                                    ? "1 period (" + settings.periods.front().label + ")"
+                                    : std::to_string(settings.periods.size()) + " periods (" +
+                                          settings.periods.front().label + " .. " + settings.periods.back().label + ")";
+    std::printf("insolation: %dx%d texels, %s, %d azimuths x %d bins, %d latitude band%s x %d "
                 "level%s, %zu sun steps of %.3g min\n",
-                dem.width, int(kept_rows), settings.periods.size(), settings.periods.size() == 1 ? "" : "s",
-                settings.periods.front().label.c_str(), settings.periods.back().label.c_str(), o.directions,
+                dem.width, int(kept_rows), periods.c_str(), o.directions,
                 o.bins_per_direction, model.bands(), model.bands() == 1 ? "" : "s", model.levels(),
                 model.levels() == 1 ? "" : "s", model.samples(), settings.step_minutes);
     std::printf("  horizons on %s: %.2f s; sun tables: %.2f s (%.1f MB); per-texel sums: %.2f s; reflection's gather: "

@@ -226,9 +226,9 @@ void run_relight(const RelightArgs& a) {
         std::printf("skipping %zu of %zu instants at night (sun below %.0f degrees; --night include keeps them)\n",
                     night, times.size(), kNightElevationDeg);
     if (down > (skip_night ? night : 0))
-        std::fprintf(stderr, "terrashade: warning: the sun is below the horizon at %zu of %zu times: those frames "
+        std::fprintf(stderr, "terrashade: warning: the sun is below the horizon in %zu of %zu frames: those "
                              "have twilight or night sky light only%s\n",
-                     down - (skip_night ? night : 0), times.size(),
+                     down - (skip_night ? night : 0), frames.size(),
                      skip_night ? "" : " (--night skip leaves out those below -6 degrees)");
     for (std::size_t k = 0; k < frames.size(); ++k) {
         char name[96];

@@ -152,7 +152,7 @@ TEST(RelightCli, OneFramePerTimeAndSunDownWarns) {
                                 " --times 2025-06-21T02:00:00Z/2025-06-21T12:00:00Z/PT5H --night include --out " +
                                 quote((dir / "frames").string())));
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.err.find("below the horizon at 1 of 3"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("below the horizon in 1 of 3 frames"), std::string::npos) << r.err;
     for (const char* name : {"frame_0000_2025-06-21T0200Z.png", "frame_0001_2025-06-21T0700Z.png",
                              "frame_0002_2025-06-21T1200Z.png"}) {
         const auto f = dir / "frames" / name;

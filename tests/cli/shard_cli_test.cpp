@@ -37,6 +37,13 @@ TEST(ShardCli, MalformedShardIsOneLineExit2BeforeWork) {
                          quote((dir / "frames").string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("--shard 2/2"), std::string::npos) << r.err;
+    // More insolation shards than the DEM has rows: every shard refuses (a merge could never be
+    // whole), the first one too, not only those left without rows.
+    const Result many = run_ts("insolation " + kQuotedDem + " --crop 5.7,45.2,5.72,45.22 --from 2025-06-21 --to 2025-06-21 "
+                               "--shard 0/5000 --out " + quote((dir / "i.tif").string()));
+    EXPECT_EQ(many.exit_code, 2) << many.err;
+    EXPECT_NE(many.err.find("use at most"), std::string::npos) << many.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "i.tif"));
 }
 
 TEST(ShardCli, EnvironmentGivesTheShard) {

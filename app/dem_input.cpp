@@ -1,11 +1,13 @@
 #include "app/dem_input.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "core/dem/crop.hpp"
 #include "core/dem/fill_voids.hpp"
 #include "core/dem/mosaic.hpp"
 #include "core/dem/read_dem.hpp"
+#include "core/material/palette_materials.hpp"
 #include "core/util/error.hpp"
 
 namespace ts::app {
@@ -52,6 +54,21 @@ void warn_if_single_line(const dem::Dem& d) {
                  "terrashade: warning: %s is %dx%d cells: with no neighbours every horizon is open and the ground "
                  "flat\n",
                  d.source.c_str(), d.width, d.height);
+}
+
+bool raise_sea_floor_to_surface(dem::Dem& d) {
+    float lowest = INFINITY;
+    for (float z : d.z)
+        if (z < lowest) lowest = z;  // NaN compares false
+    if (!(lowest < render::kSeaFloorBelowM)) return false;
+    std::size_t raised = 0;
+    for (float& z : d.z)
+        if (z < 0.0f) z = 0.0f, ++raised;
+    std::fprintf(stderr,
+                 "terrashade: note: %s holds the sea floor (down to %.0f m): its %zu texels below 0 m are summed as "
+                 "the sea's surface, at 0 m\n",
+                 d.source.c_str(), double(lowest), raised);
+    return true;
 }
 
 }  // namespace ts::app

@@ -30,4 +30,11 @@ ts::dem::Dem load_dem_input(const DemInput& in);
 // horizon is open and the ground flat. Prints one warning line (the outputs are still written).
 void warn_if_single_line(const ts::dem::Dem& dem);
 
+// The sun lights the sea's surface, not its floor: on a DEM that holds the sea floor (its lowest
+// height below render::kSeaFloorBelowM, as the colours decide) every height below 0 m becomes
+// 0 m, for solar sums (insolation, tiles --style insolation). Below the surface the ESRA air
+// mass took 4 km of sea as 4 km of extra atmosphere (15% too little sun at 0 N 140 W) and
+// seamounts shaded the sea. Prints one note when it changes anything; returns whether it did.
+bool raise_sea_floor_to_surface(ts::dem::Dem& dem);
+
 }  // namespace ts::app

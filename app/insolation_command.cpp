@@ -111,8 +111,9 @@ void run_insolation(InsolationOptions& o) {
         throw InputError("--quicklook: a shard holds a part of the map; give it to the single run, not with --shard");
 
     const Stopwatch total;
-    const dem::Dem dem = load_dem_input(o.dem);
+    dem::Dem dem = load_dem_input(o.dem);
     warn_if_single_line(dem);
+    raise_sea_floor_to_surface(dem);
     // Each texel's shortwave albedo from the land cover, read before the heavy work.
     std::vector<float> texel_albedo;
     if (!o.materials.empty())

@@ -103,7 +103,8 @@ void run_tiles(const TilesCommandArgs& a) {
     plan.check();
     job.shard = shard_of_process(a.shard);
 
-    const dem::Dem dem = load_dem_input(a.dem);
+    dem::Dem dem = load_dem_input(a.dem);
+    if (job.shading.style->name() == "insolation") raise_sea_floor_to_surface(dem);
     job.dem = tiles::dem_identity(dem);
     job.shading.colors = render::fit_colors(job.shading.colors, dem);
     job.shading.grid_north_deg = dem.georef.grid_azimuth_of_north_deg();

@@ -37,7 +37,9 @@ NormalField terrain_normals(const terrain::HeightGrid& g, int threads) {
                 if (std::isnan(g.z[i])) continue;
                 const double dzdc = derivative(c, g.width, [&](int k) { return g.at(k, r); });
                 const double dzdr = derivative(r, g.height, [&](int k) { return g.at(c, k); });
-                const double dzdx = dzdc / g.dx_m[std::size_t(r)];
+                // A row at a pole is one point (dx_m 0): no east-west slope, not 0/0.
+                const double dx = g.dx_m[std::size_t(r)];
+                const double dzdx = dx > 0 ? dzdc / dx : 0.0;
                 // Rows run north to south: +row is -y.
                 const double dzdy = -dzdr / g.dy_m[std::size_t(r)];
                 const double len = std::sqrt(dzdx * dzdx + dzdy * dzdy + 1.0);

@@ -50,6 +50,19 @@ TEST(TerrainNormals, PerRowSpacingChangesTheSlope) {
     EXPECT_NEAR(n.x[4] / n.z[4], -0.5, 1e-6);
 }
 
+TEST(TerrainNormals, ARowAtAPoleHasNoEastWestSlope) {
+    // A global grid's row centred on a pole is one point (dx_m 0): its normals stay finite (its
+    // insolation was NaN), with the north-south slope alone.
+    std::vector<float> z = {5, 7, 9, 0, 0, 0, 0, 0, 0};
+    terrain::HeightGrid g = terrain::HeightGrid::uniform(3, 3, z, 10.0, 10.0);
+    g.dx_m[0] = 0.0;
+    const NormalField n = terrain_normals(g);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_TRUE(std::isfinite(n.x[std::size_t(c)]) && std::isfinite(n.z[std::size_t(c)])) << c;
+        EXPECT_EQ(n.x[std::size_t(c)], 0.0f) << c;
+    }
+}
+
 TEST(TerrainNormals, HolesAreSkipped) {
     std::vector<float> z = {0, 0, 0, 0, NAN, 0, 0, 0, 0};
     const auto g = terrain::HeightGrid::uniform(3, 3, z, 10.0, 10.0);

@@ -57,7 +57,8 @@ FloatTiff read_float_tiff(const std::filesystem::path& path, std::size_t max_val
                 for (std::uint32_t c0 = 0; c0 < w; c0 += tw) {
                     const ttile_t t = TIFFComputeTile(tif, c0, r0, 0, tsample_t(p));
                     if (TIFFReadEncodedTile(tif, t, block.data(), tmsize_t(block.size() * sizeof(float))) < 0)
-                        throw input_error(where, "cannot decode tile " + std::to_string(t) + ": " + file.last_error());
+                        throw input_error(where, "cannot decode tile " + std::to_string(t) + " (" +
+                                                     (file.last_error().empty() ? "truncated or corrupt" : file.last_error()) + ")");
                     store(block.data(), c0, r0, tw, th, planes > 1 ? p : -1);
                 }
     } else {
@@ -70,7 +71,8 @@ FloatTiff read_float_tiff(const std::filesystem::path& path, std::size_t max_val
                 const tstrip_t s = TIFFComputeStrip(tif, r0, tsample_t(p));
                 std::fill(block.begin(), block.end(), 0.0f);
                 if (TIFFReadEncodedStrip(tif, s, block.data(), tmsize_t(block.size() * sizeof(float))) < 0)
-                    throw input_error(where, "cannot decode strip " + std::to_string(s) + ": " + file.last_error());
+                    throw input_error(where, "cannot decode strip " + std::to_string(s) + " (" +
+                                             (file.last_error().empty() ? "truncated or corrupt" : file.last_error()) + ")");
                 store(block.data(), 0, r0, w, rps, planes > 1 ? p : -1);
             }
     }

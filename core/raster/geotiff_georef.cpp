@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
@@ -30,6 +31,19 @@ struct GtifHandle {
         if (gt) GTIFFree(gt);
     }
 };
+
+// libgeotiff's complaints (a corrupt key directory) go to the message of the one line we
+// print, not to stderr on their own: its first error is kept in the std::string user data.
+void keep_geotiff_error(GTIF* gt, int level, const char* format, ...) {
+    auto* first = gt ? static_cast<std::string*>(GTIFGetUserData(gt)) : nullptr;
+    if (!first || !first->empty() || level != LIBGEOTIFF_ERROR) return;
+    char text[512];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(text, sizeof text, format, args);
+    va_end(args);
+    *first = text;
+}
 
 std::optional<unsigned short> short_key(GTIF* gt, geokey_t key) {
     unsigned short v = 0;
@@ -155,14 +169,17 @@ std::shared_ptr<const geo::Crs> crs_from_keys(GTIF* gt, const std::string& path)
 GeoTiffGeoref read_geotiff_georef(TIFF* tif, int width, int height, const std::string& path) {
     geo::GeoTransform raster_space;
     const bool has_transform = raster_space_transform(tif, raster_space);
-    GtifHandle gt{GTIFNew(tif)};
+    std::string geotiff_error;
+    GtifHandle gt{GTIFNewEx(tif, keep_geotiff_error, &geotiff_error)};
     std::uint16_t n_keys = 0;
     std::uint16_t* keys = nullptr;
     const bool has_keys = TIFFGetField(tif, TIFFTAG_GEOKEYDIRECTORY, &n_keys, &keys) && n_keys >= 4;
     if (!has_transform && !has_keys)
         throw input_error(path, "TIFF without georeferencing (no GeoTIFF tiepoint, scale or GeoKeys)");
     if (!has_transform) throw input_error(path, "GeoTIFF without ModelTiepoint+ModelPixelScale or ModelTransformation");
-    if (!has_keys || !gt.gt) throw input_error(path, "GeoTIFF without GeoKeys: unknown coordinate reference system");
+    if (has_keys && !gt.gt)
+        throw input_error(path, "corrupt GeoKeys (" + (geotiff_error.empty() ? std::string("unreadable") : geotiff_error) + ")");
+    if (!has_keys) throw input_error(path, "GeoTIFF without GeoKeys: unknown coordinate reference system");
     // A zero or non-finite scale maps every cell to one point or to NaN, and every later
     // pixel <-> map conversion (crop, info's corners) with it.
     const geo::GeoTransform& r = raster_space;

@@ -76,7 +76,10 @@ TiffFile::TiffFile(const std::filesystem::path& path, const char* mode)
     tif_ = TIFFOpenExt(path_.c_str(), mode, options);
     TIFFOpenOptionsFree(options);
     if (!tif_) {
-        const std::string why = last_error_->empty() ? "cannot open as TIFF" : "not a readable TIFF (" + *last_error_ + ")";
+        const bool reading = mode[0] == 'r';
+        const std::string why = last_error_->empty() ? (reading ? "cannot open as TIFF" : "cannot write a TIFF there")
+                                : reading          ? "not a readable TIFF (" + *last_error_ + ")"
+                                                   : "cannot write (" + *last_error_ + ")";
         throw input_error(path_, why);
     }
 }

@@ -1,7 +1,9 @@
 #include "core/tiles/xyz_directory.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
@@ -21,9 +23,11 @@ namespace {
 void write_bytes(const fs::path& target, const void* data, std::size_t n) {
     write_atomically(target, [&](const fs::path& tmp) {
         std::FILE* f = std::fopen(tmp.c_str(), "wb");
-        if (!f) throw input_error(target.string(), "cannot write");
+        if (!f) throw input_error(target.string(), std::string("cannot write (") + std::strerror(errno) + ")");
         const bool ok = std::fwrite(data, 1, n, f) == n;
-        if (std::fclose(f) != 0 || !ok) throw input_error(target.string(), "cannot write (disk full?)");
+        const int written_errno = errno;
+        if (std::fclose(f) != 0 || !ok)
+            throw input_error(target.string(), std::string("cannot write (") + std::strerror(ok ? errno : written_errno) + ")");
     });
 }
 
@@ -107,8 +111,12 @@ XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, Existing existi
     try {
         if (!same_job) write_bytes(job_file, job.data(), job.size());
         else if (::access(dir_.c_str(), W_OK | X_OK) != 0) throw InputError("not writable");
-    } catch (const InputError&) {
-        throw input_error(dir_.string(), "the output directory is not writable");
+    } catch (const InputError& e) {
+        // Why, as the system says it: not writable, or full.
+        const std::string what = e.what();
+        const auto why = what.find("cannot write (");
+        throw input_error(dir_.string(), "cannot write in the output directory" +
+                                             (why == std::string::npos ? std::string(" (not writable)") : " " + what.substr(why + 13)));
     }
 }
 

@@ -25,6 +25,17 @@ void StagedOutputs::stage(const fs::path& target, const std::function<void(const
     temp_files::track(tmp);
     try {
         write(tmp);
+    } catch (const InputError& e) {
+        fs::remove(tmp, ec);
+        temp_files::forget(tmp);
+        // "TMP: problem" names a hidden temporary (or a writer's own temporary beside it), which
+        // the user never asked for: the message names the output instead.
+        const std::string what = e.what();
+        const auto colon = what.find(": ");
+        const std::string named = colon == std::string::npos ? "" : fs::path(what.substr(0, colon)).filename().string();
+        if (named.starts_with(".") && named.find(".tmp-") != std::string::npos)
+            throw input_error(target.string(), what.substr(colon + 2));
+        throw;
     } catch (...) {
         fs::remove(tmp, ec);
         temp_files::forget(tmp);

@@ -85,6 +85,10 @@ solar::InsolationSettings check_options(const InsolationOptions& o) {
                          std::to_string(kMaxBands) + "); use a coarser --by or a shorter range");
     s.azimuth_bins = o.directions * o.bins_per_direction;
     s.svf_stride = o.bins_per_direction;
+    const int gather = o.sun.reflection.directions;
+    if (gather > 0 && o.directions % gather != 0)
+        throw InputError("--reflection-directions " + std::to_string(gather) + ": a divisor of --directions (" +
+                         std::to_string(o.directions) + "), whose horizons are exact there");
     s.threads = o.threads;
     solar::check_settings(s);
     return s;

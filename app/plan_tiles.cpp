@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/dem_input.hpp"
+#include "app/options/within_range.hpp"
 #include "app/tiles_options.hpp"
 #include "app/wall_time.hpp"
 #include "core/light/utc_time.hpp"
@@ -131,7 +132,8 @@ void add_plan_tiles_command(CLI::App& plan) {
     cmd->add_option("--sample", a->sample, "Tiles to make (and throw away) to measure the rate and bytes per tile; 0: "
                                            "none (give --rate)")
         ->capture_default_str();
-    cmd->add_option("--max-parallel", a->max_parallel, "Shards running at once (the %K of sbatch --array)");
+    cmd->add_option("--max-parallel", a->max_parallel, "Shards running at once (the %K of sbatch --array; default all)")
+        ->check(within(1, 100000));
     cmd->callback([a] { run_plan_tiles(*a); });
 }
 

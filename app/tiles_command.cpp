@@ -47,6 +47,22 @@ struct TilesCommandArgs {
 
 // --debug-heights Z/X/Y: the tile's heights with their halo as a float GeoTIFF in EPSG:3857,
 // beside the tiles (the input gdaldem gets in tests/cli/tiles_cli_test.cpp).
+// A geographic DEM whose texel centres lie past 180 degrees (a 0..360 grid) would lose that part:
+// Web Mercator tiles end at +-180 and the DEM's longitudes are not wrapped. Refused with what to
+// do; a global grid's half cell beyond (ETOPO1's -180.5..180.5 edges) is fine.
+void refuse_past_the_antimeridian(const dem::Dem& dem) {
+    if (!dem.georef.crs().is_geographic()) return;
+    const double west = dem.georef.pixel_to_lonlat(0.5, dem.height * 0.5).x;
+    const double east = dem.georef.pixel_to_lonlat(dem.width - 0.5, dem.height * 0.5).x;
+    if (west >= -180.0 - 1e-9 && east <= 180.0 + 1e-9) return;
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "spans %.4g..%.4g degrees of longitude, past 180: its tiles would lose that part; shift it into "
+                  "-180..180 (gdalwarp -t_srs EPSG:4326 --config CENTER_LONG 0) or split it at 180",
+                  west, east);
+    throw input_error(dem.source, text);
+}
+
 // --debug-heights Z/X/Y, checked before any work: a tile of one of the job's zooms.
 std::optional<tiles::TileId> parse_debug_heights(const std::string& zxy, const tiles::TileJob& job) {
     if (zxy.empty()) return std::nullopt;
@@ -104,6 +120,7 @@ void run_tiles(const TilesCommandArgs& a) {
     job.shard = shard_of_process(a.shard);
 
     dem::Dem dem = load_dem_input(a.dem);
+    refuse_past_the_antimeridian(dem);
     if (job.shading.style->name() == "insolation") raise_sea_floor_to_surface(dem);
     job.dem = tiles::dem_identity(dem);
     job.shading.colors = render::fit_colors(job.shading.colors, dem);

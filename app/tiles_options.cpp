@@ -43,7 +43,10 @@ void parse_zoom_range(const std::string& text, int& z0, int& z1) {
 }
 
 void add_tiles_options(CLI::App& cmd, TilesArgs& a, bool with_zoom) {
-    if (with_zoom) cmd.add_option("--zoom", a.zoom, "Zoom levels Z0-Z1 (or one zoom Z), 0..24")->required();
+    if (with_zoom)
+        cmd.add_option("--zoom", a.zoom, "Zoom levels Z0-Z1 (or one zoom Z), 0..24")
+            ->required()
+            ->each([&a](const std::string&) { a.zoom_given = true; });
     cmd.add_option("--tile-size", a.tile_size, "Tile size in pixels: 256 or 512 (a 512-px tile at z shows the "
                                                "pixels of four 256-px tiles at z+1)")
         ->capture_default_str();
@@ -196,7 +199,7 @@ void set_tile_insolation(const TilesArgs& a, const dem::Dem& dem, tiles::TileJob
 
 tiles::TileJob tile_job(const TilesArgs& a) {
     tiles::TileJob job;
-    if (!a.zoom.empty()) parse_zoom_range(a.zoom, job.z0, job.z1);
+    if (!a.zoom.empty() || a.zoom_given) parse_zoom_range(a.zoom, job.z0, job.z1);
     job.tile_size = a.tile_size;
     tiles::TileShading& s = job.shading;
     s.style = &tiles::parse_tile_style(a.style);

@@ -17,6 +17,7 @@ namespace ts::app {
 
 struct TilesArgs {
     std::string zoom;  // Z or Z0-Z1
+    bool zoom_given = false;  // --zoom was on the command line (an empty one is an error, not zoom 0)
     int tile_size = 256;
     std::string style = "relief";
     std::string time;

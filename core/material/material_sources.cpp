@@ -28,15 +28,31 @@ std::vector<std::uint8_t> read_landcover_on_grid(const std::filesystem::path& pa
     const dem::Dem cover = dem::read_geotiff(path);  // one band of class codes, nodata -> NaN
     const auto where = map_grid_to_source(grid, cover.georef);
     std::vector<std::uint8_t> codes(where.size(), 0);
-    std::size_t inside = 0;
+    std::size_t inside = 0, foreign = 0;
+    float example = 0;
+    // ESA WorldCover's classes (0: no data). Anything else means the file is no land cover (a DEM
+    // given by mistake: its heights would be taken as classes, without a word).
+    const auto is_class = [](float v) {
+        for (int c : {0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 95, 100})
+            if (v == float(c)) return true;
+        return false;
+    };
     for (std::size_t i = 0; i < where.size(); ++i) {
         const double x = std::floor(where[i].x), y = std::floor(where[i].y);
         if (!(x >= 0 && y >= 0 && x < cover.width && y < cover.height)) continue;
         const float v = cover.at(int(x), int(y));
-        if (std::isnan(v) || v < 0 || v > 255) continue;
+        if (std::isnan(v)) continue;
+        if (!is_class(v)) {
+            if (foreign++ == 0) example = v;
+            continue;
+        }
         codes[i] = std::uint8_t(std::lround(v));
         ++inside;
     }
+    if (foreign * 100 > inside + foreign)
+        throw input_error(path.string(), "holds values that are no ESA WorldCover class (e.g. " +
+                                              std::to_string(example) + "): --materials takes a land-cover raster of "
+                                              "class codes 10..100");
     if (inside == 0) throw input_error(path.string(), "land cover does not overlap the DEM");
     return codes;
 }

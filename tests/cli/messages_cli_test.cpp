@@ -117,6 +117,35 @@ TEST(MeaninglessResultsCli, ASingleRowOrColumnDemWarns) {
     }
 }
 
+// Values a command cannot honour are refused in one line before the work, not taken for
+// something else: an empty zoom (was zoom 0), a gather that is no divisor of the horizons' (was
+// accepted), no shard at a time (was ignored), a DEM given as land cover (its heights taken as
+// classes), a 0..360 grid for tiles (its part past 180 dropped).
+TEST(MessagesCli, ValuesACommandCannotHonourAreRefusedBeforeTheWork) {
+    const fs::path dir = temp_dir("msg_values");
+    const std::string dem = quote(kDem) + kCrop;
+    ASSERT_EQ(run("gdal_translate -q -a_ullr 175 45.5 185 44.5 " + quote(kDem) + " " + quote((dir / "east.tif").string()))
+                  .exit_code,
+              0);
+    const std::pair<std::string, std::string> cases[] = {
+        {"tiles " + dem + " --zoom '' --out " + quote((dir / "t").string()), "--zoom"},
+        {"insolation " + dem + " --from 2025-06-21 --to 2025-06-21 --reflection-directions 7 --out " +
+             quote((dir / "i.tif").string()),
+         "a divisor of --directions"},
+        {"plan tiles " + dem + " --zoom 8 --max-parallel 0 --rate 10", "--max-parallel"},
+        {"render " + dem + " --materials " + quote(kDem) + kSun + " --out " + quote((dir / "m.png").string()),
+         "no ESA WorldCover class"},
+        {"tiles " + quote((dir / "east.tif").string()) + " --zoom 4 --out " + quote((dir / "t2").string()), "past 180"},
+    };
+    for (const auto& [args, words] : cases) {
+        const Result r = run(ts_cmd(args));
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+        EXPECT_NE(r.err.find(words), std::string::npos) << args << "\n" << r.err;
+    }
+    for (const char* out : {"t", "i.tif", "m.png", "t2"}) EXPECT_FALSE(fs::exists(dir / out)) << out;
+}
+
 }  // namespace
 }  // namespace ts::cli_test
 

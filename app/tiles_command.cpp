@@ -1,7 +1,9 @@
 // `terrashade tiles`: Web Mercator map tiles of a shaded DEM, as an XYZ directory (DIR/z/x/y.png)
 // or one MBTiles file, resumable after a crash (docs/tiles.md). The work is core/tiles; this
 // file parses, checks everything it can before the heavy part, and reports.
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -17,6 +19,7 @@
 #include "app/shard_option.hpp"
 #include "app/tile_set_viewer.hpp"
 #include "app/tiles_options.hpp"
+#include "core/dem/wrap_longitude.hpp"
 #include "core/light/sky.hpp"
 #include "core/light/utc_time.hpp"
 #include "core/raster/raster_writer.hpp"
@@ -121,6 +124,12 @@ void run_tiles(const TilesCommandArgs& a) {
 
     dem::Dem dem = load_dem_input(a.dem);
     refuse_past_the_antimeridian(dem);
+    if (dem::spans_all_longitudes(dem)) {
+        // A global grid goes on across 180 (core/dem/wrap_longitude.hpp): an eighth of the turn
+        // (a 1-degree grid's 45 texels; at most 2048, as far as the horizons matter) on each side.
+        const int period = int(std::lround(360.0 / dem.georef.transform().dx_col));
+        dem = dem::wrap_longitudes(dem, std::min(period / 8, 2048));
+    }
     if (job.shading.style->name() == "insolation") raise_sea_floor_to_surface(dem);
     job.dem = tiles::dem_identity(dem);
     job.shading.colors = render::fit_colors(job.shading.colors, dem);

@@ -51,8 +51,8 @@ std::vector<std::uint8_t> read_landcover_on_grid(const std::filesystem::path& pa
     }
     if (foreign * 100 > inside + foreign)
         throw input_error(path.string(), "holds values that are no ESA WorldCover class (e.g. " +
-                                              std::to_string(example) + "): --materials takes a land-cover raster of "
-                                              "class codes 10..100");
+                                              std::to_string(example) + "): a land cover holds class codes 10..100 "
+                                              "(a DEM given as one?)");
     if (inside == 0) throw input_error(path.string(), "land cover does not overlap the DEM");
     return codes;
 }

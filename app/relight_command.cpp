@@ -255,6 +255,7 @@ void run_relight(const RelightArgs& a) {
     const ComputeDevice device(a.render.device);  // before the scene: it must outlive it
     device.apply(options);
     std::printf("visibility, transfer and sky shading on %s\n", device.name().c_str());
+    std::fflush(stdout);  // said before the long part, also into a pipe or a log
     const Stopwatch t0;
     std::unique_ptr<render::Scene> scene;
     {

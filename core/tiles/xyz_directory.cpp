@@ -75,7 +75,7 @@ void remove_tile_job(const fs::path& dir) {
 }  // namespace
 
 XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, Existing existing, int z0, int z1)
-    : dir_(std::move(dir)) {
+    : dir_(std::move(dir)), job_(job) {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (!fs::is_directory(dir_)) throw input_error(dir_.string(), "cannot create the output directory");
@@ -95,7 +95,12 @@ XyzDirectory::XyzDirectory(fs::path dir, const std::string& job, Existing existi
                     throw input_error(dir_.string(), std::string("holds a ") + file +
                                                          " of its own, which the tiles' viewer would replace: move it "
                                                          "or write the tiles to another folder");
-        remove_tile_job(dir_);
+        // The old job goes when the first new tile is written (claim): an error or an interrupt
+        // during the shading, which can take long, leaves it as it was.
+        if (::access(dir_.c_str(), W_OK | X_OK) != 0)
+            throw input_error(dir_.string(), "cannot write in the output directory (not writable)");
+        pending_clear_ = true;
+        return;
     }
     if (same_job) {
         // A killed run's temporaries (this job's: the folder is this job's).
@@ -125,11 +130,24 @@ fs::path XyzDirectory::tile_path(const TileId& t) const {
 }
 
 bool XyzDirectory::has(const TileId& t) const {
+    if (pending_clear_) return false;  // the old job's tiles are not this job's
     std::error_code ec;
     return fs::is_regular_file(tile_path(t), ec);
 }
 
+void XyzDirectory::claim() {
+    std::call_once(claimed_, [this] {
+        if (!pending_clear_) return;
+        remove_tile_job(dir_);
+        write_bytes(dir_ / kJobFile, job_.data(), job_.size());
+        pending_clear_ = false;
+    });
+}
+
+void XyzDirectory::finish() { claim(); }  // a job that wrote no tile still replaces the old one
+
 void XyzDirectory::put(const TileId& t, std::vector<std::uint8_t> png) {
+    claim();
     const fs::path p = tile_path(t);
     std::error_code ec;
     fs::create_directories(p.parent_path(), ec);  // concurrent callers: EEXIST is fine

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -307,11 +308,19 @@ TEST(InterruptCli, MbtilesKeepsExactlyWhatResumeNeeds) {
 TEST(InterruptCli, InterruptBeforeTheFirstOutputLeavesNoFolder) {
     const fs::path dir = temp_dir("interrupt_setup");
     const fs::path frames = dir / "frames";
-    // The folder appears just before the visibility, which takes seconds with 1024 directions.
+    // Signalled once the visibility starts (seconds with 1024 directions); the folder appears
+    // only after it, when the first frame is about to be written.
+    const fs::path said = dir / "out";
     const Interrupted r = run_and_signal({"relight", kDem, "--directions", "1024", "--times",
                                           "2025-06-21T06:00Z/2025-06-21T08:00Z/PT1H", "--out", frames.string()},
                                          SIGHUP, std::chrono::milliseconds(0), dir / "err",
-                                         [&] { return fs::exists(frames); });
+                                         [&] {
+                                             std::ifstream in(said);
+                                             std::string text((std::istreambuf_iterator<char>(in)),
+                                                              std::istreambuf_iterator<char>());
+                                             return text.find("visibility") != std::string::npos;
+                                         },
+                                         said);
     ASSERT_TRUE(WIFEXITED(r.status));
     EXPECT_EQ(WEXITSTATUS(r.status), 129) << r.err;
     EXPECT_NE(r.err.find("terrashade: interrupted; "), std::string::npos) << r.err;
@@ -326,6 +335,28 @@ TEST(InterruptCli, InterruptBeforeTheFirstOutputLeavesNoFolder) {
     EXPECT_EQ(WEXITSTATUS(t.status), 130) << t.err;
     // The folder is gone, unless tiles were already written (then they stay, with their job).
     EXPECT_EQ(leftovers(dir), std::vector<std::string>{});
+}
+
+// tiles --overwrite replaces the old set when its first tile is written: interrupted during the
+// shading, the old tiles, job and viewer are all still there.
+TEST(InterruptCli, AnOverwriteInterruptedDuringTheShadingKeepsTheOldSet) {
+    const fs::path dir = temp_dir("interrupt_overwrite");
+    const fs::path tiles = dir / "tiles";
+    ASSERT_EQ(run(ts_cmd("tiles " + quote(kDem) + " --zoom 9 --style hillshade --out " + quote(tiles.string()))).exit_code, 0);
+    std::map<std::string, std::string> before;
+    for (const auto& e : fs::recursive_directory_iterator(tiles))
+        if (e.is_regular_file()) before[e.path().string()] = slurp(e.path());
+    const fs::path said = dir / "out";
+    const Interrupted r = run_and_signal({"tiles", kDem, "--zoom", "13", "--style", "relief", "--directions", "1024", "-v",
+                                          "--overwrite", "--out", tiles.string()},
+                                         SIGINT, std::chrono::milliseconds(0), dir / "err",
+                                         [&] { return slurp(said).find("zoom 13:") != std::string::npos; }, said);
+    ASSERT_TRUE(WIFEXITED(r.status));
+    EXPECT_EQ(WEXITSTATUS(r.status), 130) << r.err;
+    std::map<std::string, std::string> after;
+    for (const auto& e : fs::recursive_directory_iterator(tiles))
+        if (e.is_regular_file()) after[e.path().string()] = slurp(e.path());
+    EXPECT_EQ(after, before);
 }
 
 }  // namespace

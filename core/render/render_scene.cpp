@@ -81,7 +81,7 @@ Scene::Scene(const dem::Dem& dem, const SceneOptions& options)
     switch (options_.view) {
         case ViewKind::map:
             target_ = std::make_unique<GridTarget>(dem_.georef, options_.map_width, options_.map_height,
-                                                   terrain::outside_mask(grid_->z));
+                                                   terrain::unmeasured_mask(grid_->z, dem_.void_mask));
             break;
         case ViewKind::extent: {
             if (!options_.extent) throw InputError("render: an extent view needs an extent");

@@ -125,8 +125,9 @@ ExtentTarget::ExtentTarget(const dem::Dem& dem, const geo::Georef& target, int t
                 // Edge coordinates: the DEM covers [0, width] x [0, height].
                 if (!(p.x >= 0 && p.y >= 0 && p.x <= dem.width && p.y <= dem.height)) continue;
                 const int c = std::min(int(p.x), dem.width - 1), r = std::min(int(p.y), dem.height - 1);
-                if (std::isnan(dem.z[std::size_t(r) * std::size_t(dem.width) + std::size_t(c)]))
-                    continue;  // outside the terrain (filled holes are terrain)
+                const std::size_t texel = std::size_t(r) * std::size_t(dem.width) + std::size_t(c);
+                // Outside the terrain, or a filled hole: shown as a map shows no data.
+                if (std::isnan(dem.z[texel]) || (!dem.void_mask.empty() && dem.void_mask[texel])) continue;
                 at_[std::size_t(j) * std::size_t(w) + std::size_t(i)] = glm::vec2(p.x - 0.5, p.y - 0.5);
                 ++covered_rows[std::size_t(j)];
             }

@@ -4,7 +4,7 @@
 //   ExtentTarget   any georeferenced extent in any CRS at any size (one Web Mercator map tile
 //                  is one): each pixel centre is carried to the DEM's pixel coordinates once,
 //                  then every frame samples the radiance there (bilinear); pixels off the DEM
-//                  or outside its terrain (NaN heights: terrain::outside_mask) are transparent
+//                  or outside its terrain, or over a filled hole (terrain::unmeasured_mask), are transparent
 //   CameraTarget   a perspective camera (perspective_view.hpp), with the sky where rays miss
 // Map-like targets look from straight up (one ViewShading serves them all); a camera has a
 // direction per texel. A map whose pixels are smaller than the texels shades the sun per pixel
@@ -60,7 +60,7 @@ class GridTarget final : public RenderTarget {
 public:
     // The DEM grid resampled to width x height (0 = the grid's own size), bilinear with texel
     // centres aligned as GDAL's -ts; the georef scaled to match. `outside` (one byte per texel,
-    // terrain::outside_mask; empty = none) makes those texels transparent: the picture then has
+    // terrain::unmeasured_mask; empty = none) makes those texels transparent: the picture then has
     // an alpha channel, and without outside texels it has none (the bytes as they always were).
     GridTarget(const geo::Georef& dem_georef, int width = 0, int height = 0, std::vector<std::uint8_t> outside = {});
     int width() const override { return georef_.width(); }

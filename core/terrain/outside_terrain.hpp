@@ -23,4 +23,17 @@ inline std::vector<std::uint8_t> outside_mask(std::span<const float> z) {
     return mask;
 }
 
+// What a map leaves transparent: the texels outside the terrain and every void the reader
+// filled (`void_mask` 1): their heights are invented to shade their neighbours, not shown, as
+// hillshade and tiles leave them. Empty when neither exists.
+inline std::vector<std::uint8_t> unmeasured_mask(std::span<const float> z, std::span<const std::uint8_t> void_mask) {
+    std::vector<std::uint8_t> mask = outside_mask(z);
+    for (std::size_t i = 0; i < void_mask.size() && i < z.size(); ++i)
+        if (void_mask[i]) {
+            if (mask.empty()) mask.assign(z.size(), 0);
+            mask[i] = 1;
+        }
+    return mask;
+}
+
 }  // namespace ts::terrain

@@ -151,3 +151,37 @@ TEST(NodataCollarCli, TilesAreTransparentOverTheCollarAndTheBoundsAreTheTerrains
 }
 
 }  // namespace
+
+namespace {
+
+// A hole inside the terrain is filled (its neighbours are shaded with the invented heights) but
+// not shown: render's map and extent leave it transparent, as hillshade does, where it was drawn
+// as dark water.
+TEST(NodataCollarCli, AFilledHoleIsTransparentInEveryMap) {
+    const fs::path dir = temp_dir("filled_hole");
+    const fs::path dem = dir / "hole.tif";
+    ASSERT_EQ(run("gdal_translate -q -ot Float32 -a_nodata -9999 -srcwin 100 100 60 60 " + quote(ts::cli_test::kDem) +
+                  " " + quote(dem.string()) + " && /usr/bin/python3 -c \"from osgeo import gdal; d = gdal.Open('" +
+                  dem.string() + "', 1); a = d.ReadAsArray(); a[25:35, 25:35] = -9999; d.GetRasterBand(1).WriteArray(a)\"")
+                  .exit_code,
+              0);
+    const std::string hole = quote(dem.string());
+    for (const std::string& args : {std::string(""), std::string(" --extent 5.23,45.72,5.28,45.76 --extent-crs EPSG:4326 --size 60x60")}) {
+        const fs::path out = dir / "map.png";
+        const Result r = run(ts("render " + hole + " --directions 8 --sun-azimuth 135 --sun-elevation 30" + args +
+                                " --out " + quote(out.string())));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const Pixels p = read_image(out);
+        ASSERT_EQ(p.channels, 4) << args;
+        if (args.empty()) {
+            EXPECT_EQ(p.at(30, 30, 3), 0) << "the hole's middle";
+            EXPECT_EQ(p.at(10, 10, 3), 255) << "measured terrain";
+        }
+        std::size_t transparent = 0;
+        for (int y = 0; y < p.height; ++y)
+            for (int x = 0; x < p.width; ++x) transparent += p.at(x, y, 3) == 0;
+        EXPECT_GT(transparent, 0u) << args;
+    }
+}
+
+}  // namespace

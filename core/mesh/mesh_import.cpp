@@ -1,8 +1,10 @@
 #include "core/mesh/mesh_import.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,22 @@
 
 namespace ts::mesh {
 namespace fs = std::filesystem;
+
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool is_animated_alternative(const std::string& name, const std::set<std::string>& names) {
+    const std::string n = lower(name);
+    // A propeller's blur disc (FlightGear's Propeller.Fast, PropDisc, ...).
+    if (n.find("prop") != std::string::npos &&
+        (n.ends_with(".fast") || n.find("disc") != std::string::npos || n.find("disk") != std::string::npos ||
+         n.find("blur") != std::string::npos))
+        return true;
+    // A light's lit version beside its unlit one (BeaconOn / BeaconOff).
+    return n.size() > 2 && n.ends_with("on") && names.contains(n.substr(0, n.size() - 2) + "off");
+}
 
 namespace {
 
@@ -96,13 +114,21 @@ ImportedScene record_scene(const aiScene& scene) {
         out.meshes.push_back(std::move(m));
     }
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) out.materials.push_back(read_material(*scene.mMaterials[i]));
+    // Every node's name first: a lit light is recognised by its unlit twin.
+    std::set<std::string> names;
+    for (std::vector<const aiNode*> todo{scene.mRootNode}; !todo.empty();) {
+        const aiNode* n = todo.back();
+        todo.pop_back();
+        names.insert(lower(n->mName.C_Str()));
+        for (unsigned c = 0; c < n->mNumChildren; ++c) todo.push_back(n->mChildren[c]);
+    }
     // The node tree, breadth first, each node's children as indices.
     std::vector<const aiNode*> order{scene.mRootNode};
     for (std::size_t k = 0; k < order.size(); ++k) {
         const aiNode& n = *order[k];
         ImportedNode node;
         node.transform = to_glm(n.mTransformation);
-        node.meshes.assign(n.mMeshes, n.mMeshes + n.mNumMeshes);
+        if (!is_animated_alternative(n.mName.C_Str(), names)) node.meshes.assign(n.mMeshes, n.mMeshes + n.mNumMeshes);
         for (unsigned c = 0; c < n.mNumChildren; ++c) {
             node.children.push_back(std::uint32_t(order.size()));
             order.push_back(n.mChildren[c]);

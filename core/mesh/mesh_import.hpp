@@ -4,6 +4,8 @@
 // and the materials' base colours. Points and lines are dropped; polygons are triangulated.
 #include <cstdint>
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include "core/mesh/triangle_mesh.hpp"
 #include "core/mesh/up_axis.hpp"
@@ -25,5 +27,14 @@ struct ImportOptions {
 // Throws ts::InputError, one line naming the file, when it is missing, empty, unreadable,
 // not a mesh, holds no triangle, or crashes or hangs the importer.
 TriangleMesh import_mesh(const std::filesystem::path& file, const ImportOptions& options = {});
+
+// A flight simulator's model holds alternatives its animations choose between: a propeller's
+// blades and its blur disc, each light unlit and lit. terrashade animates nothing, so it keeps
+// the blades and the unlit lights and leaves out the nodes this names: a propeller's disc
+// ("prop" with ".fast", "disc", "disk" or "blur" in the name, as FlightGear's Propeller.Fast)
+// and a lit light beside its unlit twin (X + "On" where X + "Off" is in `names`, lower case).
+// Drawn, the c172p's disc was a solid 2 m dome in front of the nose (its see-through texture is
+// not shipped), dark in its own spheres' shadow.
+bool is_animated_alternative(const std::string& name, const std::set<std::string>& names);
 
 }  // namespace ts::mesh

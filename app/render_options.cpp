@@ -37,7 +37,8 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--camera", a.camera,
                    "Perspective camera lon,lat,height,heading,pitch,fov (degrees; height in metres above the DEM "
                    "datum; heading clockwise from north; pitch < 0 looks down; horizontal fov). Default: an oblique "
-                   "view from beyond the DEM's south-west corner (docs/rendering.md)");
+                   "view towards the DEM's centre from the south-south-west, just beyond its southern edge "
+                   "(docs/rendering.md)");
     cmd.add_option("--size", a.size,
                    "Output WIDTHxHEIGHT: perspective default 960x540; map default the DEM grid (else resampled); "
                    "--extent default 512 on the longer side, the extent's aspect");

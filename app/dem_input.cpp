@@ -1,12 +1,12 @@
 #include "app/dem_input.hpp"
 
-#include <cmath>
 #include <cstdio>
 
 #include "core/dem/crop.hpp"
 #include "core/dem/fill_voids.hpp"
 #include "core/dem/mosaic.hpp"
 #include "core/dem/read_dem.hpp"
+#include "core/dem/statistics.hpp"
 #include "core/material/palette_materials.hpp"
 #include "core/util/error.hpp"
 
@@ -57,9 +57,7 @@ void warn_if_single_line(const dem::Dem& d) {
 }
 
 bool raise_sea_floor_to_surface(dem::Dem& d) {
-    float lowest = INFINITY;
-    for (float z : d.z)
-        if (z < lowest) lowest = z;  // NaN compares false
+    const double lowest = dem::height_stats(d).min;  // NaN when all void: no sea floor
     if (!(lowest < render::kSeaFloorBelowM)) return false;
     std::size_t raised = 0;
     for (float& z : d.z)
@@ -67,7 +65,7 @@ bool raise_sea_floor_to_surface(dem::Dem& d) {
     std::fprintf(stderr,
                  "terrashade: note: %s holds the sea floor (down to %.0f m): its %zu texels below 0 m are summed as "
                  "the sea's surface, at 0 m\n",
-                 d.source.c_str(), double(lowest), raised);
+                 d.source.c_str(), lowest, raised);
     return true;
 }
 

@@ -187,9 +187,10 @@ void run_relight(const RelightArgs& a) {
         // Every frame of the series (all shards choose alike): the prediction is the worst sun's.
         std::vector<render::SunState> suns;
         const render::SunSite sun_place = render::sun_site(dem);
+        const double grid_north = dem.georef.grid_azimuth_of_north_deg();
         for (const auto& t : times)
             if (const render::SunState s = render::sun_at(sun_place, t); !skip_night || s.elevation_deg >= kNightElevationDeg)
-                suns.push_back(render::sun_on_grid(s, dem.georef.grid_azimuth_of_north_deg()));
+                suns.push_back(render::sun_on_grid(s, grid_north));
         apply_max_error(render_args, dem, suns, options);
     }
     const int directions = options.renderer.directions;

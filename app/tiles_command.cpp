@@ -48,8 +48,6 @@ struct TilesCommandArgs {
     std::string shard;          // K/N
 };
 
-// --debug-heights Z/X/Y: the tile's heights with their halo as a float GeoTIFF in EPSG:3857,
-// beside the tiles (the input gdaldem gets in tests/cli/tiles_cli_test.cpp).
 // A geographic DEM whose texel centres lie past 180 degrees (a 0..360 grid) would lose that part:
 // Web Mercator tiles end at +-180 and the DEM's longitudes are not wrapped. Refused with what to
 // do; a global grid's half cell beyond (ETOPO1's -180.5..180.5 edges) is fine.
@@ -83,6 +81,8 @@ std::optional<tiles::TileId> parse_debug_heights(const std::string& zxy, const t
     return t;
 }
 
+// --debug-heights Z/X/Y: the tile's heights with their halo as a float GeoTIFF in EPSG:3857,
+// beside the tiles (the input gdaldem gets in tests/cli/tiles_cli_test.cpp).
 void write_debug_heights(const dem::Dem& dem, const tiles::TileJob& job, const tiles::TileId& t,
                          const std::string& out) {
     const tiles::TileHeights h = tiles::tile_heights(dem, job, t);

@@ -1,6 +1,8 @@
 #include "core/dem/wrap_longitude.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ts::dem {
 
@@ -20,14 +22,19 @@ Dem wrap_longitudes(const Dem& dem, int columns) {
     out.width = dem.width + 2 * columns;
     out.z.assign(std::size_t(out.width) * std::size_t(out.height), 0.0f);
     out.void_mask.assign(out.z.size(), 0);
+    // Each column's source, once.
+    std::vector<int> source(std::size_t(out.width));
+    for (int c = 0; c < out.width; ++c) {
+        int src = c - columns;
+        while (src < 0) src += period;
+        while (src >= dem.width) src -= period;
+        source[std::size_t(c)] = std::max(src, 0);  // a grid a cell short of the turn: its first column stands in
+    }
     for (int r = 0; r < dem.height; ++r)
         for (int c = 0; c < out.width; ++c) {
-            int src = c - columns;
-            while (src < 0) src += period;
-            while (src >= dem.width) src -= period;
-            if (src < 0) src = 0;  // a grid a cell short of the turn: its last column stands in
-            out.z[out.index(c, r)] = dem.z[dem.index(src, r)];
-            if (!dem.void_mask.empty()) out.void_mask[out.index(c, r)] = dem.void_mask[dem.index(src, r)];
+            const std::size_t from = dem.index(source[std::size_t(c)], r);
+            out.z[out.index(c, r)] = dem.z[from];
+            if (!dem.void_mask.empty()) out.void_mask[out.index(c, r)] = dem.void_mask[from];
         }
     geo::GeoTransform w = t;
     w.x0 = t.x0 - columns * t.dx_col;

@@ -24,10 +24,12 @@
 namespace ts::mesh {
 namespace fs = std::filesystem;
 
+namespace {
 std::string lower(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
     return s;
 }
+}  // namespace
 
 bool is_animated_alternative(const std::string& name, const std::set<std::string>& names) {
     const std::string n = lower(name);
@@ -114,25 +116,19 @@ ImportedScene record_scene(const aiScene& scene) {
         out.meshes.push_back(std::move(m));
     }
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) out.materials.push_back(read_material(*scene.mMaterials[i]));
-    // Every node's name first: a lit light is recognised by its unlit twin.
-    std::set<std::string> names;
-    for (std::vector<const aiNode*> todo{scene.mRootNode}; !todo.empty();) {
-        const aiNode* n = todo.back();
-        todo.pop_back();
-        names.insert(lower(n->mName.C_Str()));
-        for (unsigned c = 0; c < n->mNumChildren; ++c) todo.push_back(n->mChildren[c]);
-    }
-    // The node tree, breadth first, each node's children as indices.
+    // The node tree, breadth first: a node's children follow in order, so their indices count on.
     std::vector<const aiNode*> order{scene.mRootNode};
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        const aiNode& n = *order[k];
+    for (std::size_t k = 0; k < order.size(); ++k)
+        for (unsigned c = 0; c < order[k]->mNumChildren; ++c) order.push_back(order[k]->mChildren[c]);
+    // Every node's name before any node is kept: a lit light is recognised by its unlit twin.
+    std::set<std::string> names;
+    for (const aiNode* n : order) names.insert(lower(n->mName.C_Str()));
+    std::uint32_t next_child = 1;
+    for (const aiNode* n : order) {
         ImportedNode node;
-        node.transform = to_glm(n.mTransformation);
-        if (!is_animated_alternative(n.mName.C_Str(), names)) node.meshes.assign(n.mMeshes, n.mMeshes + n.mNumMeshes);
-        for (unsigned c = 0; c < n.mNumChildren; ++c) {
-            node.children.push_back(std::uint32_t(order.size()));
-            order.push_back(n.mChildren[c]);
-        }
+        node.transform = to_glm(n->mTransformation);
+        if (!is_animated_alternative(n->mName.C_Str(), names)) node.meshes.assign(n->mMeshes, n->mMeshes + n->mNumMeshes);
+        for (unsigned c = 0; c < n->mNumChildren; ++c) node.children.push_back(next_child++);
         out.nodes.push_back(std::move(node));
     }
     return out;
